@@ -1,0 +1,103 @@
+"""pixelpath: the classic rendering pipeline of a graphics course, headless on the CPU.
+
+Submodules and the scene/rendering names load on first use, so ``import pixelpath`` is quick
+and compiles nothing (Numba itself is imported only when a kernel is first needed).
+
+Examples
+--------
+>>> import pixelpath as pp
+>>> pp.color.rgb_to_hsv([1.0, 1.0, 0.0]).tolist()
+[60.0, 1.0, 1.0]
+"""
+
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
+
+__version__ = "0.1.0"
+
+_SUBMODULES = ("color", "clip", "lighting", "scene", "raster", "hsr", "raytrace", "io")
+
+# Public name -> module that defines it, imported on first access.
+_LAZY_NAMES = {
+    "Camera": "pixelpath.scene",
+    "Material": "pixelpath.scene",
+    "PointLight": "pixelpath.scene",
+    "DirectionalLight": "pixelpath.scene",
+    "Sphere": "pixelpath.scene",
+    "Plane": "pixelpath.scene",
+    "Box": "pixelpath.scene",
+    "Mesh": "pixelpath.scene",
+    "Scene": "pixelpath.scene",
+    "load_scene": "pixelpath.scene",
+    "Image": "pixelpath.image",
+    "render": "pixelpath.render",
+}
+
+# Modules whose import registers their kernels' warm-up functions.
+_KERNEL_MODULES = (
+    "pixelpath.color._kernels",
+    "pixelpath.clip._kernels",
+    "pixelpath.lighting._kernels",
+    "pixelpath.raster._kernels",
+)
+
+__all__ = [*_SUBMODULES, *_LAZY_NAMES, "warmup"]
+
+if TYPE_CHECKING:
+    from pixelpath import clip, color, hsr, io, lighting, raster, raytrace, scene
+    from pixelpath.image import Image
+    from pixelpath.render import render
+    from pixelpath.scene import (
+        Box,
+        Camera,
+        DirectionalLight,
+        Material,
+        Mesh,
+        Plane,
+        PointLight,
+        Scene,
+        Sphere,
+        load_scene,
+    )
+
+
+def __getattr__(name: str) -> Any:
+    if name in _SUBMODULES:
+        return importlib.import_module(f"pixelpath.{name}")
+    if name in _LAZY_NAMES:
+        return getattr(importlib.import_module(_LAZY_NAMES[name]), name)
+    raise AttributeError(f"module 'pixelpath' has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(__all__))
+
+
+def warmup() -> int:
+    """Compile every Numba kernel now, so that later calls start at full speed.
+
+    Compiled code is cached on disk (see :func:`pixelpath._jit.cache_dir`), so this is
+    needed once per installation; ``pixelpath warmup`` does the same from the shell.
+
+    Returns
+    -------
+    int
+        The number of warm-up routines that ran.
+
+    Examples
+    --------
+    >>> import pixelpath as pp
+    >>> pp.warmup() > 0
+    True
+    """
+    from pixelpath._jit import run_warmups
+
+    for module in _KERNEL_MODULES:
+        try:
+            importlib.import_module(module)
+        except ModuleNotFoundError as exc:  # a stage not built yet in this checkout
+            if exc.name != module:
+                raise
+    return run_warmups()

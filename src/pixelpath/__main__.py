@@ -1,0 +1,5 @@
+"""``python -m pixelpath``: the same command line as ``pixelpath``."""
+
+from pixelpath.cli import main
+
+raise SystemExit(main())

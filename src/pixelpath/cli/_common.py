@@ -1,0 +1,77 @@
+"""Helpers shared by the subcommands: registration with examples, consoles, progress bars."""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+from collections.abc import Callable, Iterator
+from typing import Any
+
+from rich.console import Console
+
+
+class CommandError(Exception):
+    """An error the user can fix; printed without a traceback and exits with status 2."""
+
+
+def add_command(
+    subparsers: Any,
+    name: str,
+    *,
+    summary: str,
+    description: str,
+    examples: list[str],
+    run: Callable[[argparse.Namespace], int | None],
+) -> argparse.ArgumentParser:
+    """Add a subcommand whose ``--help`` ends with its examples."""
+    epilog = "examples:\n" + "\n".join(f"  {line}" for line in examples)
+    parser = subparsers.add_parser(
+        name,
+        help=summary,
+        description=description,
+        epilog=epilog,
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+    )
+    parser.set_defaults(run=run)
+    return parser
+
+
+def console() -> Console:
+    """Return the console for results (standard output, no colour codes when piped)."""
+    return Console(highlight=False, soft_wrap=True)
+
+
+def error_console() -> Console:
+    """Return the console for errors and progress (standard error)."""
+    return Console(stderr=True, highlight=False, soft_wrap=True)
+
+
+@contextlib.contextmanager
+def progress(description: str, total: int, *, quiet: bool = False) -> Iterator[Callable[[int], None]]:
+    """Show a progress bar on standard error while work runs; yield an ``advance(n)`` callable.
+
+    The bar is drawn only on a terminal and never when ``quiet`` is set, so logs and CI output
+    stay clean.
+    """
+    err = error_console()
+    if quiet or not err.is_terminal:
+        yield lambda n=1: None
+        return
+    from rich.progress import (
+        BarColumn,
+        Progress,
+        TextColumn,
+        TimeElapsedColumn,
+        TimeRemainingColumn,
+    )
+
+    columns = (
+        TextColumn("{task.description}"),
+        BarColumn(),
+        TextColumn("{task.percentage:>3.0f}%"),
+        TimeElapsedColumn(),
+        TimeRemainingColumn(),
+    )
+    with Progress(*columns, console=err, transient=True) as bar:
+        task = bar.add_task(description, total=total)
+        yield lambda n=1: bar.advance(task, n)

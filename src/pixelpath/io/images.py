@@ -1,0 +1,101 @@
+"""Image files through Pillow, written atomically (temporary file, then rename)."""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+
+def read_image(path: str | os.PathLike) -> np.ndarray:
+    """Read an image file as RGB floats in [0, 1].
+
+    Parameters
+    ----------
+    path : str or path-like
+        Any format Pillow reads (PNG, JPEG, TIFF, ...). Alpha is dropped; greyscale is
+        repeated over three channels; 16-bit images are scaled by 1/65535.
+
+    Returns
+    -------
+    (H, W, 3) float32 ndarray
+
+    Examples
+    --------
+    >>> import numpy as np, tempfile, os
+    >>> from pixelpath.io import read_image, write_image
+    >>> path = os.path.join(tempfile.mkdtemp(), "red.png")
+    >>> write_image(path, np.array([[[1.0, 0.0, 0.0]]]))
+    >>> read_image(path).tolist()
+    [[[1.0, 0.0, 0.0]]]
+    """
+    from PIL import Image as PILImage
+
+    path = Path(path)
+    if not path.is_file():
+        raise FileNotFoundError(f"image file not found: {path}")
+    with PILImage.open(path) as img:
+        if img.mode in ("I;16", "I;16B", "I;16L", "I"):
+            data = np.asarray(img, dtype=np.float32) / 65535.0
+            return np.repeat(data[..., None], 3, axis=-1)
+        return np.asarray(img.convert("RGB"), dtype=np.float32) / 255.0
+
+
+def to_uint8(rgb: np.ndarray, gamma: float | None = None) -> np.ndarray:
+    """Map floats in [0, 1] to 0..255 (clamped, rounded), optionally gamma-encoding first.
+
+    ``gamma=2.2`` raises each value to ``1/2.2`` before quantizing (display encoding);
+    ``None`` keeps the linear mapping of the notes (value × 255).
+    """
+    values = np.clip(np.asarray(rgb, dtype=np.float64), 0.0, 1.0)
+    if gamma is not None:
+        if not gamma > 0:
+            raise ValueError(f"gamma must be positive, got {gamma!r}")
+        values = values ** (1.0 / gamma)
+    return np.rint(values * 255.0).astype(np.uint8)
+
+
+def write_image(path: str | os.PathLike, rgb: np.ndarray, *, gamma: float | None = None) -> None:
+    """Write an ``(H, W, 3)`` float image in [0, 1] to ``path`` atomically.
+
+    The format follows the extension (PNG, JPEG, BMP, TIFF, ...). The file is written to a
+    temporary name in the same directory and renamed into place, so a crash never leaves a
+    half-written image.
+
+    Parameters
+    ----------
+    path : str or path-like
+        Destination; its directory must exist.
+    rgb : (H, W, 3) array_like
+        Linear intensities; values outside [0, 1] are clamped.
+    gamma : float, optional
+        Display gamma to encode with (for example 2.2); default none.
+
+    Examples
+    --------
+    >>> import numpy as np, tempfile, os
+    >>> from pixelpath.io import write_image
+    >>> write_image(os.path.join(tempfile.mkdtemp(), "grey.png"), np.full((2, 2, 3), 0.5))
+    """
+    from PIL import Image as PILImage
+
+    rgb = np.asarray(rgb)
+    if rgb.ndim != 3 or rgb.shape[-1] != 3:
+        raise ValueError(f"rgb must have shape (H, W, 3), got {rgb.shape}")
+    path = Path(path)
+    if not path.parent.is_dir():
+        raise FileNotFoundError(f"output directory does not exist: {path.parent}")
+    image = PILImage.fromarray(to_uint8(rgb, gamma))
+    fmt = PILImage.registered_extensions().get(path.suffix.lower())
+    if fmt is None:
+        raise ValueError(f"unknown image extension {path.suffix!r} for {path}; use .png, .jpg, ...")
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    try:
+        with os.fdopen(fd, "wb") as handle:
+            image.save(handle, format=fmt)
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
