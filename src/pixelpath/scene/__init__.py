@@ -1,0 +1,36 @@
+"""Scenes: camera, materials, lights, analytic primitives, polygon meshes and TOML scene files.
+
+Conventions: right-handed world, the camera looks down -Z in camera space, faces are wound
+counter-clockwise seen from outside. Vectors are stored as read-only float64 arrays and every
+constructor validates its input (``ValueError`` for bad values or shapes, ``TypeError`` for
+wrong types), so later stages can trust a scene.
+
+Examples
+--------
+>>> from pixelpath.scene import Box, Camera, Scene
+>>> scene = Scene(Camera(eye=(3, 3, 3), target=(0, 0, 0)), objects=[Box((0, 0, 0), (1, 1, 1))])
+>>> len(scene.objects)
+1
+"""
+
+from pixelpath.scene.camera import Camera
+from pixelpath.scene.lights import DirectionalLight, PointLight
+from pixelpath.scene.material import Material
+from pixelpath.scene.mesh import Mesh
+from pixelpath.scene.primitives import Box, Plane, Sphere
+from pixelpath.scene.procedural import icosphere, torus
+from pixelpath.scene.scene import Scene
+
+__all__ = [
+    "Box",
+    "Camera",
+    "DirectionalLight",
+    "Material",
+    "Mesh",
+    "Plane",
+    "PointLight",
+    "Scene",
+    "Sphere",
+    "icosphere",
+    "torus",
+]

@@ -1,0 +1,102 @@
+"""Input checks shared by the scene records; each message names the argument and what came in."""
+
+from __future__ import annotations
+
+import numbers
+from typing import Any
+
+import numpy as np
+
+# Largest image side accepted: 16384 pixels is far past any display, and larger requests are
+# almost always a typo that would otherwise try to allocate tens of gigabytes.
+MAX_IMAGE_SIDE = 16384
+
+
+def frozen(array: np.ndarray) -> np.ndarray:
+    """Return ``array`` marked read-only, so records that hold it stay immutable."""
+    array.flags.writeable = False
+    return array
+
+
+def _describe(value: Any) -> str:
+    if isinstance(value, np.ndarray):
+        return f"an array of shape {value.shape} and dtype {value.dtype}"
+    return repr(value) if len(repr(value)) <= 80 else f"a {type(value).__name__}"
+
+
+def real(value: Any, name: str, *, positive: bool = False, minimum: float | None = None) -> float:
+    """Return ``value`` as a finite float, checking its sign or lower bound when asked."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise TypeError(f"{name} must be a real number, got {_describe(value)}")
+    result = float(value)
+    if not np.isfinite(result):
+        raise ValueError(f"{name} must be finite, got {result}")
+    if positive and result <= 0.0:
+        raise ValueError(f"{name} must be positive, got {result}")
+    if minimum is not None and result < minimum:
+        raise ValueError(f"{name} must be at least {minimum}, got {result}")
+    return result
+
+
+def image_side(value: Any, name: str) -> int:
+    """Return an image width or height: a positive int no larger than :data:`MAX_IMAGE_SIDE`."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
+        raise TypeError(f"{name} must be an int, got {_describe(value)}")
+    side = int(value)
+    if not 1 <= side <= MAX_IMAGE_SIDE:
+        raise ValueError(f"{name} must be between 1 and {MAX_IMAGE_SIDE} pixels, got {side}")
+    return side
+
+
+def float_array(value: Any, name: str, shape: tuple[int | None, ...]) -> np.ndarray:
+    """Return a finite float64 copy of ``value`` with the given shape (``None`` = any length)."""
+    try:
+        array = np.array(value, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise TypeError(f"{name} must be an array of numbers, got {_describe(value)}") from None
+    expected = "(" + ", ".join("n" if n is None else str(n) for n in shape) + ")"
+    if array.ndim != len(shape) or any(
+        n is not None and n != m for n, m in zip(shape, array.shape, strict=True)
+    ):
+        raise ValueError(f"{name} must have shape {expected}, got shape {array.shape}")
+    if not np.all(np.isfinite(array)):
+        bad = np.argwhere(~np.isfinite(array))[0]
+        raise ValueError(f"{name} must be finite, got {array[tuple(bad)]} at index {tuple(bad)}")
+    return array
+
+
+def vector3(value: Any, name: str) -> np.ndarray:
+    """Return a finite, read-only float64 (3,) vector."""
+    return frozen(float_array(value, name, (3,)))
+
+
+def unit_vector3(value: Any, name: str) -> np.ndarray:
+    """Return ``value`` normalized to unit length; a zero vector is a ValueError."""
+    vector = float_array(value, name, (3,))
+    length = float(np.linalg.norm(vector))
+    if length == 0.0:
+        raise ValueError(f"{name} must not be the zero vector")
+    return frozen(vector / length)
+
+
+def colour(value: Any, name: str) -> np.ndarray:
+    """Return an (r, g, b) colour; components must be finite and non-negative."""
+    rgb = float_array(value, name, (3,))
+    if np.any(rgb < 0.0):
+        raise ValueError(f"{name} components must be non-negative, got {rgb.tolist()}")
+    return frozen(rgb)
+
+
+def rgb_or_scalar(value: Any, name: str) -> np.ndarray:
+    """Return a non-negative intensity given as a scalar or (r, g, b), as a (3,) array."""
+    if isinstance(value, numbers.Real) and not isinstance(value, bool):
+        value = (value, value, value)
+    return colour(value, name)
+
+
+def instance(value: Any, name: str, kinds: type | tuple[type, ...]) -> Any:
+    """Return ``value`` unchanged after checking its type."""
+    if not isinstance(value, kinds):
+        names = " or ".join(k.__name__ for k in (kinds if isinstance(kinds, tuple) else (kinds,)))
+        raise TypeError(f"{name} must be a {names}, got {type(value).__name__}")
+    return value

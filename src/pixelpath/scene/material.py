@@ -1,0 +1,81 @@
+"""Surface materials for the Phong illumination model of the notes (section 5 of the spec).
+
+``I = ka·Ia·C + Σ_lights [kd·IL·C·max(0, N·L) + ks·IL·max(0, R·V)^n]`` per colour channel, where C
+is the material's ``color``: the object colour tints ambient and diffuse light, while highlights
+take the light's colour. ``reflectivity``, ``transparency`` and ``ior`` are used by the ray tracer.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from typing import Any
+
+import numpy as np
+
+from pixelpath.scene import _validate as v
+from pixelpath.scene._record import Record
+
+
+@dataclasses.dataclass(frozen=True, eq=False)
+class Material(Record):
+    """Phong material: colour, ambient/diffuse/specular coefficients, shininess, optics.
+
+    Parameters
+    ----------
+    color : (3,) array_like
+        Object colour (r, g, b), non-negative; stored as a read-only float64 array.
+    ka, kd, ks : float
+        Ambient, diffuse and specular reflection coefficients, each >= 0.
+    shininess : float
+        Phong exponent n, >= 0.
+    reflectivity, transparency : float
+        Fractions in [0, 1] of mirror reflection and transmission (ray tracer only).
+    ior : float
+        Index of refraction, > 0 (ray tracer only).
+
+    Examples
+    --------
+    >>> from pixelpath.scene import Material
+    >>> Material(color=(1, 0, 0), kd=0.5).packed().tolist()
+    [1.0, 0.0, 0.0, 0.1, 0.5, 0.3, 32.0, 0.0]
+    """
+
+    color: Any = (1.0, 1.0, 1.0)
+    ka: float = 0.1
+    kd: float = 0.7
+    ks: float = 0.3
+    shininess: float = 32.0
+    reflectivity: float = 0.0
+    transparency: float = 0.0
+    ior: float = 1.0
+
+    def __post_init__(self) -> None:
+        self._set(
+            color=v.colour(self.color, "color"),
+            ka=v.real(self.ka, "ka", minimum=0.0),
+            kd=v.real(self.kd, "kd", minimum=0.0),
+            ks=v.real(self.ks, "ks", minimum=0.0),
+            shininess=v.real(self.shininess, "shininess", minimum=0.0),
+            reflectivity=_fraction(self.reflectivity, "reflectivity"),
+            transparency=_fraction(self.transparency, "transparency"),
+            ior=v.real(self.ior, "ior", positive=True),
+        )
+
+    def packed(self) -> np.ndarray:
+        """Return the (8,) float64 row ``[r, g, b, ka, kd, ks, shininess, 0.0]`` kernels read.
+
+        Examples
+        --------
+        >>> from pixelpath.scene import Material
+        >>> Material().packed().shape
+        (8,)
+        """
+        r, g, b = self.color
+        return np.array([r, g, b, self.ka, self.kd, self.ks, self.shininess, 0.0])
+
+
+def _fraction(value: Any, name: str) -> float:
+    result = v.real(value, name, minimum=0.0)
+    if result > 1.0:
+        raise ValueError(f"{name} must lie in [0, 1], got {result}")
+    return result

@@ -1,0 +1,317 @@
+"""Polygon meshes: ragged faces, fan triangles, Newell face normals, area-weighted vertex normals.
+
+Faces are polygons of three or more vertex indices, wound counter-clockwise seen from outside, so
+the right-hand rule gives outward normals (SPEC, "Precise conventions"). They are stored in the
+ragged (CSR) layout kernels like: ``face_indices[face_offsets[f]:face_offsets[f + 1]]`` are the
+vertices of face ``f``.
+
+- Face normals use Newell's method, which sums over the polygon's edges (i, j):
+  ``N = Σ ((y_i − y_j)(z_i + z_j), (z_i − z_j)(x_i + x_j), (x_i − x_j)(y_i + y_j))``. The sum is
+  twice the polygon's vector area, well defined for non-planar polygons too. A degenerate face
+  (zero area) has the zero vector as its normal: it covers no pixels.
+- Vertex normals, when not given, are the normalized sum of the un-normalized Newell vectors of
+  the faces around the vertex, i.e. the area-weighted average of their unit normals. A vertex no
+  face uses (or whose faces cancel) gets the zero vector.
+- Rendering uses the fan triangulation ``(v0, v_k, v_k+1)`` of every polygon, which is exact for
+  convex polygons; ``triangle_face`` maps each triangle back to its polygon.
+"""
+
+from __future__ import annotations
+
+import functools
+import itertools
+from collections.abc import Sequence
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from pixelpath.scene import _validate as v
+from pixelpath.scene.material import Material
+
+
+class Mesh:
+    """A polygon mesh with a material.
+
+    Parameters
+    ----------
+    vertices : (V, 3) array_like
+        Vertex positions; finite.
+    faces : (F, k) int array_like or sequence of sequences of int
+        Polygons of at least three vertex indices each, counter-clockwise seen from outside.
+    material : Material, optional
+        Surface material (default ``Material()``).
+    normals : (V, 3) array_like, optional
+        Per-vertex normals (normalized on input); computed area-weighted when omitted.
+    name : str, optional
+        A label for messages and ``pixelpath info``.
+
+    Raises
+    ------
+    ValueError
+        Empty meshes, non-finite vertices, faces with fewer than three vertices or with indices
+        outside ``0..V-1`` (the message names the face).
+
+    Examples
+    --------
+    >>> from pixelpath.scene import Mesh
+    >>> quad = Mesh([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], [[0, 1, 2, 3]])
+    >>> quad.triangles.tolist()
+    [[0, 1, 2], [0, 2, 3]]
+    >>> quad.face_normals.tolist()
+    [[0.0, 0.0, 1.0]]
+    """
+
+    def __init__(
+        self,
+        vertices: Any,
+        faces: Any,
+        material: Material | None = None,
+        normals: Any = None,
+        name: str | None = None,
+        *,
+        source: dict[str, Any] | None = None,
+    ) -> None:
+        self.vertices = v.frozen(v.float_array(vertices, "vertices", (None, 3)))
+        if len(self.vertices) == 0:
+            raise ValueError("vertices is empty: a mesh needs at least three vertices")
+        offsets, indices = _ragged_faces(faces, len(self.vertices))
+        self.face_offsets = v.frozen(offsets)
+        self.face_indices = v.frozen(indices)
+        self.material = v.instance(material or Material(), "material", Material)
+        self.normals = None if normals is None else _given_normals(normals, len(self.vertices))
+        if name is not None and not isinstance(name, str):
+            raise TypeError(f"name must be a str, got {type(name).__name__}")
+        self.name = name
+        # How this mesh was made (a file path or a generator and a transform), so that
+        # Scene.to_dict can write it back compactly; None means "write the arrays inline".
+        self.source = source
+
+    def __repr__(self) -> str:
+        label = f" {self.name!r}" if self.name else ""
+        return (
+            f"<Mesh{label}: {len(self.vertices)} vertices, {self.face_count} faces, "
+            f"{len(self.triangles)} triangles>"
+        )
+
+    @property
+    def face_count(self) -> int:
+        """Number of polygon faces F."""
+        return len(self.face_offsets) - 1
+
+    @property
+    def face_sizes(self) -> np.ndarray:
+        """(F,) intp number of vertices of each face."""
+        return np.diff(self.face_offsets)
+
+    @property
+    def faces(self) -> list[list[int]]:
+        """The faces as a list of vertex-index lists (the constructor's ragged form)."""
+        flat = self.face_indices.tolist()
+        bounds = self.face_offsets.tolist()
+        return [flat[start:stop] for start, stop in itertools.pairwise(bounds)]
+
+    @functools.cached_property
+    def triangles(self) -> np.ndarray:
+        """(T, 3) intp fan triangulation of every face, T = Σ (k_f − 2)."""
+        sizes = self.face_sizes
+        triangle_face = self.triangle_face
+        # k-th triangle of face f is (v0, v_{k+1}, v_{k+2}): its rank inside the face is k.
+        first_triangle = np.cumsum(sizes - 2) - (sizes - 2)
+        rank = np.arange(len(triangle_face)) - np.repeat(first_triangle, sizes - 2)
+        first = self.face_offsets[triangle_face]
+        corners = np.stack([first, first + rank + 1, first + rank + 2], axis=1)
+        return v.frozen(np.ascontiguousarray(self.face_indices[corners], dtype=np.intp))
+
+    @functools.cached_property
+    def triangle_face(self) -> np.ndarray:
+        """(T,) intp index of the polygon each triangle of :attr:`triangles` comes from."""
+        return v.frozen(np.repeat(np.arange(self.face_count, dtype=np.intp), self.face_sizes - 2))
+
+    @functools.cached_property
+    def _newell(self) -> np.ndarray:
+        """(F, 3) un-normalized Newell vectors: twice each face's vector area."""
+        current = self.vertices[self.face_indices]
+        following = np.arange(1, len(self.face_indices) + 1)
+        following[self.face_offsets[1:] - 1] = self.face_offsets[:-1]  # last corner wraps to first
+        after = self.vertices[self.face_indices[following]]
+        (x, y, z), (xn, yn, zn) = current.T, after.T
+        terms = np.stack([(y - yn) * (z + zn), (z - zn) * (x + xn), (x - xn) * (y + yn)], axis=1)
+        return np.add.reduceat(terms, self.face_offsets[:-1], axis=0)
+
+    @functools.cached_property
+    def face_areas(self) -> np.ndarray:
+        """(F,) area of each face (of its vector area for a non-planar polygon)."""
+        return v.frozen(0.5 * np.linalg.norm(self._newell, axis=1))
+
+    @functools.cached_property
+    def face_normals(self) -> np.ndarray:
+        """(F, 3) unit face normals by Newell's method; zero for degenerate faces."""
+        return v.frozen(_normalized(self._newell))
+
+    @functools.cached_property
+    def vertex_normals(self) -> np.ndarray:
+        """(V, 3) unit vertex normals: the given ``normals``, else area-weighted face normals."""
+        if self.normals is not None:
+            return self.normals
+        owner = np.repeat(self._newell, self.face_sizes, axis=0)
+        count = len(self.vertices)
+        sums = np.stack(
+            [np.bincount(self.face_indices, owner[:, axis], count) for axis in range(3)], axis=1
+        )
+        return v.frozen(_normalized(sums))
+
+    def bounds(self) -> np.ndarray:
+        """Return the (2, 3) axis-aligned bounding box ``[minimum, maximum]`` of the vertices.
+
+        Examples
+        --------
+        >>> from pixelpath.scene import Box
+        >>> Box((0, 0, 0), (1, 2, 3)).to_mesh().bounds().tolist()
+        [[0.0, 0.0, 0.0], [1.0, 2.0, 3.0]]
+        """
+        return np.stack([self.vertices.min(axis=0), self.vertices.max(axis=0)])
+
+    def transformed(self, matrix: Any) -> Mesh:
+        """Return this mesh under an affine (4, 4) transform; normals use the inverse transpose.
+
+        A transform that mirrors (negative determinant) reverses each face's winding, so faces
+        stay counter-clockwise seen from outside.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from pixelpath.scene import Mesh
+        >>> tri = Mesh([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]])
+        >>> mirrored = tri.transformed(np.diag([1.0, 1.0, -1.0, 1.0]))  # z -> -z
+        >>> mirrored.face_normals.tolist(), mirrored.faces
+        ([[0.0, 0.0, -1.0]], [[0, 2, 1]])
+        """
+        linear, shift = _affine_parts(matrix)
+        vertices = self.vertices @ linear.T + shift
+        normals = None
+        if self.normals is not None:
+            normals = self.normals @ np.linalg.inv(linear)  # (L^-T n) for each row n
+        faces: Any = (self.face_offsets, self.face_indices)
+        if np.linalg.det(linear) < 0.0:
+            faces = (self.face_offsets, _reverse_windings(self.face_offsets, self.face_indices))
+        return Mesh(vertices, _RaggedFaces(*faces), self.material, normals, self.name)
+
+    @classmethod
+    def load(cls, path: str | Path, material: Material | None = None) -> Mesh:
+        """Read an OBJ, PLY or STL file through trimesh, keeping its polygon faces.
+
+        Normals stored in the file are used when there is one per vertex; otherwise they are
+        computed area-weighted.
+
+        Raises
+        ------
+        FileNotFoundError
+            When ``path`` does not exist.
+        ValueError
+            For unsupported formats, unreadable or empty meshes and out-of-range indices; the
+            message names the file.
+
+        Examples
+        --------
+        >>> from pixelpath.scene import Mesh
+        >>> Mesh.load("suzanne.obj").face_count  # doctest: +SKIP
+        500
+        """
+        from pixelpath.io.meshes import read_mesh
+
+        path = Path(path)
+        vertices, faces, normals = read_mesh(path)
+        try:
+            return cls(vertices, faces, material, normals, name=path.stem, source={"path": path})
+        except ValueError as exc:
+            raise ValueError(f"{path}: {exc}") from None
+
+
+class _RaggedFaces:
+    """Faces already in (offsets, indices) form, passed between meshes without re-checking."""
+
+    def __init__(self, offsets: np.ndarray, indices: np.ndarray) -> None:
+        self.offsets = offsets
+        self.indices = indices
+
+
+def _ragged_faces(faces: Any, vertex_count: int) -> tuple[np.ndarray, np.ndarray]:
+    """Return (offsets, indices) of ``faces`` after checking sizes and index range."""
+    if isinstance(faces, _RaggedFaces):
+        return faces.offsets.copy(), faces.indices.copy()
+    offsets, indices = _faces_to_ragged(faces)
+    if len(offsets) == 1:
+        raise ValueError("faces is empty: a mesh needs at least one face")
+    sizes = np.diff(offsets)
+    if np.any(sizes < 3):
+        face = int(np.argmax(sizes < 3))
+        raise ValueError(f"face {face} has {sizes[face]} vertices; a face needs at least 3")
+    bad = (indices < 0) | (indices >= vertex_count)
+    if np.any(bad):
+        corner = int(np.argmax(bad))
+        face = int(np.searchsorted(offsets, corner, side="right") - 1)
+        raise ValueError(
+            f"face {face} refers to vertex {indices[corner]}, outside 0..{vertex_count - 1} "
+            f"(the mesh has {vertex_count} vertices)"
+        )
+    return offsets, indices
+
+
+def _faces_to_ragged(faces: Any) -> tuple[np.ndarray, np.ndarray]:
+    if isinstance(faces, str) or not isinstance(faces, Sequence | np.ndarray):
+        raise TypeError(f"faces must be a sequence of polygons, got {type(faces).__name__}")
+    try:
+        table = np.asarray(faces)
+    except ValueError:  # ragged: polygons of several sizes
+        table = None
+    if table is not None and table.ndim == 2 and np.issubdtype(table.dtype, np.integer):
+        count, size = table.shape
+        offsets = np.arange(count + 1, dtype=np.intp) * size
+        return offsets, np.ascontiguousarray(table, dtype=np.intp).reshape(-1)
+    polygons = [_index_list(face, number) for number, face in enumerate(faces)]
+    sizes = np.array([len(p) for p in polygons], dtype=np.intp)
+    offsets = np.concatenate([[0], np.cumsum(sizes)]).astype(np.intp)
+    indices = np.concatenate(polygons).astype(np.intp) if polygons else np.zeros(0, np.intp)
+    return offsets, indices
+
+
+def _index_list(face: Any, number: int) -> np.ndarray:
+    try:
+        array = np.asarray(face)
+    except ValueError:
+        array = np.asarray([None])
+    if array.ndim != 1 or not (np.issubdtype(array.dtype, np.integer) or array.size == 0):
+        raise TypeError(f"face {number} must be a sequence of vertex indices (ints), got {face!r}")
+    return array.astype(np.intp)
+
+
+def _given_normals(normals: Any, vertex_count: int) -> np.ndarray:
+    array = v.float_array(normals, "normals", (vertex_count, 3))
+    lengths = np.linalg.norm(array, axis=1)
+    if np.any(lengths == 0.0):
+        raise ValueError(f"normals[{int(np.argmin(lengths))}] is the zero vector")
+    return v.frozen(array / lengths[:, None])
+
+
+def _normalized(vectors: np.ndarray) -> np.ndarray:
+    lengths = np.linalg.norm(vectors, axis=1, keepdims=True)
+    return np.divide(vectors, lengths, out=np.zeros_like(vectors), where=lengths > 0.0)
+
+
+def _affine_parts(matrix: Any) -> tuple[np.ndarray, np.ndarray]:
+    m = v.float_array(matrix, "matrix", (4, 4))
+    if not np.array_equal(m[3], [0.0, 0.0, 0.0, 1.0]):
+        raise ValueError(f"matrix must be affine (last row 0, 0, 0, 1), got {m[3].tolist()}")
+    if abs(np.linalg.det(m[:3, :3])) < 1e-300:
+        raise ValueError("matrix is singular: it would flatten the mesh")
+    return m[:3, :3], m[:3, 3]
+
+
+def _reverse_windings(offsets: np.ndarray, indices: np.ndarray) -> np.ndarray:
+    """Reverse each polygon's vertex order, keeping its first vertex first."""
+    face = np.repeat(np.arange(len(offsets) - 1), np.diff(offsets))
+    start, stop = offsets[face], offsets[face + 1]
+    position = np.arange(len(indices))
+    mirrored = np.where(position == start, start, start + stop - position)
+    return indices[mirrored]

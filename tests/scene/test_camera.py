@@ -1,0 +1,130 @@
+"""Camera basis and matrices against hand-derived values; validation of every argument."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from pixelpath.scene import Camera
+
+
+def ndc(camera: Camera, world_point) -> np.ndarray:
+    clip = camera.projection_matrix() @ camera.view_matrix() @ np.append(world_point, 1.0)
+    return clip[:3] / clip[3]
+
+
+def test_basis_looking_down_minus_z_is_the_identity():
+    u, v, w = Camera(eye=(0, 0, 5), target=(0, 0, 0)).basis()
+    np.testing.assert_array_equal(np.stack([u, v, w]), np.eye(3))
+
+
+def test_basis_looking_down_minus_x():
+    # w = eye - target = +x; u = up x w = (0,1,0) x (1,0,0) = (0,0,-1); v = w x u = (0,1,0)
+    u, v, w = Camera(eye=(5, 0, 0), target=(0, 0, 0)).basis()
+    np.testing.assert_allclose(u, [0, 0, -1], atol=1e-15)
+    np.testing.assert_allclose(v, [0, 1, 0], atol=1e-15)
+    np.testing.assert_allclose(w, [1, 0, 0], atol=1e-15)
+
+
+def test_basis_is_orthonormal_and_right_handed_for_a_tilted_up():
+    u, v, w = Camera(eye=(1, 2, 3), target=(-2, 0.5, 1), up=(0.3, 1, 0.2)).basis()
+    frame = np.stack([u, v, w])
+    np.testing.assert_allclose(frame @ frame.T, np.eye(3), atol=1e-14)
+    np.testing.assert_allclose(np.cross(u, v), w, atol=1e-14)
+
+
+def test_view_matrix_sends_eye_to_origin_and_target_down_minus_z():
+    camera = Camera(eye=(1, 2, 3), target=(4, 6, 3))  # distance 5 along (0.6, 0.8, 0)
+    view = camera.view_matrix()
+    np.testing.assert_allclose(view @ [1, 2, 3, 1], [0, 0, 0, 1], atol=1e-14)
+    np.testing.assert_allclose(view @ [4, 6, 3, 1], [0, 0, -5, 1], atol=1e-14)
+
+
+def test_view_matrix_hand_values_for_a_camera_on_the_x_axis():
+    view = Camera(eye=(5, 0, 0), target=(0, 0, 0)).view_matrix()
+    expected = [[0, 0, -1, 0], [0, 1, 0, 0], [1, 0, 0, -5], [0, 0, 0, 1]]
+    np.testing.assert_allclose(view, expected, atol=1e-15)
+
+
+def test_projection_matrix_hand_values():
+    # fov 90 -> f = 1/tan(45°) = 1; aspect 2; near 1, far 3:
+    # [f/a, 0, 0, 0], [0, f, 0, 0], [0, 0, (3+1)/(1-3), 2*3*1/(1-3)], [0, 0, -1, 0]
+    camera = Camera(eye=(0, 0, 0), target=(0, 0, -1), fov=90, width=200, height=100, near=1, far=3)
+    expected = [[0.5, 0, 0, 0], [0, 1, 0, 0], [0, 0, -2, -3], [0, 0, -1, 0]]
+    np.testing.assert_allclose(camera.projection_matrix(), expected, atol=1e-15)
+
+
+def test_target_projects_to_the_centre_of_the_image():
+    camera = Camera(eye=(3, -2, 7), target=(0.5, 1, -1), up=(0, 0, 1), near=0.5, far=50)
+    np.testing.assert_allclose(ndc(camera, camera.target)[:2], [0, 0], atol=1e-12)
+
+
+@pytest.mark.parametrize("fov", [30.0, 60.0, 90.0, 120.0])
+@pytest.mark.parametrize(("width", "height"), [(640, 480), (100, 300)])
+def test_frustum_corners_map_to_plus_minus_one(fov, width, height):
+    near, far = 0.5, 20.0
+    camera = Camera(eye=(0, 0, 0), target=(0, 0, -1), fov=fov, width=width, height=height,
+                    near=near, far=far)
+    for depth, z_ndc in ((near, -1.0), (far, 1.0)):
+        half_height = depth * math.tan(math.radians(fov) / 2)
+        half_width = half_height * width / height
+        for sx in (-1, 1):
+            for sy in (-1, 1):
+                point = (sx * half_width, sy * half_height, -depth)
+                np.testing.assert_allclose(ndc(camera, point), [sx, sy, z_ndc], atol=1e-12)
+
+
+def test_clip_w_is_the_depth_along_the_viewing_axis():
+    camera = Camera(eye=(0, 0, 10), target=(0, 0, 0), fov=60)
+    for point, depth in (((0, 0, 0), 10.0), ((1, -2, 4), 6.0), ((3, 3, -5), 15.0)):
+        clip = camera.projection_matrix() @ camera.view_matrix() @ np.append(point, 1.0)
+        assert clip[3] == pytest.approx(depth)
+
+
+def test_ndc_depth_increases_with_distance():
+    camera = Camera(eye=(0, 0, 0), target=(0, 0, -1), near=0.1, far=100)
+    depths = [ndc(camera, (0, 0, -d))[2] for d in (0.1, 1, 10, 50, 100)]
+    assert depths[0] == pytest.approx(-1) and depths[-1] == pytest.approx(1)
+    assert np.all(np.diff(depths) > 0)
+
+
+def test_with_size_changes_only_the_size():
+    camera = Camera(eye=(1, 2, 3), target=(0, 0, 0), fov=70, near=0.3, far=30)
+    small = camera.with_size(64, 32)
+    assert (small.width, small.height, small.fov, small.near) == (64, 32, 70, 0.3)
+    np.testing.assert_array_equal(small.eye, camera.eye)
+    assert small.aspect == 2.0
+
+
+def test_vectors_are_read_only_float64():
+    camera = Camera(eye=[0, 0, 5], target=[0, 0, 0])
+    assert camera.eye.dtype == np.float64
+    with pytest.raises(ValueError, match="read-only"):
+        camera.eye[0] = 1.0
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "error", "message"),
+    [
+        ({"fov": 0}, ValueError, "fov"),
+        ({"fov": 180}, ValueError, "fov"),
+        ({"fov": float("nan")}, ValueError, "fov must be finite"),
+        ({"width": 0}, ValueError, "width"),
+        ({"height": 10**6}, ValueError, "height must be between 1 and 16384"),
+        ({"width": 2.5}, TypeError, "width must be an int"),
+        ({"width": True}, TypeError, "width"),
+        ({"near": 0}, ValueError, "near must be positive"),
+        ({"near": 5, "far": 5}, ValueError, "far must be greater than near"),
+        ({"eye": (0, 0, 0)}, ValueError, "eye and target must differ"),
+        ({"up": (0, 0, 2)}, ValueError, "parallel"),
+        ({"eye": (0, float("nan"), 5)}, ValueError, "eye must be finite"),
+        ({"eye": (0, 5)}, ValueError, r"eye must have shape \(3\), got shape \(2,\)"),
+        ({"target": "origin"}, TypeError, "target"),
+    ],
+)
+def test_invalid_arguments_are_named(kwargs, error, message):
+    arguments = {"eye": (0, 0, 5), "target": (0, 0, 0), **kwargs}
+    with pytest.raises(error, match=message):
+        Camera(**arguments)

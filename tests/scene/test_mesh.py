@@ -1,0 +1,186 @@
+"""Mesh topology and normals: fan triangles, Newell normals, area weighting, transforms, errors."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from pixelpath.scene import Material, Mesh
+
+SQUARE = [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]]
+
+
+def regular_polygon(k: int, radius: float = 1.0) -> np.ndarray:
+    angles = 2 * np.pi * np.arange(k) / k
+    return np.stack([radius * np.cos(angles), radius * np.sin(angles), np.zeros(k)], axis=1)
+
+
+def rotation(axis_angle) -> np.ndarray:
+    """Rodrigues' rotation matrix for the rotation vector ``axis_angle``."""
+    angle = float(np.linalg.norm(axis_angle))
+    if angle == 0.0:
+        return np.eye(3)
+    kx, ky, kz = np.asarray(axis_angle) / angle
+    k = np.array([[0, -kz, ky], [kz, 0, -kx], [-ky, kx, 0]])
+    return np.eye(3) + math.sin(angle) * k + (1 - math.cos(angle)) * k @ k
+
+
+def test_fan_triangulation_of_mixed_polygons():
+    vertices = np.vstack([SQUARE, regular_polygon(5) + np.array([3.0, 0, 0]), [[0, 0, 1]]])
+    mesh = Mesh(vertices, [[0, 1, 2, 3], [4, 5, 6, 7, 8], [0, 1, 9]])
+    assert mesh.face_count == 3
+    assert mesh.face_offsets.tolist() == [0, 4, 9, 12]
+    assert mesh.face_indices.tolist() == [0, 1, 2, 3, 4, 5, 6, 7, 8, 0, 1, 9]
+    assert mesh.triangles.tolist() == [
+        [0, 1, 2], [0, 2, 3], [4, 5, 6], [4, 6, 7], [4, 7, 8], [0, 1, 9],
+    ]  # fmt: skip
+    assert mesh.triangle_face.tolist() == [0, 0, 1, 1, 1, 2]
+    assert mesh.triangles.dtype == np.intp and mesh.triangle_face.dtype == np.intp
+    assert mesh.faces == [[0, 1, 2, 3], [4, 5, 6, 7, 8], [0, 1, 9]]
+
+
+def test_rectangular_face_array_equals_the_ragged_form():
+    table = Mesh(SQUARE, np.array([[0, 1, 2], [0, 2, 3]]))
+    ragged = Mesh(SQUARE, [(0, 1, 2), (0, 2, 3)])
+    np.testing.assert_array_equal(table.triangles, ragged.triangles)
+    np.testing.assert_array_equal(table.face_offsets, [0, 3, 6])
+
+
+def test_newell_normal_and_area_of_a_tilted_rectangle():
+    # A 2 x 1 rectangle in the plane y = z (normal (0, -1, 1)/√2), counter-clockwise about it.
+    s = math.sqrt(0.5)
+    rectangle = [[0, 0, 0], [2, 0, 0], [2, s, s], [0, s, s]]
+    mesh = Mesh(rectangle, [[0, 1, 2, 3]])
+    np.testing.assert_allclose(mesh.face_normals, [[0, -s, s]], atol=1e-15)
+    np.testing.assert_allclose(mesh.face_areas, [2.0])
+
+
+@settings(max_examples=40, deadline=None)
+@given(
+    k=st.integers(3, 12),
+    radius=st.floats(0.1, 10),
+    axis_angle=st.tuples(*[st.floats(-3, 3)] * 3),
+    shift=st.tuples(*[st.floats(-100, 100)] * 3),
+)
+def test_newell_normal_of_rotated_regular_polygons(k, radius, axis_angle, shift):
+    turn = rotation(axis_angle)
+    polygon = regular_polygon(k, radius) @ turn.T + shift
+    mesh = Mesh(polygon, [list(range(k))])
+    np.testing.assert_allclose(mesh.face_normals[0], turn[:, 2], atol=1e-9)
+    area = 0.5 * k * radius**2 * math.sin(2 * math.pi / k)
+    np.testing.assert_allclose(mesh.face_areas[0], area, rtol=1e-9)
+    assert len(mesh.triangles) == k - 2
+
+
+def test_vertex_normal_is_area_weighted():
+    # Vertex 0 is shared by a triangle of area 2 facing +z and one of area 0.5 facing +y:
+    # its normal is normalize(2·(0, 0, 1) + 0.5·(0, 1, 0)) = (0, 0.5, 2)/√4.25.
+    vertices = [[0, 0, 0], [2, 0, 0], [0, 2, 0], [0, 0, 1], [1, 0, 0]]
+    mesh = Mesh(vertices, [[0, 1, 2], [0, 3, 4]])
+    np.testing.assert_allclose(mesh.face_normals, [[0, 0, 1], [0, 1, 0]], atol=1e-15)
+    np.testing.assert_allclose(mesh.vertex_normals[0], np.array([0, 0.5, 2]) / math.sqrt(4.25))
+    np.testing.assert_allclose(mesh.vertex_normals[1], [0, 0, 1])
+    np.testing.assert_allclose(mesh.vertex_normals[3], [0, 1, 0])
+
+
+def test_given_normals_are_normalized_and_used():
+    mesh = Mesh(SQUARE, [[0, 1, 2, 3]], normals=[[0, 0, 2]] * 3 + [[0, 3, 4]])
+    np.testing.assert_allclose(mesh.vertex_normals, [[0, 0, 1]] * 3 + [[0, 0.6, 0.8]])
+
+
+def test_degenerate_face_has_a_zero_normal_and_no_nan():
+    mesh = Mesh([[0, 0, 0], [1, 0, 0], [2, 0, 0], [0, 1, 0]], [[0, 1, 2], [0, 1, 3]])
+    np.testing.assert_array_equal(mesh.face_normals[0], [0, 0, 0])
+    assert mesh.face_areas[0] == 0.0
+    np.testing.assert_allclose(mesh.vertex_normals[2], [0, 0, 0])
+    np.testing.assert_allclose(mesh.vertex_normals[3], [0, 0, 1])
+
+
+def test_bounds():
+    mesh = Mesh([[1, -2, 3], [4, 5, -6], [0, 0, 0]], [[0, 1, 2]])
+    np.testing.assert_array_equal(mesh.bounds(), [[0, -2, -6], [4, 5, 3]])
+
+
+def test_transformed_moves_vertices_and_uses_the_inverse_transpose_for_normals():
+    # A face in the plane x + y = 1 (normal (1, 1, 0)/√2); scaling x by 2 turns the plane
+    # into x/2 + y = 1, whose normal is (0.5, 1, 0) normalized.
+    vertices = [[1, 0, 0], [0, 1, 0], [0, 1, 1], [1, 0, 1]]
+    mesh = Mesh(vertices, [[0, 1, 2, 3]], normals=[[1, 1, 0]] * 4)
+    matrix = np.diag([2.0, 1.0, 1.0, 1.0])
+    matrix[:3, 3] = [0, 0, 5]
+    moved = mesh.transformed(matrix)
+    np.testing.assert_allclose(moved.vertices, [[2, 0, 5], [0, 1, 5], [0, 1, 6], [2, 0, 6]])
+    expected = np.array([0.5, 1, 0]) / math.hypot(0.5, 1)
+    np.testing.assert_allclose(moved.face_normals, [expected], atol=1e-15)
+    np.testing.assert_allclose(moved.vertex_normals, [expected] * 4, atol=1e-15)
+    assert moved.material is mesh.material
+
+
+def test_mirroring_keeps_faces_outward():
+    cube = Mesh(
+        [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]],
+        [[0, 3, 2, 1], [4, 5, 6, 7], [0, 1, 5, 4], [2, 3, 7, 6], [1, 2, 6, 5], [0, 4, 7, 3]],
+    )
+    mirrored = cube.transformed(np.diag([-1.0, 1.0, 1.0, 1.0]))
+    for mesh in (cube, mirrored):
+        centre = mesh.vertices.mean(axis=0)
+        face_centres = np.array([mesh.vertices[f].mean(axis=0) for f in mesh.faces])
+        outward = np.einsum("ij,ij->i", mesh.face_normals, face_centres - centre)
+        np.testing.assert_allclose(outward, 0.5)
+
+
+def test_input_arrays_are_copied_and_results_read_only():
+    vertices = np.array(SQUARE, dtype=float)
+    mesh = Mesh(vertices, [[0, 1, 2, 3]])
+    vertices[0, 0] = 99.0
+    assert mesh.vertices[0, 0] == 0.0
+    for array in (mesh.vertices, mesh.triangles, mesh.face_normals, mesh.vertex_normals):
+        assert not array.flags.writeable
+
+
+def test_material_and_name():
+    red = Material(color=(1, 0, 0))
+    mesh = Mesh(SQUARE, [[0, 1, 2, 3]], material=red, name="quad")
+    assert mesh.material is red and "quad" in repr(mesh)
+    assert Mesh(SQUARE, [[0, 1, 2, 3]]).material == Material()
+
+
+@pytest.mark.parametrize(
+    ("vertices", "faces", "error", "message"),
+    [
+        (SQUARE, [[0, 1, 2], [0, 2, 4]], ValueError, "face 1 refers to vertex 4, outside 0..3"),
+        (SQUARE, [[0, 1, 2], [-1, 2, 3]], ValueError, "face 1 refers to vertex -1"),
+        (SQUARE, [[0, 1, 2], [0, 2]], ValueError, "face 1 has 2 vertices"),
+        (SQUARE, [[0, 1, 2], []], ValueError, "face 1 has 0 vertices"),
+        (SQUARE, [], ValueError, "faces is empty"),
+        (np.zeros((0, 3)), [[0, 1, 2]], ValueError, "vertices is empty"),
+        ([[0, 0, 0], [1, np.nan, 0], [0, 1, 0]], [[0, 1, 2]], ValueError, "must be finite"),
+        ([[0, 0], [1, 0], [0, 1]], [[0, 1, 2]], ValueError, r"vertices must have shape \(n, 3\)"),
+        (SQUARE, [[0, 1, 2.0]], TypeError, "face 0 must be a sequence of vertex indices"),
+        (SQUARE, np.array([[0.0, 1.0, 2.0]]), TypeError, "face 0"),
+        (SQUARE, "0 1 2", TypeError, "faces must be a sequence"),
+    ],
+)
+def test_invalid_meshes_are_rejected_clearly(vertices, faces, error, message):
+    with pytest.raises(error, match=message):
+        Mesh(vertices, faces)
+
+
+def test_invalid_normals_and_transforms():
+    with pytest.raises(ValueError, match=r"normals must have shape \(4, 3\)"):
+        Mesh(SQUARE, [[0, 1, 2, 3]], normals=[[0, 0, 1]] * 3)
+    with pytest.raises(ValueError, match=r"normals\[2\] is the zero vector"):
+        Mesh(SQUARE, [[0, 1, 2, 3]], normals=[[0, 0, 1]] * 2 + [[0, 0, 0]] * 2)
+    mesh = Mesh(SQUARE, [[0, 1, 2, 3]])
+    projective = np.eye(4)
+    projective[3, 2] = -1
+    with pytest.raises(ValueError, match="affine"):
+        mesh.transformed(projective)
+    with pytest.raises(ValueError, match="singular"):
+        mesh.transformed(np.diag([1.0, 0.0, 1.0, 1.0]))
+    with pytest.raises(TypeError, match="material must be a Material"):
+        Mesh(SQUARE, [[0, 1, 2, 3]], material="red")
