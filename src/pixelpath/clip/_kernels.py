@@ -1,0 +1,310 @@
+"""Compiled Sutherland-Hodgman kernels: one stage, one polygon, many polygons.
+
+A window reaches the kernels as a *boundary table*, a ``(K, 5)`` float64 array with one row per
+boundary in clipping order: ``[kind, p0, p1, p2, p3]``. Kinds ``LEFT``, ``RIGHT``, ``BOTTOM`` and
+``TOP`` keep their line's coordinate in ``p0`` (the notes' rectangle); kind ``EDGE`` is a window
+edge from ``(p0, p1)`` to ``(p2, p3)`` directed so that the inside is on its left. One array
+argument keeps the call from Python cheap (the single-clip latency is mostly dispatch).
+
+Polygons travel as contiguous ``(n, 2)`` float64 arrays; many polygons as one flat coordinate
+buffer plus an ``offsets`` array (polygon ``i`` is ``coords[offsets[i]:offsets[i + 1]]``).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from pixelpath._jit import njit, prange, register_warmup
+
+LEFT, RIGHT, BOTTOM, TOP, EDGE = 0, 1, 2, 3, 4
+
+OK, NON_FINITE, TOO_FEW_VERTICES = 0, 1, 2
+
+# Relative distance under which a computed vertex counts as lying on a slanted window edge
+# (rectangle boundaries are exact: the notes' formulas put x = xmin exactly).
+ON_EDGE_RTOL = 1e-9
+
+
+@njit(inline="always")
+def inside(row, x, y):
+    kind = row[0]
+    if kind == LEFT:
+        return x >= row[1]
+    if kind == RIGHT:
+        return x <= row[1]
+    if kind == BOTTOM:
+        return y >= row[1]
+    if kind == TOP:
+        return y <= row[1]
+    return (row[3] - row[1]) * (y - row[2]) - (row[4] - row[2]) * (x - row[1]) >= 0.0
+
+
+@njit(inline="always")
+def _between(value, a, b):
+    # Rounding can push an interpolated coordinate an ulp past the segment's end; keeping it
+    # between the ends keeps earlier boundaries satisfied, so clipping again changes nothing.
+    return min(max(value, min(a, b)), max(a, b))
+
+
+@njit(inline="always")
+def intersection(row, x1, y1, x2, y2):
+    """Where the edge S=(x1, y1) -> E=(x2, y2) crosses the boundary (notes, section 6)."""
+    kind = row[0]
+    if kind == LEFT or kind == RIGHT:
+        x = row[1]
+        return x, _between(y1 + (y2 - y1) * (x - x1) / (x2 - x1), y1, y2)
+    if kind == BOTTOM or kind == TOP:
+        y = row[1]
+        return _between(x1 + (x2 - x1) * (y - y1) / (y2 - y1), x1, x2), y
+    # Parametric form: P = S + t (E - S) with t = dS / (dS - dE), d the signed side value.
+    ex, ey = row[3] - row[1], row[4] - row[2]
+    d_s = ex * (y1 - row[2]) - ey * (x1 - row[1])
+    d_e = ex * (y2 - row[2]) - ey * (x2 - row[1])
+    t = d_s / (d_s - d_e)
+    return _between(x1 + t * (x2 - x1), x1, x2), _between(y1 + t * (y2 - y1), y1, y2)
+
+
+@njit(inline="always")
+def _emit(dst, m, x, y):
+    """Append (x, y) unless it repeats the last vertex; return the new count."""
+    if m > 0 and dst[m - 1, 0] == x and dst[m - 1, 1] == y:
+        return m
+    dst[m, 0] = x
+    dst[m, 1] = y
+    return m + 1
+
+
+@njit
+def clip_stage(src, n, row, dst, crossings):
+    """Clip ``src[:n]`` against one boundary into ``dst``; return the output count.
+
+    ``dst`` needs room for ``n + n // 2 + 1`` vertices. When ``crossings`` has ``n`` rows it
+    records, per (S, E) pair, the intersection point emitted (NaN when none) for the trace.
+    """
+    record = crossings.shape[0] == n
+    m = 0
+    sx, sy = src[n - 1, 0], src[n - 1, 1]  # S starts as the last vertex
+    s_in = inside(row, sx, sy)
+    for i in range(n):
+        ex, ey = src[i, 0], src[i, 1]
+        e_in = inside(row, ex, ey)
+        ix, iy = np.nan, np.nan
+        if s_in != e_in:  # the edge crosses: emit the intersection first
+            ix, iy = intersection(row, sx, sy, ex, ey)
+            m = _emit(dst, m, ix, iy)
+        if e_in:
+            m = _emit(dst, m, ex, ey)
+        if record:
+            crossings[i, 0] = ix
+            crossings[i, 1] = iy
+        sx, sy, s_in = ex, ey, e_in
+    if m > 1 and dst[m - 1, 0] == dst[0, 0] and dst[m - 1, 1] == dst[0, 1]:
+        m -= 1  # the list is cyclic: its last vertex must not repeat the first
+    return m
+
+
+@njit
+def check_subject(xy):
+    """Return ``OK``, ``NON_FINITE`` or ``TOO_FEW_VERTICES`` (fewer than 3 distinct)."""
+    n = xy.shape[0]
+    for i in range(n):
+        if not (np.isfinite(xy[i, 0]) and np.isfinite(xy[i, 1])):
+            return NON_FINITE
+    second = -1
+    for i in range(1, n):
+        if xy[i, 0] != xy[0, 0] or xy[i, 1] != xy[0, 1]:
+            if second < 0:
+                second = i
+            elif xy[i, 0] != xy[second, 0] or xy[i, 1] != xy[second, 1]:
+                return OK
+    return TOO_FEW_VERTICES
+
+
+@njit
+def _run_stages(xy, table, a, b):
+    """Clip ``xy`` through every boundary, ping-ponging between scratch buffers ``a``, ``b``.
+
+    Returns ``(count, a, b)``; the result is ``b[:count]``. A buffer that could overflow is
+    replaced by a larger one, so callers keep the returned pair for their next polygon.
+    """
+    n = xy.shape[0]
+    for k in range(table.shape[0]):
+        need = n + n // 2 + 1  # a stage emits at most 3 vertices per 2 input vertices
+        if a.shape[0] < need:
+            a = np.empty((2 * need, 2))
+        if k == 0:
+            n = clip_stage(xy, n, table[k], a, np.empty((0, 2)))  # no trace
+        else:
+            n = clip_stage(b, n, table[k], a, np.empty((0, 2)))  # no trace
+        a, b = b, a  # this stage's output is the next stage's input
+        if n == 0:
+            break
+    return n, a, b
+
+
+@njit
+def _scan_bridges(poly, m, table, out):
+    """Count the zero-width bridges of ``poly[:m]``; write them into ``out`` if it has room.
+
+    A bridge is a stretch of a window boundary that the polygon runs along twice, in opposite
+    directions: Sutherland-Hodgman's way of joining pieces of a concave subject.
+    """
+    count = 0
+    for k in range(table.shape[0]):
+        row = table[k]
+        for i in range(m):
+            t0, t1, on = _edge_on_boundary(poly, m, i, row)
+            if not on:
+                continue
+            for j in range(i + 1, m):
+                u0, u1, on_j = _edge_on_boundary(poly, m, j, row)
+                if not on_j or (t1 > t0) == (u1 > u0):
+                    continue
+                lo = max(min(t0, t1), min(u0, u1))
+                hi = min(max(t0, t1), max(u0, u1))
+                if hi > lo:
+                    if count < out.shape[0]:
+                        _boundary_point(row, lo, out[count, 0])
+                        _boundary_point(row, hi, out[count, 1])
+                    count += 1
+    return count
+
+
+@njit(inline="always")
+def _boundary_coordinate(row, x, y):
+    """Return (position along the boundary, whether (x, y) lies on its line)."""
+    kind = row[0]
+    if kind == LEFT or kind == RIGHT:
+        return y, x == row[1]
+    if kind == BOTTOM or kind == TOP:
+        return x, y == row[1]
+    ex, ey = row[3] - row[1], row[4] - row[2]
+    length2 = ex * ex + ey * ey
+    side = ex * (y - row[2]) - ey * (x - row[1])
+    scale = max(1.0, abs(row[1]) + abs(row[2]) + np.sqrt(length2))
+    t = (ex * (x - row[1]) + ey * (y - row[2])) / length2
+    return t, abs(side) <= ON_EDGE_RTOL * scale * np.sqrt(length2)
+
+
+@njit(inline="always")
+def _edge_on_boundary(poly, m, i, row):
+    j = (i + 1) % m
+    t0, on0 = _boundary_coordinate(row, poly[i, 0], poly[i, 1])
+    t1, on1 = _boundary_coordinate(row, poly[j, 0], poly[j, 1])
+    return t0, t1, on0 and on1 and t0 != t1
+
+
+@njit(inline="always")
+def _boundary_point(row, t, point):
+    kind = row[0]
+    if kind == LEFT or kind == RIGHT:
+        point[0], point[1] = row[1], t
+    elif kind == BOTTOM or kind == TOP:
+        point[0], point[1] = t, row[1]
+    else:
+        point[0] = row[1] + t * (row[3] - row[1])
+        point[1] = row[2] + t * (row[4] - row[2])
+
+
+@njit
+def sutherland_hodgman(xy, table):
+    """Clip one polygon; return ``(result, status, bridge_count)``.
+
+    ``result`` is ``(M, 2)``, empty when fewer than 3 vertices are left.
+    """
+    status = check_subject(xy)
+    if status != OK:
+        return np.empty((0, 2)), status, 0
+    n = xy.shape[0]
+    m, _, res = _run_stages(xy, table, np.empty((2 * n + 2, 2)), np.empty((2 * n + 2, 2)))
+    if m < 3:
+        return np.empty((0, 2)), OK, 0
+    return res[:m].copy(), OK, _scan_bridges(res, m, table, np.empty((0, 2, 2)))
+
+
+@njit
+def bridges(poly, table):
+    """Return the zero-width bridges of a clipped polygon as a ``(B, 2, 2)`` array."""
+    m = poly.shape[0]
+    out = np.empty((_scan_bridges(poly, m, table, np.empty((0, 2, 2))), 2, 2))
+    _scan_bridges(poly, m, table, out)
+    return out
+
+
+@njit
+def trace_stage(src, row):
+    """One traced stage: ``(output, inside flags of src, crossing point per (S, E) pair)``."""
+    n = src.shape[0]
+    flags = np.empty(n, dtype=np.bool_)
+    for i in range(n):
+        flags[i] = inside(row, src[i, 0], src[i, 1])
+    dst = np.empty((n + n // 2 + 1, 2))
+    crossings = np.empty((n, 2))
+    m = clip_stage(src, n, row, dst, crossings) if n > 0 else 0
+    return dst[:m].copy(), flags, crossings
+
+
+@njit(parallel=True)
+def clip_many(coords, offsets, table, chunks):
+    """Clip every polygon of a flat buffer; return ``(coords, offsets, status)``.
+
+    ``chunks`` groups of polygons are shared among the threads (a few per thread balances load).
+
+    Pass 1 clips chunks of polygons in parallel, each chunk with its own scratch buffers, and
+    keeps each result in a slot of ``2 n + 2 K`` rows (a result that does not fit is clipped
+    again in pass 2; Sutherland-Hodgman rarely grows a polygon that much). Pass 2 packs the
+    results into the output buffer at their final offsets.
+    """
+    count = offsets.shape[0] - 1
+    slot = np.empty(count + 1, dtype=np.intp)
+    slot[0] = 0
+    for i in range(count):
+        slot[i + 1] = slot[i] + 2 * (offsets[i + 1] - offsets[i]) + 2 * table.shape[0]
+    staging = np.empty((slot[count], 2))
+    sizes = np.zeros(count, dtype=np.intp)
+    status = np.zeros(count, dtype=np.intp)
+    chunks = max(1, min(count, chunks))
+    for c in prange(chunks):
+        lo, hi = c * count // chunks, (c + 1) * count // chunks
+        a = np.empty((256, 2))
+        b = np.empty((256, 2))
+        for i in range(lo, hi):
+            xy = coords[offsets[i] : offsets[i + 1]]
+            status[i] = check_subject(xy)
+            if status[i] != OK:
+                continue
+            m, a, b = _run_stages(xy, table, a, b)
+            if m < 3:
+                continue
+            sizes[i] = m
+            if m <= slot[i + 1] - slot[i]:
+                staging[slot[i] : slot[i] + m] = b[:m]
+    out_offsets = np.empty(count + 1, dtype=np.intp)
+    out_offsets[0] = 0
+    for i in range(count):
+        out_offsets[i + 1] = out_offsets[i] + sizes[i]
+    out = np.empty((out_offsets[count], 2))
+    for i in prange(count):
+        m = sizes[i]
+        if m == 0:
+            continue
+        if m <= slot[i + 1] - slot[i]:
+            out[out_offsets[i] : out_offsets[i] + m] = staging[slot[i] : slot[i] + m]
+        else:
+            n = offsets[i + 1] - offsets[i]
+            xy = coords[offsets[i] : offsets[i + 1]]
+            m, _, res = _run_stages(xy, table, np.empty((2 * n + 2, 2)), np.empty((2 * n + 2, 2)))
+            out[out_offsets[i] : out_offsets[i] + m] = res[:m]
+    return out, out_offsets, status
+
+
+@register_warmup
+def warmup() -> None:
+    """Compile every clipping kernel on a tiny input."""
+    square = np.array([[1.0, 1.0], [9.0, 1.0], [9.0, 7.0], [1.0, 7.0]])
+    rect = np.array([[LEFT, 2.0, 0, 0, 0], [RIGHT, 8.0, 0, 0, 0], [BOTTOM, 2.0, 0, 0, 0],
+                     [TOP, 6.0, 0, 0, 0]])
+    sutherland_hodgman(square, rect)
+    trace_stage(square, rect[0])
+    bridges(square, rect)
+    clip_many(square, np.array([0, 4], dtype=np.intp), rect, 1)
