@@ -8,6 +8,7 @@ import numba
 import numpy as np
 import pytest
 
+from pixelpath import scene
 from pixelpath.lighting import pack_ambient, pack_lights, pack_material, shade
 from pixelpath.lighting._kernels import shade_point
 
@@ -173,3 +174,63 @@ def test_material_object_with_packed_method():
     material = SimpleNamespace(packed=lambda: np.array(ORANGE))
     rgb = shade(ORIGIN, UP, (0.0, 0.0, 1.0), material, [], ambient=0.5)
     np.testing.assert_allclose(rgb, [[0.05, 0.025, 0.0125]], rtol=1e-12)
+
+
+def test_scene_lights_and_material_are_accepted():
+    lamp = scene.PointLight(position=(0.0, 3.0, 4.0), intensity=2.0, color=(1.0, 1.0, 0.5))
+    sun = scene.DirectionalLight(direction=(0.0, 0.0, -2.0), intensity=0.5)
+    packed = pack_lights([lamp, sun])
+    np.testing.assert_allclose(packed, [[0, 0, 3, 4, 2, 2, 1], [1, 0, 0, -1, 0.5, 0.5, 0.5]])
+    material = scene.Material(color=(1.0, 0.5, 0.25), ka=0.1, kd=0.5, ks=0.4, shininess=2.0)
+    # The lamp alone gives (1.342, 0.922, 0.3585) (test_coloured_point_light_phong). The sun:
+    # L = z, N.L = 1, R = z, R.V = 1: kd IL C + ks IL = 0.5 x 0.5 x C + 0.4 x 0.5
+    # = (0.25 + 0.2, 0.125 + 0.2, 0.0625 + 0.2) = (0.45, 0.325, 0.2625).
+    rgb = shade(ORIGIN, UP, (0.0, 0.0, 2.0), material, [lamp, sun], ambient=(0.3, 0.2, 0.1))
+    np.testing.assert_allclose(rgb, [[1.792, 1.247, 0.621]], rtol=1e-12)
+
+
+def numpy_reference(points, normals, eye, material, lights, ambient, blinn):
+    """The model written independently with NumPy broadcasting (no kernel)."""
+    color, (ka, kd, ks, shininess) = np.array(material[:3]), material[3:7]
+    n = normals / np.linalg.norm(normals, axis=1, keepdims=True)
+    v = eye - points
+    v /= np.linalg.norm(v, axis=1, keepdims=True)
+    total = np.broadcast_to(ka * np.asarray(ambient) * color, points.shape).copy()
+    for light in lights:
+        il = np.asarray(light.color) * light.intensity
+        if hasattr(light, "position"):
+            to_light = light.position - points
+            to_light /= np.linalg.norm(to_light, axis=1, keepdims=True)
+        else:
+            to_light = np.broadcast_to(-np.asarray(light.direction), points.shape)
+            to_light = to_light / np.linalg.norm(to_light, axis=1, keepdims=True)
+        n_dot_l = np.sum(n * to_light, axis=1)
+        if blinn:
+            h = to_light + v
+            cosine = np.sum(n * h, axis=1) / np.linalg.norm(h, axis=1)
+        else:
+            cosine = np.sum((2 * n_dot_l[:, None] * n - to_light) * v, axis=1)
+        lit = n_dot_l > 0
+        spec = np.where(lit & (cosine > 0), np.clip(cosine, 0, None) ** shininess, 0.0)
+        total += np.where(lit, n_dot_l, 0.0)[:, None] * kd * il * color + ks * spec[:, None] * il
+    return total
+
+
+@pytest.mark.parametrize("model", ["phong", "blinn"])
+def test_agrees_with_numpy_reference_for_many_points_and_coloured_lights(model):
+    rng = np.random.default_rng(7)
+    points = rng.uniform(-2, 2, size=(200, 3))
+    normals = rng.normal(size=(200, 3))
+    eye = np.array([0.5, 1.0, 9.0])
+    lights = [
+        point_light(np.array([0.0, 6.0, 5.0]), 1.0, (1.0, 0.9, 0.8)),
+        point_light(np.array([-4.0, 1.0, 3.0]), 0.6, (0.2, 0.3, 1.0)),
+        directional_light((1.0, -1.0, -0.5), 0.8, (1.0, 1.0, 0.5)),
+    ]
+    expected = numpy_reference(points, normals, eye, ORANGE, lights, (0.3, 0.2, 0.1),
+                               model == "blinn")
+    rgb = shade(points, normals, eye, ORANGE, lights, (0.3, 0.2, 0.1), model=model)
+    np.testing.assert_allclose(rgb, expected, rtol=1e-10, atol=1e-12)
+    # The sample is not trivial: some points see no light (ambient 0.1 x Ia x C only).
+    ambient_only = np.all(np.isclose(rgb, [0.03, 0.01, 0.0025]), axis=1)
+    assert 0 < ambient_only.sum() < len(rgb)
