@@ -32,7 +32,7 @@ _LAZY_NAMES = {
     "Scene": "pixelpath.scene",
     "load_scene": "pixelpath.scene",
     "Image": "pixelpath.image",
-    "render": "pixelpath.render",
+    "render": "pixelpath.renderer",  # a module named "render" would shadow the function
 }
 
 # Modules whose import registers their kernels' warm-up functions.
@@ -48,7 +48,7 @@ __all__ = [*_SUBMODULES, *_LAZY_NAMES, "warmup"]
 if TYPE_CHECKING:
     from pixelpath import clip, color, hsr, io, lighting, raster, raytrace, scene
     from pixelpath.image import Image
-    from pixelpath.render import render
+    from pixelpath.renderer import render
     from pixelpath.scene import (
         Box,
         Camera,

@@ -1,0 +1,67 @@
+"""Back-face elimination, an object-space test (SPEC §9 errata: not an image-space one).
+
+Convention used here: V points **from the eye into the scene**, ``V = P − eye`` for a point P
+of the face, and N is the face's outward normal (faces are wound counter-clockwise seen from
+outside). Then
+
+* ``N · V < 0``: the face turns towards the eye — visible;
+* ``N · V ≥ 0``: the face turns away (or is seen edge-on) — culled.
+
+This is the notes' "N · V < 0 → visible" with their V. (With V from the surface to the eye,
+the same test reads N · V > 0.) A face seen exactly edge-on covers no pixel, so culling it
+changes nothing. Degenerate faces have N = 0 and are culled too.
+
+Examples
+--------
+>>> import numpy as np
+>>> from pixelpath.hsr.backface import front_facing
+>>> normals = np.array([[0.0, 0.0, 1.0], [0.0, 0.0, -1.0]])
+>>> points = np.zeros((2, 3))
+>>> front_facing(normals, points, eye=(0, 0, 5)).tolist()
+[True, False]
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+__all__ = ["front_facing"]
+
+
+def front_facing(normals: np.ndarray, points: np.ndarray, eye: Any) -> np.ndarray:
+    """Return which faces turn towards the eye: ``N · (P − eye) < 0``.
+
+    Parameters
+    ----------
+    normals : (F, 3) array_like
+        Outward face normals (any length; zero for degenerate faces).
+    points : (F, 3) array_like
+        One point of each face (any point: the test is the same over a planar face).
+    eye : (3,) array_like
+        The eye position.
+
+    Returns
+    -------
+    (F,) bool ndarray
+        True for faces that are kept when back faces are culled.
+
+    Examples
+    --------
+    >>> from pixelpath.hsr.backface import front_facing
+    >>> front_facing([[1.0, 0.0, 0.0]], [[2.0, 0.0, 0.0]], eye=(5, 0, 0)).tolist()
+    [True]
+    """
+    normals = np.asarray(normals, dtype=np.float64)
+    points = np.asarray(points, dtype=np.float64)
+    eye = np.asarray(eye, dtype=np.float64)
+    if normals.ndim != 2 or normals.shape[1] != 3 or points.shape != normals.shape:
+        raise ValueError(
+            f"normals and points must both have shape (F, 3), got {normals.shape} and "
+            f"{points.shape}"
+        )
+    if eye.shape != (3,):
+        raise ValueError(f"eye must have shape (3,), got {eye.shape}")
+    view = points - eye
+    return np.einsum("ij,ij->i", normals, view) < 0.0

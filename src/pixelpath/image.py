@@ -1,0 +1,147 @@
+"""The rendered image: linear RGB in [0, 1] with the depth and object-id buffers beside it."""
+
+from __future__ import annotations
+
+import io
+import os
+
+import numpy as np
+
+__all__ = ["Image"]
+
+
+class Image:
+    """A rendered picture and its per-pixel buffers.
+
+    ``np.asarray(image)`` is the ``(H, W, 3)`` float32 RGB array (linear intensities in [0, 1],
+    row 0 at the top). Images are read-only: the buffers are never modified after rendering.
+
+    Parameters
+    ----------
+    rgb : (H, W, 3) array_like
+        Intensities; stored as float32 clamped to [0, 1].
+    depth : (H, W) array_like, optional
+        Distance along the camera's viewing axis (smaller is nearer), ``inf`` where nothing was
+        drawn. Default: all ``inf``.
+    object_id : (H, W) int array_like, optional
+        Index into ``scene.objects`` of the object seen at each pixel, -1 for the background.
+        Default: all -1.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from pixelpath import Image
+    >>> img = Image(np.full((2, 3, 3), 0.5))
+    >>> np.asarray(img).shape, img.depth.dtype.name, int(img.object_id[0, 0])
+    ((2, 3, 3), 'float32', -1)
+    >>> img.to_uint8()[0, 0].tolist()
+    [128, 128, 128]
+    """
+
+    def __init__(
+        self, rgb: np.ndarray, depth: np.ndarray | None = None, object_id: np.ndarray | None = None
+    ) -> None:
+        rgb = np.asarray(rgb)
+        if rgb.ndim != 3 or rgb.shape[2] != 3 or rgb.shape[0] == 0 or rgb.shape[1] == 0:
+            raise ValueError(f"rgb must have shape (H, W, 3) with H, W >= 1, got {rgb.shape}")
+        size = rgb.shape[:2]
+        self._rgb = _frozen(np.clip(rgb.astype(np.float32), 0.0, 1.0))
+        self._depth = _frozen(_buffer(depth, size, np.float32, np.inf, "depth"))
+        self._object_id = _frozen(_buffer(object_id, size, np.int32, -1, "object_id"))
+
+    @property
+    def rgb(self) -> np.ndarray:
+        """(H, W, 3) float32 linear intensities in [0, 1] (read-only)."""
+        return self._rgb
+
+    @property
+    def depth(self) -> np.ndarray:
+        """(H, W) float32 view-axis distance; ``inf`` where nothing was drawn (read-only)."""
+        return self._depth
+
+    @property
+    def object_id(self) -> np.ndarray:
+        """(H, W) int32 index of the object seen at each pixel; -1 for background (read-only)."""
+        return self._object_id
+
+    @property
+    def width(self) -> int:
+        """Width in pixels."""
+        return self._rgb.shape[1]
+
+    @property
+    def height(self) -> int:
+        """Height in pixels."""
+        return self._rgb.shape[0]
+
+    @property
+    def shape(self) -> tuple[int, int, int]:
+        """``(H, W, 3)``, as for the array."""
+        return self._rgb.shape
+
+    def __array__(self, dtype=None, copy=None) -> np.ndarray:
+        if copy:
+            return self._rgb.astype(dtype or self._rgb.dtype, copy=True)
+        return self._rgb if dtype is None else self._rgb.astype(dtype)
+
+    def __repr__(self) -> str:
+        drawn = int(np.count_nonzero(self._object_id >= 0))
+        return f"<Image {self.width}x{self.height}, {drawn} pixels drawn>"
+
+    def to_uint8(self, gamma: float | None = None) -> np.ndarray:
+        """Return the ``(H, W, 3)`` uint8 picture: value × 255, rounded (``gamma`` encodes first).
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from pixelpath import Image
+        >>> Image(np.ones((1, 1, 3))).to_uint8().tolist()
+        [[[255, 255, 255]]]
+        """
+        from pixelpath.io.images import to_uint8
+
+        return to_uint8(self._rgb, gamma)
+
+    def save(self, path: str | os.PathLike, gamma: float | None = None) -> None:
+        """Write the picture to ``path`` atomically; the format follows the extension.
+
+        Parameters
+        ----------
+        path : str or path-like
+            Destination (``.png``, ``.jpg``, ...); its directory must exist.
+        gamma : float, optional
+            Display gamma to encode with (for example 2.2); default: linear, as in the notes.
+
+        Examples
+        --------
+        >>> import numpy as np, os, tempfile
+        >>> from pixelpath import Image
+        >>> Image(np.zeros((2, 2, 3))).save(os.path.join(tempfile.mkdtemp(), "black.png"))
+        """
+        from pixelpath.io.images import write_image
+
+        write_image(path, self._rgb, gamma=gamma)
+
+    def _repr_png_(self) -> bytes:
+        """PNG bytes, for Jupyter's rich display."""
+        from PIL import Image as PILImage
+
+        buffer = io.BytesIO()
+        PILImage.fromarray(self.to_uint8()).save(buffer, format="PNG")
+        return buffer.getvalue()
+
+
+def _buffer(values, size: tuple[int, int], dtype: type, fill: float, name: str) -> np.ndarray:
+    """Return a (H, W) buffer of ``dtype``: ``values`` checked for shape, or ``fill``."""
+    if values is None:
+        return np.full(size, fill, dtype=dtype)
+    array = np.asarray(values)
+    if array.shape != size:
+        raise ValueError(f"{name} must have shape {size} like the image, got {array.shape}")
+    return array.astype(dtype)
+
+
+def _frozen(array: np.ndarray) -> np.ndarray:
+    array = np.ascontiguousarray(array)
+    array.flags.writeable = False
+    return array

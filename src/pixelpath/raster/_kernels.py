@@ -1,0 +1,461 @@
+"""Compiled raster kernels: screen mapping, triangle set-up, scan conversion, deferred shading.
+
+The pipeline these kernels implement (driven by :mod:`pixelpath.hsr.zbuffer`):
+
+1. ``clip_to_screen``: perspective divide and viewport. Pixel (i, j) has its centre at
+   (i + 0.5, j + 0.5); row 0 is the top, so ``y_screen = (1 - y_ndc) * H / 2``. The third
+   screen coordinate is 1/w, which is affine in screen space (w = the view-axis depth).
+2. ``setup_triangles``: per triangle, its vertices sorted by y (the *edge table*: the edges
+   sorted by their upper end), the affine planes of the screen-space barycentric weights and of
+   1/w, and the rows it covers. Zero-area and non-finite triangles cover no row.
+3. ``rasterize_bands``: scan conversion with an *active edge list*. On scan line y (a row of
+   pixel centres) the active edges are the two edges whose half-open y-range [top, bottom)
+   contains y; their x at y bounds the span, and pixels with ``x_left <= x_centre < x_right``
+   are drawn. This is the top-left fill rule: a pixel centre on an edge shared by two triangles
+   belongs to exactly one of them (the one the edge bounds on the left; for a horizontal edge,
+   the one below it), so adjacent triangles leave no cracks and draw no pixel twice. The x of
+   an edge is always computed from its upper end to its lower end, so both triangles sharing it
+   get bit-identical spans. The image is cut into bands of rows run in parallel; each band
+   visits its triangles in ascending order and keeps a sample only when it is strictly nearer,
+   so ties go to the lower triangle index whatever the thread count (deterministic output).
+4. ``shade_deferred``: the depth test stored only (1/w, triangle) per pixel; shading runs once
+   per visible pixel afterwards, from the perspective-correct barycentric weights
+   ``b_i = (s_i / w_i) / sum_k (s_k / w_k)`` of the screen weights ``s_i``.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from pixelpath._jit import njit, prange, register_warmup
+from pixelpath.clip._halfspace import clip_polygon_halfspace, halfspace_distance
+from pixelpath.lighting._kernels import shade_point
+
+FLAT = 0
+GOURAUD = 1
+PHONG = 2
+
+# Column layout of the per-triangle set-up record (float64).
+SORTED_XY = 0  # x0, y0, x1, y1, x2, y2 sorted by y: the triangle's edge table
+S1_PLANE = 6  # screen weight of vertex 1: s1 = a x + b y + c
+S2_PLANE = 9  # screen weight of vertex 2
+INVW_PLANE = 12  # 1/w = a x + b y + c
+VERTEX_INVW = 15  # 1/w at vertices 0, 1, 2 (in the triangle's own order)
+SETUP_FIELDS = 18
+
+# Column layout of the raster vertex attributes: clip position, world position, normal, and
+# the Gouraud vertex colours lit from the front (normal as given) and from the back (flipped).
+CLIP = 0
+POSITION = 4
+NORMAL = 7
+COLOR = 10
+BACK_COLOR = 13
+ATTRIBUTES = 16
+
+BAND_ROWS = 32
+
+# Frustum triangle classes.
+OUTSIDE = 0  # every vertex outside one frustum plane: dropped
+INSIDE = 1  # in front of the near plane, behind the far plane, inside the guard band: drawn as is
+CROSSING = 2  # clipped against the six planes
+
+# The six frustum planes in clip space, as half-spaces c · (x, y, z, w) + c_4 >= 0.
+FRUSTUM_PLANES = np.array(
+    [
+        [0.0, 0.0, 1.0, 1.0, 0.0],  # near: z >= -w
+        [0.0, 0.0, -1.0, 1.0, 0.0],  # far: z <= w
+        [1.0, 0.0, 0.0, 1.0, 0.0],  # left: x >= -w
+        [-1.0, 0.0, 0.0, 1.0, 0.0],  # right: x <= w
+        [0.0, 1.0, 0.0, 1.0, 0.0],  # bottom: y >= -w
+        [0.0, -1.0, 0.0, 1.0, 0.0],  # top: y <= w
+    ]
+)
+# Triangles within GUARD_BAND times the view's half-width are rasterized without x/y clipping
+# (the scan converter clamps spans to the image); only larger ones are clipped exactly.
+GUARD_BAND = 8.0
+# A clipped triangle is a convex polygon of at most 3 + 6 vertices.
+MAX_CLIPPED = 9
+
+
+@njit(parallel=True)
+def classify_triangles(clip, triangles, keep, status):
+    """Sort each kept triangle (T,) into OUTSIDE, INSIDE or CROSSING the view frustum."""
+    for t in prange(triangles.shape[0]):
+        status[t] = OUTSIDE
+        if not keep[t]:
+            continue
+        outside_all = np.zeros(6, dtype=np.bool_)
+        outside_all[:] = True
+        needs_clip = False
+        for corner in range(3):
+            v = clip[triangles[t, corner]]
+            x, y, z, w = v[0], v[1], v[2], v[3]
+            for p in range(6):
+                if halfspace_distance(FRUSTUM_PLANES[p], v) >= 0.0:
+                    outside_all[p] = False
+            band = GUARD_BAND * w
+            if z < -w or z > w or abs(x) > band or abs(y) > band:
+                needs_clip = True
+        if outside_all.any():
+            continue
+        status[t] = CROSSING if needs_clip else INSIDE
+
+
+@njit
+def clip_triangles(attributes, triangles, crossing):
+    """Clip the listed triangles against the frustum with Sutherland-Hodgman.
+
+    Returns the new vertices (N, k) (indices continue after ``attributes``), their fan
+    triangles (M, 3) and, per new triangle, the index of the triangle it came from.
+    """
+    k = attributes.shape[1]
+    offset = attributes.shape[0]
+    vertices = np.empty((crossing.shape[0] * MAX_CLIPPED, k))
+    new_triangles = np.empty((crossing.shape[0] * (MAX_CLIPPED - 2), 3), dtype=np.intp)
+    source = np.empty(crossing.shape[0] * (MAX_CLIPPED - 2), dtype=np.intp)
+    polygon = np.empty((MAX_CLIPPED + 1, k))
+    scratch = np.empty((MAX_CLIPPED + 1, k))
+    n_vertices = 0
+    n_triangles = 0
+    for t in crossing:
+        for corner in range(3):
+            polygon[corner, :] = attributes[triangles[t, corner]]
+        n = 3
+        src, dst = polygon, scratch
+        for p in range(6):
+            n = clip_polygon_halfspace(src, n, FRUSTUM_PLANES[p], dst)
+            src, dst = dst, src
+        if n < 3:
+            continue
+        vertices[n_vertices : n_vertices + n] = src[:n]
+        for fan in range(1, n - 1):
+            new_triangles[n_triangles, 0] = offset + n_vertices
+            new_triangles[n_triangles, 1] = offset + n_vertices + fan
+            new_triangles[n_triangles, 2] = offset + n_vertices + fan + 1
+            source[n_triangles] = t
+            n_triangles += 1
+        n_vertices += n
+    return vertices[:n_vertices], new_triangles[:n_triangles], source[:n_triangles]
+
+
+@njit(parallel=True)
+def clip_to_screen(clip, width, height, screen):
+    """Write (x_screen, y_screen, 1/w) of each clip-space vertex (V, 4) into screen (V, 3)."""
+    for v in prange(clip.shape[0]):
+        inv_w = 1.0 / clip[v, 3]
+        screen[v, 0] = (clip[v, 0] * inv_w + 1.0) * 0.5 * width
+        screen[v, 1] = (1.0 - clip[v, 1] * inv_w) * 0.5 * height
+        screen[v, 2] = inv_w
+
+
+@njit(inline="always")
+def _plane(xa, ya, va, xb, yb, vb, xc, yc, vc, inv_area2):
+    """Coefficients (a, b, c) of the affine function through three screen points' values."""
+    a = ((vb - va) * (yc - ya) - (vc - va) * (yb - ya)) * inv_area2
+    b = ((vc - va) * (xb - xa) - (vb - va) * (xc - xa)) * inv_area2
+    return a, b, va - a * xa - b * ya
+
+
+@njit(inline="always")
+def _store3(record, start, values):
+    record[start] = values[0]
+    record[start + 1] = values[1]
+    record[start + 2] = values[2]
+
+
+@njit(inline="always")
+def _above(xa, ya, xb, yb):
+    """Whether point a comes before point b in scan order (smaller y, then smaller x)."""
+    return ya < yb or (ya == yb and xa < xb)
+
+
+@njit(parallel=True)
+def setup_triangles(screen, triangles, height, setup, rows):
+    """Fill the set-up record (T, SETUP_FIELDS) and the covered rows [first, stop) (T, 2)."""
+    for t in prange(triangles.shape[0]):
+        a, b, c = triangles[t, 0], triangles[t, 1], triangles[t, 2]
+        xa, ya, wa = screen[a, 0], screen[a, 1], screen[a, 2]
+        xb, yb, wb = screen[b, 0], screen[b, 1], screen[b, 2]
+        xc, yc, wc = screen[c, 0], screen[c, 1], screen[c, 2]
+        area2 = (xb - xa) * (yc - ya) - (xc - xa) * (yb - ya)
+        rows[t, 0] = 0
+        rows[t, 1] = 0
+        if not (math.isfinite(area2) and area2 != 0.0):
+            continue  # degenerate or non-finite: covers no pixel
+        inv = 1.0 / area2
+        record = setup[t]
+        _store3(record, S1_PLANE, _plane(xa, ya, 0.0, xb, yb, 1.0, xc, yc, 0.0, inv))
+        _store3(record, S2_PLANE, _plane(xa, ya, 0.0, xb, yb, 0.0, xc, yc, 1.0, inv))
+        _store3(record, INVW_PLANE, _plane(xa, ya, wa, xb, yb, wb, xc, yc, wc, inv))
+        _store3(record, VERTEX_INVW, (wa, wb, wc))
+        # Edge table: vertices sorted by y, ties by x, so every edge runs from its upper end.
+        if _above(xb, yb, xa, ya):
+            xa, ya, xb, yb = xb, yb, xa, ya
+        if _above(xc, yc, xb, yb):
+            xb, yb, xc, yc = xc, yc, xb, yb
+            if _above(xb, yb, xa, ya):
+                xa, ya, xb, yb = xb, yb, xa, ya
+        _store3(record, SORTED_XY, (xa, ya, xb))
+        _store3(record, SORTED_XY + 3, (yb, xc, yc))
+        # Rows whose centre j + 0.5 lies in [y_top, y_bottom).
+        first = max(math.ceil(ya - 0.5), 0.0)
+        stop = min(math.ceil(yc - 0.5), float(height))
+        if first < stop:
+            rows[t, 0] = int(first)
+            rows[t, 1] = int(stop)
+
+
+@njit(inline="always")
+def _edge_x(x_top, y_top, x_bottom, y_bottom, y):
+    """Return the x where the edge from its upper end to its lower end crosses scan line y."""
+    return x_top + (y - y_top) * (x_bottom - x_top) / (y_bottom - y_top)
+
+
+@njit(inline="always")
+def scanline_span(record, y, width):
+    """Pixel columns [first, stop) drawn by a set-up triangle on the scan line at height y.
+
+    The active edge list on scan line y is the long edge (v0, v2) and whichever of (v0, v1),
+    (v1, v2) spans y; a horizontal edge is never active.
+    """
+    x0, y0 = record[SORTED_XY], record[SORTED_XY + 1]
+    x1, y1 = record[SORTED_XY + 2], record[SORTED_XY + 3]
+    x2, y2 = record[SORTED_XY + 4], record[SORTED_XY + 5]
+    x_long = _edge_x(x0, y0, x2, y2, y)
+    if y < y1:
+        x_short = _edge_x(x0, y0, x1, y1, y)
+    else:
+        x_short = _edge_x(x1, y1, x2, y2, y)
+    x_left = min(x_long, x_short)
+    x_right = max(x_long, x_short)
+    first = max(math.ceil(x_left - 0.5), 0.0)
+    stop = min(math.ceil(x_right - 0.5), float(width))
+    return int(first), int(stop)
+
+
+@njit
+def bin_triangles(rows, n_bands, band_rows):
+    """Return the triangles of each band of rows as CSR: offsets (n_bands + 1,), items."""
+    counts = np.zeros(n_bands + 1, dtype=np.intp)
+    for t in range(rows.shape[0]):
+        if rows[t, 0] < rows[t, 1]:
+            for band in range(rows[t, 0] // band_rows, (rows[t, 1] - 1) // band_rows + 1):
+                counts[band + 1] += 1
+    offsets = np.cumsum(counts)
+    items = np.empty(offsets[-1], dtype=np.intp)
+    fill = offsets[:-1].copy()
+    for t in range(rows.shape[0]):
+        if rows[t, 0] < rows[t, 1]:
+            for band in range(rows[t, 0] // band_rows, (rows[t, 1] - 1) // band_rows + 1):
+                items[fill[band]] = t
+                fill[band] += 1
+    return offsets, items
+
+
+@njit(parallel=True)
+def rasterize_bands(setup, rows, offsets, items, band_rows, inv_depth, triangle_id):
+    """Depth-test every triangle's pixels, keeping the nearest (largest 1/w) per pixel.
+
+    ``inv_depth`` (H, W) starts at 0 (infinitely far) and ``triangle_id`` (H, W) at -1.
+    """
+    height, width = inv_depth.shape
+    for band in prange(offsets.shape[0] - 1):
+        band_first = band * band_rows
+        band_stop = min(band_first + band_rows, height)
+        for k in range(offsets[band], offsets[band + 1]):
+            t = items[k]
+            record = setup[t]
+            pa, pb, pc = record[INVW_PLANE], record[INVW_PLANE + 1], record[INVW_PLANE + 2]
+            for j in range(max(rows[t, 0], band_first), min(rows[t, 1], band_stop)):
+                y = j + 0.5
+                first, stop = scanline_span(record, y, width)
+                row_value = pb * y + pc
+                for i in range(first, stop):
+                    inv_w = pa * (i + 0.5) + row_value
+                    if inv_w > inv_depth[j, i]:
+                        inv_depth[j, i] = inv_w
+                        triangle_id[j, i] = t
+
+
+@njit
+def count_coverage(setup, rows, width, counts):
+    """Add 1 to counts (H, W) for every pixel each triangle draws (a fill-rule check)."""
+    for t in range(rows.shape[0]):
+        for j in range(rows[t, 0], rows[t, 1]):
+            first, stop = scanline_span(setup[t], j + 0.5, width)
+            for i in range(first, stop):
+                counts[j, i] += 1
+
+
+@njit(inline="always")
+def perspective_weights(record, x, y):
+    """Perspective-correct barycentric weights (b0, b1, b2) of a set-up triangle at (x, y)."""
+    s1 = record[S1_PLANE] * x + record[S1_PLANE + 1] * y + record[S1_PLANE + 2]
+    s2 = record[S2_PLANE] * x + record[S2_PLANE + 1] * y + record[S2_PLANE + 2]
+    t0 = (1.0 - s1 - s2) * record[VERTEX_INVW]
+    t1 = s1 * record[VERTEX_INVW + 1]
+    t2 = s2 * record[VERTEX_INVW + 2]
+    total = t0 + t1 + t2
+    return t0 / total, t1 / total, t2 / total
+
+
+@njit(parallel=True)
+def interpolate_values(setup, triangles, values, triangle_id, out):
+    """Interpolate per-vertex values (V, C) over the drawn pixels into out (H, W, C)."""
+    height, width = triangle_id.shape
+    for j in prange(height):
+        for i in range(width):
+            t = triangle_id[j, i]
+            if t < 0:
+                continue
+            b0, b1, b2 = perspective_weights(setup[t], i + 0.5, j + 0.5)
+            a, b, c = triangles[t, 0], triangles[t, 1], triangles[t, 2]
+            for channel in range(values.shape[1]):
+                out[j, i, channel] = (
+                    b0 * values[a, channel] + b1 * values[b, channel] + b2 * values[c, channel]
+                )
+
+
+@njit(parallel=True)
+def shade_points(points, normals, flip, owner, materials, lights, ambient, eye, blinn, out):
+    """Unclamped intensities (N, 3) at points with unit normals, each with its owner's material.
+
+    Where ``flip`` is set the normal is reversed first (a surface seen from behind).
+    """
+    for p in prange(points.shape[0]):
+        sign = -1.0 if flip[p] else 1.0
+        shade_point(
+            points[p, 0],
+            points[p, 1],
+            points[p, 2],
+            sign * normals[p, 0],
+            sign * normals[p, 1],
+            sign * normals[p, 2],
+            eye[0],
+            eye[1],
+            eye[2],
+            materials[owner[p]],
+            lights,
+            ambient,
+            blinn,
+            out[p],
+        )
+
+
+@njit(inline="always")
+def _clamp01(value):
+    return min(max(value, 0.0), 1.0)
+
+
+@njit(parallel=True)
+def shade_deferred(
+    triangle_id,
+    setup,
+    triangles,
+    attributes,
+    triangle_info,
+    flat_colors,
+    materials,
+    lights,
+    ambient,
+    eye,
+    mode,
+    blinn,
+    rgb,
+):
+    """Shade every drawn pixel once, after visibility is resolved; write clamped RGB (H, W, 3).
+
+    ``triangle_info`` (T, 2) int: the object index (into ``materials``) and a flip flag (1 when
+    the face is seen from behind, so its normals are turned towards the viewer).
+    """
+    height, width = triangle_id.shape
+    for j in prange(height):
+        out = np.empty(3)
+        for i in range(width):
+            t = triangle_id[j, i]
+            if t < 0:
+                continue
+            if mode == FLAT:
+                for channel in range(3):
+                    rgb[j, i, channel] = _clamp01(flat_colors[t, channel])
+                continue
+            b0, b1, b2 = perspective_weights(setup[t], i + 0.5, j + 0.5)
+            va = attributes[triangles[t, 0]]
+            vb = attributes[triangles[t, 1]]
+            vc = attributes[triangles[t, 2]]
+            if mode == GOURAUD:
+                first = BACK_COLOR if triangle_info[t, 1] else COLOR
+                for channel in range(first, first + 3):
+                    value = b0 * va[channel] + b1 * vb[channel] + b2 * vc[channel]
+                    rgb[j, i, channel - first] = _clamp01(value)
+                continue
+            px = b0 * va[POSITION] + b1 * vb[POSITION] + b2 * vc[POSITION]
+            py = b0 * va[POSITION + 1] + b1 * vb[POSITION + 1] + b2 * vc[POSITION + 1]
+            pz = b0 * va[POSITION + 2] + b1 * vb[POSITION + 2] + b2 * vc[POSITION + 2]
+            nx = b0 * va[NORMAL] + b1 * vb[NORMAL] + b2 * vc[NORMAL]
+            ny = b0 * va[NORMAL + 1] + b1 * vb[NORMAL + 1] + b2 * vc[NORMAL + 1]
+            nz = b0 * va[NORMAL + 2] + b1 * vb[NORMAL + 2] + b2 * vc[NORMAL + 2]
+            length = math.sqrt(nx * nx + ny * ny + nz * nz)
+            if length > 0.0:
+                if triangle_info[t, 1]:
+                    length = -length
+                nx /= length
+                ny /= length
+                nz /= length
+            shade_point(
+                px,
+                py,
+                pz,
+                nx,
+                ny,
+                nz,
+                eye[0],
+                eye[1],
+                eye[2],
+                materials[triangle_info[t, 0]],
+                lights,
+                ambient,
+                blinn,
+                out,
+            )
+            for channel in range(3):
+                rgb[j, i, channel] = _clamp01(out[channel])
+
+
+@register_warmup
+def warmup() -> None:
+    """Compile every raster kernel on one small triangle, in each shading mode."""
+    clip = np.array([[-0.5, -0.5, 0.0, 1.0], [0.5, -0.5, 0.0, 1.0], [0.0, 0.5, 0.0, 1.0]])
+    triangles = np.array([[0, 1, 2]], dtype=np.intp)
+    status = np.empty(1, dtype=np.int8)
+    classify_triangles(clip, triangles, np.ones(1, dtype=np.bool_), status)
+    clip_triangles(np.zeros((3, ATTRIBUTES)), triangles, np.zeros(1, dtype=np.intp))
+    screen = np.empty((3, 3))
+    clip_to_screen(clip, 8, 8, screen)
+    setup = np.zeros((1, SETUP_FIELDS))
+    rows = np.zeros((1, 2), dtype=np.intp)
+    setup_triangles(screen, triangles, 8, setup, rows)
+    offsets, items = bin_triangles(rows, 1, BAND_ROWS)
+    inv_depth = np.zeros((8, 8))
+    triangle_id = np.full((8, 8), -1, dtype=np.int32)
+    rasterize_bands(setup, rows, offsets, items, BAND_ROWS, inv_depth, triangle_id)
+    count_coverage(setup, rows, 8, np.zeros((8, 8), dtype=np.int32))
+    interpolate_values(setup, triangles, np.ones((3, 1)), triangle_id, np.zeros((8, 8, 1)))
+    attributes = np.zeros((3, ATTRIBUTES))
+    attributes[:, NORMAL + 2] = 1.0
+    info = np.zeros((1, 2), dtype=np.intp)
+    material = np.array([[1.0, 1.0, 1.0, 0.1, 0.7, 0.3, 32.0, 0.0]])
+    lights = np.array([[0.0, 0.0, 0.0, 5.0, 1.0, 1.0, 1.0]])
+    rgb = np.zeros((8, 8, 3), dtype=np.float32)
+    shade_points(
+        clip[:, :3].copy(), attributes[:, NORMAL : NORMAL + 3].copy(), np.zeros(3, np.bool_),
+        np.zeros(3, np.intp), material, lights, np.full(3, 0.1), np.zeros(3), False,
+        np.empty((3, 3)),
+    )
+    for mode in (FLAT, GOURAUD, PHONG):
+        shade_deferred(
+            triangle_id, setup, triangles, attributes, info, np.ones((1, 3)), material,
+            lights, np.full(3, 0.1), np.array([0.0, 0.0, 5.0]), mode, False, rgb,
+        )

@@ -1,0 +1,178 @@
+"""Turn a scene's objects into one triangle soup for the raster methods.
+
+* Spheres become icospheres (``SPHERE_SUBDIVISIONS``: 5120 triangles, silhouette within 0.06 %
+  of the radius) with exact normals;
+* infinite planes become a square of half-size ``camera.far`` centred under the eye, so it
+  covers every visible point of the plane; frustum clipping cuts it to the view. The square is a
+  grid whose cells grow quadratically away from the eye (small near the camera, where flat and
+  Gouraud shading need vertices, large far away);
+* boxes and meshes are used as they are (meshes keep their polygons: a triangle remembers the
+  polygon it was fanned from, for flat shading and back-face culling).
+"""
+
+from __future__ import annotations
+
+import collections
+import dataclasses
+
+import numpy as np
+
+from pixelpath.scene import Box, Camera, Mesh, Plane, Scene, Sphere
+
+__all__ = ["SceneGeometry", "scene_geometry"]
+
+SPHERE_SUBDIVISIONS = 4
+PLANE_GRID = 32  # cells per side of a plane's square
+
+
+@dataclasses.dataclass(frozen=True)
+class SceneGeometry:
+    """All objects of a scene as one mesh, with the bookkeeping the raster stages need.
+
+    Attributes
+    ----------
+    vertices, normals : (V, 3) float64
+        World positions and unit vertex normals.
+    triangles : (T, 3) intp
+        Vertex indices of each triangle.
+    triangle_polygon : (T,) intp
+        Polygon each triangle belongs to.
+    polygon_normals : (P, 3) float64
+        Unit polygon normals (Newell), zero for degenerate polygons.
+    polygon_points : (P, 3) float64
+        A point of each polygon (its first vertex), for back-face tests.
+    polygon_centroids : (P, 3) float64
+        Vertex averages of the polygons, where flat shading evaluates the model.
+    polygon_object : (P,) intp
+        Index of the scene object each polygon belongs to.
+    vertex_object : (V,) intp
+        Index of the scene object each vertex belongs to.
+    materials : (O, 8) float64
+        Packed material of each object (``Material.packed()``).
+    """
+
+    vertices: np.ndarray
+    normals: np.ndarray
+    triangles: np.ndarray
+    triangle_polygon: np.ndarray
+    polygon_normals: np.ndarray
+    polygon_points: np.ndarray
+    polygon_centroids: np.ndarray
+    polygon_object: np.ndarray
+    vertex_object: np.ndarray
+    materials: np.ndarray
+
+
+def object_mesh(obj: object, camera: Camera) -> Mesh:
+    """Return the mesh a raster method draws for one scene object.
+
+    Examples
+    --------
+    >>> from pixelpath.scene import Camera, Sphere
+    >>> from pixelpath.raster.tessellate import object_mesh
+    >>> len(object_mesh(Sphere((0, 0, 0), 1.0), Camera(eye=(0, 0, 5), target=(0, 0, 0))).triangles)
+    5120
+    """
+    if isinstance(obj, Mesh):
+        return obj
+    if isinstance(obj, Box):
+        return obj.to_mesh()
+    if isinstance(obj, Sphere):
+        return _sphere_mesh(obj)
+    if isinstance(obj, Plane):
+        return _plane_grid(obj, camera)
+    raise TypeError(f"cannot rasterize a {type(obj).__name__}: expected Sphere, Plane, Box or Mesh")
+
+
+# Recent sphere tessellations by identity (spheres are immutable), so re-rendering a scene
+# does not rebuild them; holding the sphere keeps its id from being reused.
+_SPHERE_MESHES: collections.OrderedDict[int, tuple[Sphere, Mesh]] = collections.OrderedDict()
+_SPHERE_CACHE_SIZE = 64
+
+
+def _sphere_mesh(sphere: Sphere) -> Mesh:
+    hit = _SPHERE_MESHES.get(id(sphere))
+    if hit is not None and hit[0] is sphere:
+        _SPHERE_MESHES.move_to_end(id(sphere))
+        return hit[1]
+    mesh = sphere.to_mesh(subdivisions=SPHERE_SUBDIVISIONS)
+    _SPHERE_MESHES[id(sphere)] = (sphere, mesh)
+    if len(_SPHERE_MESHES) > _SPHERE_CACHE_SIZE:
+        _SPHERE_MESHES.popitem(last=False)
+    return mesh
+
+
+def _plane_grid(plane: Plane, camera: Camera) -> Mesh:
+    """Return a square grid on the plane, half-size ``camera.far``, centred below the eye."""
+    quad = plane.to_mesh(center=camera.eye, half_size=camera.far)
+    corner, across, up = quad.vertices[0], quad.vertices[1], quad.vertices[3]
+    # Cell borders at s = ±(k / half)^2 of the way out, k = 0..half: fine near the centre.
+    half = PLANE_GRID // 2
+    ramp = (np.arange(half + 1) / half) ** 2
+    steps = 0.5 + 0.5 * np.concatenate([-ramp[:0:-1], ramp])
+    u, v = np.meshgrid(steps, steps, indexing="xy")
+    points = corner + u.reshape(-1, 1) * (across - corner) + v.reshape(-1, 1) * (up - corner)
+    n = len(steps)
+    row, col = np.divmod(np.arange((n - 1) * (n - 1)), n - 1)
+    first = row * n + col
+    quads = np.stack([first, first + 1, first + n + 1, first + n], axis=1)
+    normals = np.broadcast_to(plane.normal, points.shape)
+    return Mesh(points, quads, plane.material, normals=normals, name="plane")
+
+
+def scene_geometry(scene: Scene, camera: Camera | None = None) -> SceneGeometry:
+    """Collect every object of ``scene`` into one :class:`SceneGeometry`.
+
+    Parameters
+    ----------
+    scene : Scene
+        The scene; its objects' indices become object ids.
+    camera : Camera, optional
+        The camera planes are fitted to (default ``scene.camera``).
+
+    Examples
+    --------
+    >>> from pixelpath.scene import Box, Camera, Scene
+    >>> from pixelpath.raster.tessellate import scene_geometry
+    >>> scene = Scene(Camera(eye=(3, 3, 3), target=(0, 0, 0)), objects=[Box((0, 0, 0), (1, 1, 1))])
+    >>> scene_geometry(scene).triangles.shape
+    (12, 3)
+    """
+    camera = camera or scene.camera
+    meshes = [object_mesh(obj, camera) for obj in scene.objects]
+    vertex_counts = [len(m.vertices) for m in meshes]
+    polygon_counts = [m.face_count for m in meshes]
+    vertex_start = np.cumsum([0, *vertex_counts])[:-1]
+    polygon_start = np.cumsum([0, *polygon_counts])[:-1]
+    objects = np.arange(len(meshes), dtype=np.intp)
+    pairs = list(zip(meshes, vertex_start, polygon_start, strict=True))
+    return SceneGeometry(
+        vertices=_stacked([m.vertices for m in meshes], (0, 3)),
+        normals=_stacked([m.vertex_normals for m in meshes], (0, 3)),
+        triangles=_stacked([m.triangles + v for m, v, _ in pairs], (0, 3), np.intp),
+        triangle_polygon=_stacked([m.triangle_face + p for m, _, p in pairs], (0,), np.intp),
+        polygon_normals=_stacked([m.face_normals for m in meshes], (0, 3)),
+        polygon_points=_stacked([_first_corners(m) for m in meshes], (0, 3)),
+        polygon_centroids=_stacked([_centroids(m) for m in meshes], (0, 3)),
+        polygon_object=np.repeat(objects, polygon_counts),
+        vertex_object=np.repeat(objects, vertex_counts),
+        materials=_stacked([m.material.packed()[None] for m in meshes], (0, 8)),
+    )
+
+
+def _stacked(parts: list[np.ndarray], empty: tuple[int, ...], dtype: type = np.float64):
+    """Concatenate per-object arrays (an empty array of shape ``empty`` when there are none)."""
+    if not parts:
+        return np.empty(empty, dtype=dtype)
+    return np.ascontiguousarray(np.concatenate(parts), dtype=dtype)
+
+
+def _first_corners(mesh: Mesh) -> np.ndarray:
+    """(F, 3) first vertex of each polygon."""
+    return mesh.vertices[mesh.face_indices[mesh.face_offsets[:-1]]]
+
+
+def _centroids(mesh: Mesh) -> np.ndarray:
+    """(F, 3) vertex average of each polygon."""
+    sums = np.add.reduceat(mesh.vertices[mesh.face_indices], mesh.face_offsets[:-1], axis=0)
+    return sums / mesh.face_sizes[:, None]

@@ -1,0 +1,95 @@
+"""Model → world → camera → clip space, then the perspective divide and the viewport.
+
+Objects are given in world coordinates (a mesh's own transform is applied when it is loaded),
+so the chain here is ``clip = P · V · world`` with V = :meth:`Camera.view_matrix` (the camera at
+the origin looking down −Z) and P = :meth:`Camera.projection_matrix` (OpenGL-style: inside the
+frustum −w ≤ x, y, z ≤ w, and ``w = −z_camera`` is the distance along the viewing axis).
+
+After clipping (:mod:`pixelpath.raster.frustum`), the divide and the viewport give screen
+coordinates with pixel (i, j) centred at (i + 0.5, j + 0.5) and row 0 at the top::
+
+    x_screen = (x / w + 1) · W / 2        y_screen = (1 − y / w) · H / 2
+
+The third screen coordinate is 1/w: unlike depth, it is affine in screen space, so the
+rasterizer interpolates it exactly and recovers perspective-correct attributes from it.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+if TYPE_CHECKING:
+    from pixelpath.scene import Camera
+
+__all__ = ["clip_to_screen", "world_to_clip"]
+
+
+def world_to_clip(points: np.ndarray, camera: Camera) -> np.ndarray:
+    """Map world points to homogeneous clip coordinates.
+
+    Parameters
+    ----------
+    points : (N, 3) array_like
+        World-space positions.
+    camera : Camera
+        Supplies the view and projection matrices.
+
+    Returns
+    -------
+    (N, 4) float64 ndarray
+        Clip coordinates (x, y, z, w); w is the depth along the viewing axis.
+
+    Examples
+    --------
+    >>> from pixelpath.scene import Camera
+    >>> from pixelpath.raster import world_to_clip
+    >>> cam = Camera(eye=(0, 0, 5), target=(0, 0, 0), fov=90, width=2, height=2)
+    >>> world_to_clip([[0.0, 0.0, 0.0]], cam)[0, 3]  # the target is 5 units in front of the eye
+    5.0
+    """
+    points = _points(points, 3, "points")
+    matrix = camera.projection_matrix() @ camera.view_matrix()
+    return points @ matrix[:, :3].T + matrix[:, 3]
+
+
+def clip_to_screen(clip: np.ndarray, width: int, height: int) -> np.ndarray:
+    """Perspective divide and viewport: clip coordinates to (x_screen, y_screen, 1/w).
+
+    Parameters
+    ----------
+    clip : (N, 4) array_like
+        Clip coordinates with w > 0 (that is, already clipped against the near plane).
+    width, height : int
+        Image size in pixels.
+
+    Returns
+    -------
+    (N, 3) float64 ndarray
+        Pixel coordinates (row 0 at the top, pixel centres at half-integers) and 1/w.
+
+    Examples
+    --------
+    >>> from pixelpath.raster import clip_to_screen
+    >>> clip_to_screen([[0.0, 0.0, 0.0, 2.0], [-2.0, 2.0, 0.0, 2.0]], 4, 2).tolist()
+    [[2.0, 1.0, 0.5], [0.0, 0.0, 0.5]]
+    """
+    from pixelpath.raster import _kernels
+
+    clip = _points(clip, 4, "clip")
+    if np.any(clip[:, 3] <= 0.0):
+        raise ValueError("clip coordinates must have w > 0: clip against the near plane first")
+    screen = np.empty((len(clip), 3))
+    _kernels.clip_to_screen(clip, int(width), int(height), screen)
+    return screen
+
+
+def _points(values: np.ndarray, size: int, name: str) -> np.ndarray:
+    """Return ``values`` as a finite contiguous float64 (N, size) array, or raise ValueError."""
+    array = np.ascontiguousarray(values, dtype=np.float64)
+    if array.ndim != 2 or array.shape[1] != size:
+        raise ValueError(f"{name} must have shape (N, {size}), got shape {array.shape}")
+    if not np.all(np.isfinite(array)):
+        raise ValueError(f"{name} must be finite (no NaN or inf coordinates)")
+    return array
