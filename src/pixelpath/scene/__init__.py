@@ -13,13 +13,16 @@ Examples
 1
 """
 
+from pixelpath.scene.bundled import bundled_scene, bundled_scenes
 from pixelpath.scene.camera import Camera
 from pixelpath.scene.lights import DirectionalLight, PointLight
+from pixelpath.scene.loader import load_scene
 from pixelpath.scene.material import Material
 from pixelpath.scene.mesh import Mesh
 from pixelpath.scene.primitives import Box, Plane, Sphere
 from pixelpath.scene.procedural import icosphere, torus
 from pixelpath.scene.scene import Scene
+from pixelpath.scene.transform import transform_matrix
 
 __all__ = [
     "Box",
@@ -31,6 +34,10 @@ __all__ = [
     "PointLight",
     "Scene",
     "Sphere",
+    "bundled_scene",
+    "bundled_scenes",
     "icosphere",
+    "load_scene",
     "torus",
+    "transform_matrix",
 ]

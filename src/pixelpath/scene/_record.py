@@ -20,6 +20,7 @@ class Record:
             if isinstance(getattr(self, f.name), np.ndarray)
             else getattr(self, f.name) == getattr(other, f.name)
             for f in dataclasses.fields(self)
+            if f.compare
         )
 
     def _set(self, **values: object) -> None:

@@ -32,6 +32,8 @@ class Material(Record):
         Fractions in [0, 1] of mirror reflection and transmission (ray tracer only).
     ior : float
         Index of refraction, > 0 (ray tracer only).
+    name : str, optional
+        The name the material has in a scene file; not part of equality.
 
     Examples
     --------
@@ -48,6 +50,7 @@ class Material(Record):
     reflectivity: float = 0.0
     transparency: float = 0.0
     ior: float = 1.0
+    name: str | None = dataclasses.field(default=None, compare=False)
 
     def __post_init__(self) -> None:
         self._set(
@@ -59,6 +62,7 @@ class Material(Record):
             reflectivity=_fraction(self.reflectivity, "reflectivity"),
             transparency=_fraction(self.transparency, "transparency"),
             ior=v.real(self.ior, "ior", positive=True),
+            name=_name(self.name),
         )
 
     def packed(self) -> np.ndarray:
@@ -72,6 +76,12 @@ class Material(Record):
         """
         r, g, b = self.color
         return np.array([r, g, b, self.ka, self.kd, self.ks, self.shininess, 0.0])
+
+
+def _name(value: Any) -> str | None:
+    if value is not None and not isinstance(value, str):
+        raise TypeError(f"name must be a str, got {type(value).__name__}")
+    return value
 
 
 def _fraction(value: Any, name: str) -> float:

@@ -87,6 +87,21 @@ class Mesh:
         # Scene.to_dict can write it back compactly; None means "write the arrays inline".
         self.source = source
 
+    __hash__ = None  # meshes compare by value
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Mesh):
+            return NotImplemented
+        return (
+            np.array_equal(self.vertices, other.vertices)
+            and np.array_equal(self.face_offsets, other.face_offsets)
+            and np.array_equal(self.face_indices, other.face_indices)
+            and (self.normals is None) == (other.normals is None)
+            and (self.normals is None or np.array_equal(self.normals, other.normals))
+            and self.material == other.material
+            and self.name == other.name
+        )
+
     def __repr__(self) -> str:
         label = f" {self.name!r}" if self.name else ""
         return (
@@ -288,10 +303,10 @@ def _index_list(face: Any, number: int) -> np.ndarray:
 
 def _given_normals(normals: Any, vertex_count: int) -> np.ndarray:
     array = v.float_array(normals, "normals", (vertex_count, 3))
-    lengths = np.linalg.norm(array, axis=1)
-    if np.any(lengths == 0.0):
-        raise ValueError(f"normals[{int(np.argmin(lengths))}] is the zero vector")
-    return v.frozen(array / lengths[:, None])
+    zero = ~np.any(array, axis=1)
+    if np.any(zero):
+        raise ValueError(f"normals[{int(np.argmax(zero))}] is the zero vector")
+    return v.frozen(v.unit_rows(array))
 
 
 def _normalized(vectors: np.ndarray) -> np.ndarray:

@@ -7,6 +7,7 @@ channel (r, g, b) and stored as a (3,) array; ``background`` is the colour where
 from __future__ import annotations
 
 import dataclasses
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -66,6 +67,61 @@ class Scene(Record):
             ambient=v.rgb_or_scalar(self.ambient, "ambient"),
             background=v.colour(self.background, "background"),
         )
+
+    def to_dict(self, base_dir: str | Path | None = None) -> dict[str, Any]:
+        """Return the scene as a dict of plain values in the scene-file format.
+
+        The dict holds only str, float, int, list and dict values, so it can be written as
+        JSON or TOML, and ``Scene.from_dict(scene.to_dict())`` rebuilds an equal scene.
+        Meshes read from a file, and generated ones (icosphere, torus, rotated box) that came
+        from a scene file, are written as their file path or parameters with their transform;
+        other meshes are written inline (vertices, faces, normals). Materials other than the
+        default are gathered under ``materials`` as ``material1``, ``material2``, ...
+
+        Parameters
+        ----------
+        base_dir : str or Path, optional
+            Write mesh paths relative to this folder (default: absolute paths).
+
+        Examples
+        --------
+        >>> from pixelpath.scene import Camera, Scene, Sphere
+        >>> scene = Scene(Camera(eye=(0, 0, 5), target=(0, 0, 0)), [Sphere((0, 0, 0), 1.0)])
+        >>> scene.to_dict()["objects"]
+        [{'type': 'sphere', 'center': [0.0, 0.0, 0.0], 'radius': 1.0}]
+        >>> Scene.from_dict(scene.to_dict()) == scene
+        True
+        """
+        from pixelpath.scene.loader import scene_to_dict
+
+        return scene_to_dict(self, base_dir)
+
+    @classmethod
+    def from_dict(cls, data: dict[str, Any], base_dir: str | Path | None = None) -> Scene:
+        """Build a scene from a dict in the scene-file format (as ``tomllib`` or JSON give it).
+
+        Parameters
+        ----------
+        data : dict
+            The scene (see ``docs/scene-format.md``).
+        base_dir : str or Path, optional
+            Folder that relative mesh paths start from (default: the working directory).
+
+        Raises
+        ------
+        ValueError
+            For unknown or missing keys and invalid values, naming the key path.
+
+        Examples
+        --------
+        >>> from pixelpath.scene import Scene
+        >>> scene = Scene.from_dict({"camera": {"eye": [0, 0, 5], "target": [0, 0, 0]}})
+        >>> scene.camera.fov
+        45.0
+        """
+        from pixelpath.scene.loader import scene_from_dict
+
+        return scene_from_dict(data, base_dir=base_dir)
 
     def bounds(self) -> np.ndarray:
         """Return the (2, 3) bounding box of the bounded objects (planes are infinite).

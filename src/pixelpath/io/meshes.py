@@ -1,0 +1,155 @@
+"""Mesh files (OBJ, PLY, STL) read through trimesh, keeping polygon faces where the file has them.
+
+trimesh does the parsing. Its loaders triangulate polygons in two places, which are undone here:
+
+- PLY: ``load_ply`` keeps the file's face lists in ``metadata["_ply_raw"]``; those are used.
+- OBJ: ``load_obj`` (with ``maintain_order=True``) keeps whole faces when every face has the same
+  size, but splits mixed files' quads into ``(a, b, c), (c, d, a)`` and larger polygons into fans
+  ``(a, b, c), (a, c, d), ...``, in file order. The size of each face (the number of vertex
+  references on each ``f`` line) tells which consecutive triangles came from one polygon, and
+  the polygon is rebuilt only when its triangles match that split exactly; otherwise the
+  triangles are kept as they are.
+
+STL holds only triangles, each with its own three corners; coincident corners are merged so that
+vertex normals come out smooth. Normals stored in the file (OBJ ``vn``, PLY ``nx ny nz``) are
+returned when there is one per vertex.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+MESH_FORMATS = (".obj", ".ply", ".stl")
+
+
+def read_mesh(path: str | Path) -> tuple[np.ndarray, list[np.ndarray] | np.ndarray, Any]:
+    """Read a mesh file; return ``(vertices, faces, normals)``.
+
+    Parameters
+    ----------
+    path : str or Path
+        An ``.obj``, ``.ply`` or ``.stl`` file.
+
+    Returns
+    -------
+    vertices : (V, 3) float64
+    faces : (F, k) int array or list of int arrays
+        Polygons (0-based vertex indices) in file order.
+    normals : (V, 3) float64 or None
+        Per-vertex normals from the file, if it has one per vertex.
+
+    Raises
+    ------
+    FileNotFoundError
+        When ``path`` does not exist.
+    ValueError
+        For other formats, files trimesh cannot read, out-of-range indices and files without
+        faces; the message starts with the path.
+
+    Examples
+    --------
+    >>> from pixelpath.io.meshes import read_mesh
+    >>> vertices, faces, normals = read_mesh("suzanne.obj")  # doctest: +SKIP
+    """
+    path = Path(path)
+    if not path.is_file():
+        raise FileNotFoundError(f"mesh file not found: {path}")
+    suffix = path.suffix.lower()
+    if suffix not in MESH_FORMATS:
+        raise ValueError(f"{path}: unsupported mesh format {suffix!r}; expected one of "
+                         f"{', '.join(MESH_FORMATS)}")
+    reader = {".obj": _read_obj, ".ply": _read_ply, ".stl": _read_stl}[suffix]
+    try:
+        vertices, faces, normals = reader(path)
+    except IndexError as exc:
+        raise ValueError(f"{path}: a face refers to a vertex that does not exist ({exc})") from None
+    except (ValueError, TypeError, KeyError, AttributeError, EOFError) as exc:
+        raise ValueError(f"{path}: trimesh could not read this {suffix} file ({exc})") from None
+    if len(faces) == 0:
+        raise ValueError(f"{path}: the file has no faces (an empty mesh or a point cloud)")
+    normals = None if normals is None or np.shape(normals) != np.shape(vertices) else normals
+    return np.asarray(vertices, dtype=np.float64), faces, normals
+
+
+def _read_obj(path: Path) -> tuple[np.ndarray, Any, Any]:
+    from trimesh.exchange.obj import load_obj
+
+    with path.open("rb") as file:
+        loaded = load_obj(file, maintain_order=True, group_material=False, skip_materials=True)
+    parts = list(loaded.get("geometry", {}).values())
+    if not parts:
+        return np.zeros((0, 3)), [], None
+    if len(parts) > 1:  # several objects or materials: concatenate their triangles
+        return _concatenate(parts)
+    part = parts[0]
+    faces = np.asarray(part["faces"])
+    if faces.shape[1] == 3:
+        faces = _rebuild_polygons(faces, _obj_face_sizes(path))
+    return part["vertices"], faces, part.get("vertex_normals")
+
+
+def _obj_face_sizes(path: Path) -> np.ndarray:
+    """Return the number of vertex references on each ``f`` line, in file order."""
+    text = path.read_text(errors="replace").replace("\\\n", "")
+    sizes = [len(line.split()) - 1 for line in text.splitlines() if line.startswith("f ")]
+    return np.array(sizes, dtype=np.intp)
+
+
+def _rebuild_polygons(triangles: np.ndarray, sizes: np.ndarray) -> Any:
+    """Undo trimesh's quad split and fan triangulation; keep the triangles if they do not match."""
+    if np.all(sizes == 3) or np.sum(np.maximum(sizes - 2, 0)) != len(triangles):
+        return triangles
+    polygons, start = [], 0
+    for size in sizes.tolist():
+        polygon = _polygon_from(triangles[start : start + size - 2], size)
+        if polygon is None:
+            return triangles
+        polygons.append(polygon)
+        start += size - 2
+    return polygons
+
+
+def _polygon_from(group: np.ndarray, size: int) -> np.ndarray | None:
+    if size == 3:
+        return group[0]
+    if size == 4 and group[1][0] == group[0][2] and group[1][2] == group[0][0]:  # (a,b,c),(c,d,a)
+        return np.array([*group[0], group[1][1]])
+    if np.all(group[:, 0] == group[0, 0]) and np.all(group[1:, 1] == group[:-1, 2]):  # a fan
+        return np.concatenate([group[0], group[1:, 2]])
+    return None
+
+
+def _read_ply(path: Path) -> tuple[np.ndarray, Any, Any]:
+    from trimesh.exchange.ply import load_ply
+
+    with path.open("rb") as file:
+        loaded = load_ply(file, skip_materials=True)
+    faces = loaded.get("faces")
+    raw_faces = loaded.get("metadata", {}).get("_ply_raw", {}).get("face", {}).get("data", {})
+    for key in ("vertex_indices", "vertex_index"):
+        if key in raw_faces:
+            faces = [np.asarray(face, dtype=np.intp).reshape(-1) for face in raw_faces[key]]
+            break
+    return loaded["vertices"], [] if faces is None else faces, loaded.get("vertex_normals")
+
+
+def _read_stl(path: Path) -> tuple[np.ndarray, Any, Any]:
+    from trimesh.exchange.stl import load_stl
+
+    with path.open("rb") as file:
+        loaded = load_stl(file)
+    corners = np.asarray(loaded["vertices"], dtype=np.float64)
+    vertices, merged = np.unique(corners, axis=0, return_inverse=True)
+    return vertices, merged.reshape(-1)[np.asarray(loaded["faces"])], None
+
+
+def _concatenate(parts: list[dict[str, Any]]) -> tuple[np.ndarray, np.ndarray, Any]:
+    offsets = np.cumsum([0] + [len(part["vertices"]) for part in parts])
+    faces = np.vstack([np.asarray(p["faces"]) + o for p, o in zip(parts, offsets, strict=False)])
+    vertices = np.vstack([part["vertices"] for part in parts])
+    normals = [part.get("vertex_normals") for part in parts]
+    normals = None if any(n is None for n in normals) else np.vstack(normals)
+    return vertices, faces, normals

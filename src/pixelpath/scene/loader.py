@@ -1,0 +1,438 @@
+"""TOML scene files: ``load_scene``, and the dict form behind ``Scene.to_dict``/``Scene.from_dict``.
+
+The format is defined in :mod:`pixelpath.scene.schema` and documented in ``docs/scene-format.md``.
+Every error is a ``ValueError`` (or ``FileNotFoundError`` for missing files) whose message names
+the file, the key path (``objects[2].radius``) and, for files, the line near which the key is
+written, then says what was expected. ``tomllib`` keeps no positions for parsed values, so the
+line is found by looking for the key's section header and the key in the source text: "near
+line N" is a pointer, not a guarantee. TOML syntax errors carry tomllib's own line and column.
+
+Transforms (``transform = { translate, rotate, scale }``, see :func:`transform_matrix`) are
+applied when the scene is built:
+
+- spheres accept translation, rotation and *uniform* scale; other scales are rejected (use an
+  ``icosphere`` object for an ellipsoid);
+- planes accept any transform (point by the matrix, normal by its inverse transpose);
+- boxes stay boxes under translation and scale; a rotated box becomes a 6-quad ``Mesh``;
+- meshes, icospheres and tori are transformed vertex by vertex.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import re
+import tomllib
+from collections.abc import Iterator
+from functools import partial
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from pixelpath.scene.camera import Camera
+from pixelpath.scene.lights import DirectionalLight
+from pixelpath.scene.material import Material
+from pixelpath.scene.mesh import Mesh
+from pixelpath.scene.primitives import Box, Plane, Sphere
+from pixelpath.scene.scene import Scene
+from pixelpath.scene.schema import (
+    CAMERA,
+    KINDS,
+    LIGHTS,
+    MATERIAL,
+    OBJECTS,
+    TOP_LEVEL,
+    TRANSFORM,
+    Key,
+)
+from pixelpath.scene.transform import transform_matrix
+
+KeyPath = tuple[str | int, ...]
+
+
+def load_scene(path: str | Path) -> Scene:
+    """Read a TOML scene file; mesh paths in it are relative to the file's folder.
+
+    Parameters
+    ----------
+    path : str or Path
+        The ``.toml`` scene file.
+
+    Returns
+    -------
+    Scene
+
+    Raises
+    ------
+    FileNotFoundError
+        When the scene file or a mesh file it names does not exist.
+    ValueError
+        For TOML syntax errors, unknown or missing keys and invalid values; the message names
+        the file, the key and the line near which it is written.
+
+    Examples
+    --------
+    >>> from pixelpath.scene import bundled_scenes, load_scene
+    >>> scene = load_scene("scene.toml")  # doctest: +SKIP
+    """
+    path = Path(path)
+    if not path.is_file():
+        raise FileNotFoundError(f"scene file not found: {path}")
+    try:
+        text = path.read_text(encoding="utf-8")
+    except UnicodeDecodeError as exc:
+        raise ValueError(f"{path}: not a UTF-8 text file ({exc.reason})") from None
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise ValueError(f"{path}: invalid TOML: {exc}") from None
+    return scene_from_dict(data, base_dir=path.parent, source=_Source(str(path), text))
+
+
+class _Source:
+    """Where a scene dict came from, to name the file, the key and its line in messages."""
+
+    def __init__(self, label: str, text: str | None = None) -> None:
+        self.label = label
+        self.lines = [] if text is None else text.splitlines()
+
+    def where(self, path: KeyPath) -> str:
+        key = _key_text(path)
+        line = self._line_of(path) if self.lines else None
+        return f"{self.label}: {key}" + (f" (near line {line})" if line else "")
+
+    def error(self, path: KeyPath, message: str, kind: type[Exception] = ValueError) -> Exception:
+        return kind(f"{self.where(path)}: {message}")
+
+    def _line_of(self, path: KeyPath) -> int | None:
+        """1-based line of the key ``path``: its section header, then the keys below it."""
+        start, stop, found = self._section(path)
+        if start is None:
+            return None
+        rest = [part for part in path[found:] if isinstance(part, str)]
+        line = start if found else None
+        for key in rest:
+            pattern = re.compile(rf"(^|[\s{{,]){re.escape(key)}\s*=")
+            hit = next((i for i in range(start, stop) if pattern.search(self.lines[i])), None)
+            if hit is None:
+                break
+            line = start = hit
+        return None if line is None else line + 1
+
+    def _section(self, path: KeyPath) -> tuple[int | None, int, int]:
+        """Return (first line, end line, path parts consumed) of the section holding ``path``."""
+        headers = [i for i, text in enumerate(self.lines) if text.lstrip().startswith("[")]
+        if len(path) >= 2 and path[0] in ("lights", "objects") and isinstance(path[1], int):
+            pattern, occurrence, used = rf"\[\[\s*{path[0]}\s*\]\]", path[1], 2
+        elif len(path) >= 2 and path[0] == "materials":
+            name = re.escape(str(path[1]))
+            pattern, occurrence, used = rf"\[\s*materials\s*\.\s*\"?{name}\"?\s*\]", 0, 2
+        elif path and path[0] == "camera":
+            pattern, occurrence, used = r"\[\s*camera\s*\]", 0, 1
+        else:  # top-level keys live before the first header
+            return 0, headers[0] if headers else len(self.lines), 0
+        matches = [i for i in headers if re.match(pattern, self.lines[i].strip())]
+        if occurrence >= len(matches):
+            return None, 0, 0
+        start = matches[occurrence]
+        stop = next((i for i in headers if i > start), len(self.lines))
+        return start, stop, used
+
+
+def _key_text(path: KeyPath) -> str:
+    text = ""
+    for part in path:
+        text += f"[{part}]" if isinstance(part, int) else (f".{part}" if text else part)
+    return text or "(top level)"
+
+
+@contextlib.contextmanager
+def _reported(source: _Source, path: KeyPath, table: dict | None = None) -> Iterator[None]:
+    """Re-raise a constructor's ValueError/TypeError with the file, key and line in front."""
+    try:
+        yield
+    except (ValueError, TypeError) as exc:
+        message = str(exc)
+        first_word = message.split(" ", 1)[0].split("[", 1)[0].rstrip(":")
+        if table is not None and first_word in table:
+            path = (*path, first_word)  # "radius must be positive" -> objects[i].radius
+        raise source.error(path, message, type(exc)) from None
+
+
+def _checked(table: Any, keys: dict[str, Key], path: KeyPath, source: _Source) -> dict[str, Any]:
+    """Return ``table`` once it has only known keys, the required ones, each of its kind."""
+    if not isinstance(table, dict):
+        raise source.error(path, f"expected a table, got {_shown(table)}")
+    for name in table:
+        if name not in keys:
+            raise source.error(
+                (*path, name), f"unknown key; expected one of: {', '.join(sorted(keys))}"
+            )
+    for name, key in keys.items():
+        if name not in table:
+            if key.required:
+                raise source.error(path, f"missing key {name!r} ({key.description})")
+            continue
+        kind = KINDS[key.kind]
+        if not kind.check(table[name]):
+            got = _shown(table[name])
+            raise source.error((*path, name), f"expected {kind.expected}, got {got}")
+    return dict(table)
+
+
+def _shown(value: Any) -> str:
+    text = repr(value)
+    return text if len(text) <= 60 else f"a {type(value).__name__} ({text[:50]}...)"
+
+
+def scene_from_dict(
+    data: Any, *, base_dir: str | Path | None = None, source: _Source | None = None
+) -> Scene:
+    """Build a Scene from the dict form of a scene file (see :meth:`Scene.from_dict`)."""
+    source = source or _Source("scene dict")
+    base = Path.cwd() if base_dir is None else Path(base_dir)
+    top = _checked(data, TOP_LEVEL, (), source)
+    camera = _built(Camera, CAMERA, top["camera"], ("camera",), source)
+    materials = {
+        name: _built(partial(Material, name=name), MATERIAL, table, ("materials", name), source)
+        for name, table in top.get("materials", {}).items()
+    }
+    lights = [
+        _light(table, ("lights", i), source) for i, table in enumerate(top.get("lights", []))
+    ]
+    objects = [
+        _object(table, ("objects", i), materials, base, source)
+        for i, table in enumerate(top.get("objects", []))
+    ]
+    extras = {name: top[name] for name in ("ambient", "background") if name in top}
+    with _reported(source, (), extras):
+        return Scene(camera, objects, lights, **extras)
+
+
+def _built(factory: Any, keys: dict[str, Key], table: Any, path: KeyPath, source: _Source) -> Any:
+    values = _checked(table, keys, path, source)
+    with _reported(source, path, values):
+        return factory(**values)
+
+
+def _light(table: Any, path: KeyPath, source: _Source) -> Any:
+    kind = _type_of(table, LIGHTS, path, source)
+    factory, keys = LIGHTS[kind]
+    values = _checked(table, keys, path, source)
+    del values["type"]
+    with _reported(source, path, values):
+        return factory(**values)
+
+
+def _type_of(table: Any, choices: dict[str, Any], path: KeyPath, source: _Source) -> str:
+    if not isinstance(table, dict):
+        raise source.error(path, f"expected a table, got {_shown(table)}")
+    expected = ", ".join(repr(name) for name in choices)
+    if "type" not in table:
+        raise source.error(path, f"missing key 'type'; expected one of {expected}")
+    if table["type"] not in choices:
+        raise source.error((*path, "type"), f"unknown type {table['type']!r}; expected {expected}")
+    return table["type"]
+
+
+def _object(
+    table: Any, path: KeyPath, materials: dict[str, Material], base: Path, source: _Source
+) -> Any:
+    kind = _type_of(table, OBJECTS, path, source)
+    values = _checked(table, OBJECTS[kind][1], path, source)
+    spec = dict(values)
+    del values["type"]
+    material = _material(values.pop("material", None), materials, (*path, "material"), source)
+    matrix = None
+    if "transform" in values:
+        transform = _checked(values.pop("transform"), TRANSFORM, (*path, "transform"), source)
+        with _reported(source, (*path, "transform"), transform):
+            matrix = transform_matrix(**transform)
+    spec.pop("material", None)
+    with _reported(source, path, spec):
+        if kind == "mesh":
+            return _mesh(values, material, matrix, spec, base, path, source)
+        return _MAKERS[kind](values, material, matrix, spec)
+
+
+def _material(
+    value: Any, materials: dict[str, Material], path: KeyPath, source: _Source
+) -> Material:
+    if value is None:
+        return Material()
+    if isinstance(value, dict):
+        return _built(Material, MATERIAL, value, path, source)
+    if value not in materials:
+        defined = ", ".join(sorted(materials)) or "none"
+        raise source.error(path, f"unknown material {value!r}; defined materials: {defined}")
+    return materials[value]
+
+
+def _sphere(values: dict, material: Material, matrix: Any, spec: dict) -> Sphere:
+    sphere = Sphere(material=material, **values)
+    if matrix is None:
+        return sphere
+    linear = matrix[:3, :3]
+    gram = linear.T @ linear
+    scale = float(np.sqrt(gram[0, 0]))
+    if not np.allclose(gram, scale**2 * np.eye(3), rtol=1e-9, atol=1e-12 * scale**2):
+        raise ValueError(
+            "transform must scale a sphere uniformly (use type = \"icosphere\" for an "
+            "ellipsoid)"
+        )
+    return Sphere(matrix[:3, :3] @ sphere.center + matrix[:3, 3], scale * sphere.radius, material)
+
+
+def _plane(values: dict, material: Material, matrix: Any, spec: dict) -> Plane:
+    plane = Plane(material=material, **values)
+    if matrix is None:
+        return plane
+    normal = np.linalg.inv(matrix[:3, :3]).T @ plane.normal
+    return Plane(matrix[:3, :3] @ plane.point + matrix[:3, 3], normal, material)
+
+
+def _box(values: dict, material: Material, matrix: Any, spec: dict) -> Box | Mesh:
+    box = Box(material=material, **values)
+    if matrix is None:
+        return box
+    linear = matrix[:3, :3]
+    if np.count_nonzero(linear - np.diag(np.diag(linear))) == 0:  # no rotation: still a box
+        a, b = (linear @ corner + matrix[:3, 3] for corner in (box.minimum, box.maximum))
+        return Box(np.minimum(a, b), np.maximum(a, b), material)
+    return _tagged(box.to_mesh().transformed(matrix), spec)
+
+
+def _generated(factory: Any) -> Any:
+    def make(values: dict, material: Material, matrix: Any, spec: dict) -> Mesh:
+        name = values.pop("name", None)
+        mesh = factory(material=material, **values)
+        if matrix is not None:
+            mesh = mesh.transformed(matrix)
+        mesh.name = name or mesh.name
+        return _tagged(mesh, spec)
+
+    return make
+
+
+def _mesh(
+    values: dict,
+    material: Material,
+    matrix: Any,
+    spec: dict | None,
+    base: Path,
+    path: KeyPath,
+    source: _Source,
+) -> Mesh:
+    inline = {"vertices", "faces"} & set(values)
+    if ("path" in values) == bool(inline) or len(inline) == 1:
+        raise ValueError("a mesh needs either 'path' or both 'vertices' and 'faces'")
+    name = values.pop("name", None)
+    if "path" in values:
+        if "normals" in values:
+            raise ValueError("'normals' is only for inline meshes (a file brings its own)")
+        file = (base / values["path"]).resolve()
+        spec["path"] = file
+        try:
+            mesh = Mesh.load(file, material)
+        except FileNotFoundError as exc:
+            raise source.error((*path, "path"), str(exc), FileNotFoundError) from None
+    else:
+        mesh = Mesh(values["vertices"], values["faces"], material, values.get("normals"))
+        spec = None  # inline meshes are written back from their arrays
+    if matrix is not None:
+        mesh = mesh.transformed(matrix)
+    mesh.name = name or mesh.name
+    return mesh if spec is None else _tagged(mesh, spec)
+
+
+def _tagged(mesh: Mesh, spec: dict) -> Mesh:
+    mesh.source = spec
+    return mesh
+
+
+_MAKERS = {
+    "sphere": _sphere,
+    "plane": _plane,
+    "box": _box,
+    "icosphere": _generated(OBJECTS["icosphere"][0]),
+    "torus": _generated(OBJECTS["torus"][0]),
+}
+
+
+def scene_to_dict(scene: Scene, base_dir: str | Path | None = None) -> dict[str, Any]:
+    """Return the dict form of ``scene`` (see :meth:`Scene.to_dict`)."""
+    materials: dict[str, Material] = {}
+    objects = [_object_dict(obj, materials, base_dir) for obj in scene.objects]
+    ambient = scene.ambient.tolist()
+    data: dict[str, Any] = {
+        "camera": {name: _plain(getattr(scene.camera, name)) for name in CAMERA},
+        "ambient": ambient[0] if len(set(ambient)) == 1 else ambient,
+        "background": scene.background.tolist(),
+        "lights": [_light_dict(light) for light in scene.lights],
+    }
+    if materials:
+        data["materials"] = {
+            name: {key: _plain(getattr(material, key)) for key in MATERIAL}
+            for name, material in materials.items()
+        }
+    data["objects"] = objects
+    return data
+
+
+def _plain(value: Any) -> Any:
+    return value.tolist() if isinstance(value, np.ndarray) else value
+
+
+def _light_dict(light: Any) -> dict[str, Any]:
+    kind = "directional" if isinstance(light, DirectionalLight) else "point"
+    keys = [key for key in LIGHTS[kind][1] if key != "type"]
+    return {"type": kind, **{key: _plain(getattr(light, key)) for key in keys}}
+
+
+def _object_dict(obj: Any, materials: dict[str, Material], base_dir: Any) -> dict[str, Any]:
+    if isinstance(obj, Mesh):
+        data = _mesh_dict(obj, base_dir)
+    else:
+        kind = type(obj).__name__.lower()
+        keys = [key for key in OBJECTS[kind][1] if key not in ("type", "material", "transform")]
+        data = {"type": kind, **{key: _plain(getattr(obj, key)) for key in keys}}
+    if obj.material != Material() or obj.material.name is not None:
+        data["material"] = _material_name(obj.material, materials)
+    return data
+
+
+def _material_name(material: Material, materials: dict[str, Material]) -> str:
+    """Return the name ``material`` is listed under, adding it (its own name first) if new."""
+    for name, listed in materials.items():
+        if listed == material and listed.name == material.name:
+            return name
+    name = material.name
+    number = len(materials) + 1
+    while name is None or name in materials:
+        name, number = f"material{number}", number + 1
+    materials[name] = material
+    return name
+
+
+def _mesh_dict(mesh: Mesh, base_dir: Any) -> dict[str, Any]:
+    if mesh.source is not None:
+        data = dict(mesh.source)
+        if "path" in data:
+            data["path"] = _relative(Path(data["path"]), base_dir)
+        return data
+    data = {"type": "mesh", "vertices": mesh.vertices.tolist(), "faces": mesh.faces}
+    if mesh.normals is not None:
+        data["normals"] = mesh.normals.tolist()
+    if mesh.name is not None:
+        data["name"] = mesh.name
+    return data
+
+
+def _relative(path: Path, base_dir: Any) -> str:
+    if base_dir is None:
+        return path.as_posix()
+    try:
+        return Path(os.path.relpath(path, Path(base_dir).resolve())).as_posix()
+    except ValueError:  # another drive on Windows: keep it absolute
+        return path.as_posix()
