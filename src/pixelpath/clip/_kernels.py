@@ -245,21 +245,21 @@ def trace_stage(src, row):
 
 
 @njit(parallel=True)
-def clip_many(coords, offsets, table, chunks):
+def clip_many(coords, offsets, table, chunks, slot_scale=2):
     """Clip every polygon of a flat buffer; return ``(coords, offsets, status)``.
 
     ``chunks`` groups of polygons are shared among the threads (a few per thread balances load).
 
     Pass 1 clips chunks of polygons in parallel, each chunk with its own scratch buffers, and
-    keeps each result in a slot of ``2 n + 2 K`` rows (a result that does not fit is clipped
-    again in pass 2; Sutherland-Hodgman rarely grows a polygon that much). Pass 2 packs the
-    results into the output buffer at their final offsets.
+    keeps each result in a staging slot of ``slot_scale * (n + K)`` rows (only the rows written
+    are ever touched in memory). Pass 2 packs the results at their final offsets; a result too
+    big for its slot, which needs a pathological subject, is clipped again there.
     """
     count = offsets.shape[0] - 1
     slot = np.empty(count + 1, dtype=np.intp)
     slot[0] = 0
     for i in range(count):
-        slot[i + 1] = slot[i] + 2 * (offsets[i + 1] - offsets[i]) + 2 * table.shape[0]
+        slot[i + 1] = slot[i] + slot_scale * (offsets[i + 1] - offsets[i] + table.shape[0])
     staging = np.empty((slot[count], 2))
     sizes = np.zeros(count, dtype=np.intp)
     status = np.zeros(count, dtype=np.intp)

@@ -98,12 +98,12 @@ class ClipTrace:
         for stage, row in zip(self.stages, self.window.table, strict=True):
             lines += ["", f"Clip against the {stage.boundary} boundary ({_describe(row)})"]
             lines.append(f"  input:  {_points(stage.input)}")
-            lines.append(f"  {'S':<14}{'E':<14}{'case':<12}output")
+            width = 2 + max([len(_point(p)) for p in stage.input], default=0)
+            lines.append(f"  {'S':<{width}}{'E':<{width}}{'case':<12}output")
             for step in stage.steps:
                 emitted = _points(step.emitted) if len(step.emitted) else "nothing"
-                lines.append(
-                    f"  {_point(step.s):<14}{_point(step.e):<14}{step.case:<12}{emitted}"
-                )
+                s, e = _point(step.s), _point(step.e)
+                lines.append(f"  {s:<{width}}{e:<{width}}{step.case:<12}{emitted}")
             lines.append(f"  output: {_points(stage.output)}")
         lines.append("")
         if len(self.result):

@@ -90,12 +90,12 @@ def _exact_ring(polygon: object, name: str) -> list[Point]:
     """Validate a polygon and return its vertices counter-clockwise, as exact fractions."""
     floats = _validate.distinct_ring(_validate.polygon_array(polygon, name), name)
     ring = [(Fraction(x), Fraction(y)) for x, y in floats.tolist()]
-    area2 = sum(_cross(a, b) for a, b in _edges(ring))
-    if area2 == 0:
-        raise ValueError(f"{name} has zero area")
-    if area2 < 0:
-        ring.reverse()
+    first, second = ring[0], ring[1]
+    if all(_cross(_sub(second, first), _sub(p, first)) == 0 for p in ring):
+        raise ValueError(f"{name} has zero area (its vertices are collinear)")
     _check_simple(ring, name)
+    if sum(_cross(a, b) for a, b in _edges(ring)) < 0:  # a simple polygon's area is not 0
+        ring.reverse()
     return ring
 
 
