@@ -2,7 +2,9 @@
 
 trimesh does the parsing. Its loaders triangulate polygons in two places, which are undone here:
 
-- PLY: ``load_ply`` keeps the file's face lists in ``metadata["_ply_raw"]``; those are used.
+- PLY: for ASCII files ``load_ply`` keeps the file's face lists in ``metadata["_ply_raw"]``;
+  those are used. Binary PLY files come back whole when all faces have the same size; trimesh
+  5.2 cannot read binary files with faces of mixed sizes (a clear error names the file).
 - OBJ: ``load_obj`` (with ``maintain_order=True``) keeps whole faces when every face has the same
   size, but splits mixed files' quads into ``(a, b, c), (c, d, a)`` and larger polygons into fans
   ``(a, b, c), (a, c, d), ...``, in file order. The size of each face (the number of vertex
@@ -64,10 +66,12 @@ def read_mesh(path: str | Path) -> tuple[np.ndarray, list[np.ndarray] | np.ndarr
     reader = {".obj": _read_obj, ".ply": _read_ply, ".stl": _read_stl}[suffix]
     try:
         vertices, faces, normals = reader(path)
-    except IndexError as exc:
-        raise ValueError(f"{path}: a face refers to a vertex that does not exist ({exc})") from None
-    except (ValueError, TypeError, KeyError, AttributeError, EOFError) as exc:
-        raise ValueError(f"{path}: trimesh could not read this {suffix} file ({exc})") from None
+    except (IndexError, ValueError, TypeError, KeyError, AttributeError, EOFError) as exc:
+        if isinstance(exc, IndexError) and suffix == ".obj":  # load_obj indexes v by f lines
+            reason = "a face refers to a vertex that does not exist"
+        else:
+            reason = f"trimesh could not read this {suffix} file"
+        raise ValueError(f"{path}: {reason} ({type(exc).__name__}: {exc})") from None
     if len(faces) == 0:
         raise ValueError(f"{path}: the file has no faces (an empty mesh or a point cloud)")
     normals = None if normals is None or np.shape(normals) != np.shape(vertices) else normals
@@ -128,11 +132,13 @@ def _read_ply(path: Path) -> tuple[np.ndarray, Any, Any]:
     with path.open("rb") as file:
         loaded = load_ply(file, skip_materials=True)
     faces = loaded.get("faces")
-    raw_faces = loaded.get("metadata", {}).get("_ply_raw", {}).get("face", {}).get("data", {})
-    for key in ("vertex_indices", "vertex_index"):
-        if key in raw_faces:
-            faces = [np.asarray(face, dtype=np.intp).reshape(-1) for face in raw_faces[key]]
-            break
+    raw_faces = loaded.get("metadata", {}).get("_ply_raw", {}).get("face", {}).get("data")
+    # ASCII files keep each face's list here; binary ones (same-size faces only) are already whole.
+    if isinstance(raw_faces, dict):
+        for key in ("vertex_indices", "vertex_index"):
+            if key in raw_faces:
+                faces = [np.asarray(face, dtype=np.intp).reshape(-1) for face in raw_faces[key]]
+                break
     return loaded["vertices"], [] if faces is None else faces, loaded.get("vertex_normals")
 
 

@@ -155,8 +155,10 @@ def _reported(source: _Source, path: KeyPath, table: dict | None = None) -> Iter
     except (ValueError, TypeError) as exc:
         message = str(exc)
         first_word = message.split(" ", 1)[0].split("[", 1)[0].rstrip(":")
-        if table is not None and first_word in table:
-            path = (*path, first_word)  # "radius must be positive" -> objects[i].radius
+        # "radius must be positive" -> objects[i].radius; "face 3 refers to ..." -> .faces
+        key = next((k for k in (first_word, first_word + "s") if table and k in table), None)
+        if key is not None:
+            path = (*path, key)
         raise source.error(path, message, type(exc)) from None
 
 
