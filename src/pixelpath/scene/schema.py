@@ -5,6 +5,11 @@ A scene file (TOML, or the equivalent dict of :meth:`Scene.to_dict`) has the top
 entry of :data:`KINDS`. A kind couples the Python check the loader runs (with the phrase used in
 its error message) to the JSON Schema fragment published in ``docs/scene.schema.json``.
 Defaults come from the constructors themselves, so they cannot drift apart.
+
+The published file is regenerated with::
+
+    python -c "import json; from pixelpath.scene.schema import scene_json_schema; \
+print(json.dumps(scene_json_schema(), indent=2))" > docs/scene.schema.json
 """
 
 from __future__ import annotations
