@@ -122,3 +122,17 @@ def test_degenerate_face_in_a_file_is_rejected_with_the_file_name(tmp_path):
     path.write_text("\n".join([*header, "0 0 0", "1 0 0", "0 1 0", "2 0 1"]) + "\n")
     with pytest.raises(ValueError, match=r"short\.ply: face 0 has 2 vertices"):
         Mesh.load(path)
+
+
+def test_obj_with_several_objects_keeps_each_face_in_place(tmp_path):
+    path = tmp_path / "two.obj"
+    path.write_text(
+        "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\n"
+        "o first\nusemtl a\nf 1 2 3 4\no second\nusemtl b\nf 1 5 2\n"
+    )
+    mesh = Mesh.load(path)
+    polygons = sorted(mesh.vertices[face].tolist() for face in mesh.faces)
+    assert polygons == [
+        [[0, 0, 0], [0, 0, 1], [1, 0, 0]],
+        [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]],
+    ]

@@ -10,7 +10,9 @@ trimesh does the parsing. Its loaders triangulate polygons in two places, which 
   ``(a, b, c), (a, c, d), ...``, in file order. The size of each face (the number of vertex
   references on each ``f`` line) tells which consecutive triangles came from one polygon, and
   the polygon is rebuilt only when its triangles match that split exactly; otherwise the
-  triangles are kept as they are.
+  triangles are kept as they are. Files that trimesh splits into pieces (several objects or
+  materials) are joined piece by piece, each keeping whole faces only when they are all the
+  same size.
 
 STL holds only triangles, each with its own three corners; coincident corners are merged so that
 vertex normals come out smooth. Normals stored in the file (OBJ ``vn``, PLY ``nx ny nz``) are
@@ -86,7 +88,7 @@ def _read_obj(path: Path) -> tuple[np.ndarray, Any, Any]:
     parts = list(loaded.get("geometry", {}).values())
     if not parts:
         return np.zeros((0, 3)), [], None
-    if len(parts) > 1:  # several objects or materials: concatenate their triangles
+    if len(parts) > 1:  # several objects or materials: join the pieces
         return _concatenate(parts)
     part = parts[0]
     faces = np.asarray(part["faces"])
@@ -152,9 +154,14 @@ def _read_stl(path: Path) -> tuple[np.ndarray, Any, Any]:
     return vertices, merged.reshape(-1)[np.asarray(loaded["faces"])], None
 
 
-def _concatenate(parts: list[dict[str, Any]]) -> tuple[np.ndarray, np.ndarray, Any]:
+def _concatenate(parts: list[dict[str, Any]]) -> tuple[np.ndarray, list[np.ndarray], Any]:
+    """Join the pieces trimesh splits a file into (by object or material), faces as given."""
     offsets = np.cumsum([0] + [len(part["vertices"]) for part in parts])
-    faces = np.vstack([np.asarray(p["faces"]) + o for p, o in zip(parts, offsets, strict=False)])
+    faces = [
+        face + offset
+        for part, offset in zip(parts, offsets, strict=False)
+        for face in np.asarray(part["faces"])
+    ]
     vertices = np.vstack([part["vertices"] for part in parts])
     normals = [part.get("vertex_normals") for part in parts]
     normals = None if any(n is None for n in normals) else np.vstack(normals)
