@@ -240,3 +240,15 @@ def test_rect_and_the_same_rect_as_polygon_give_the_same_area(subject, window):
     area = abs(signed_area(by_rect)) if len(by_rect) else 0.0
     other = abs(signed_area(by_polygon)) if len(by_polygon) else 0.0
     assert area == pytest.approx(other, abs=1e-9)
+
+
+def test_subject_wholly_inside_comes_back_unchanged_but_without_repeats():
+    inner = np.array([(3, 3), (4, 3), (4, 4), (3, 4)], dtype=float)
+    np.testing.assert_array_equal(sutherland_hodgman(inner, NOTES_WINDOW), inner)
+    repeated = [(3, 3), (4, 3), (4, 3), (4, 4), (3, 4), (3, 3)]
+    np.testing.assert_array_equal(sutherland_hodgman(repeated, NOTES_WINDOW), inner)
+
+
+def test_subject_wholly_outside_one_boundary_leaves_nothing():
+    for subject in ([(0, 3), (1, 3), (1, 4)], [(3, 7), (4, 7), (4, 8)]):
+        assert sutherland_hodgman(subject, NOTES_WINDOW).shape == (0, 2)

@@ -126,20 +126,53 @@ def _run_stages(xy, table, a, b):
 
     Returns ``(count, a, b)``; the result is ``b[:count]``. A buffer that could overflow is
     replaced by a larger one, so callers keep the returned pair for their next polygon.
+
+    Shortcut, exact for the notes' rectangle: a stage whose boundary has the whole bounding box
+    inside would return its input unchanged (when no vertex repeats its predecessor, and stage
+    outputs never do), so it is skipped; one with the box wholly outside leaves nothing.
     """
     n = xy.shape[0]
+    xmin, ymin, xmax, ymax, repeats = _bounds(xy)
+    fresh = True  # the current polygon is still xy itself
     for k in range(table.shape[0]):
+        row = table[k]
+        if row[0] != EDGE and not repeats:
+            lo_in, hi_in = inside(row, xmin, ymin), inside(row, xmax, ymax)
+            if lo_in and hi_in:
+                continue
+            if not (lo_in or hi_in):
+                return 0, a, b
         need = n + n // 2 + 1  # a stage emits at most 3 vertices per 2 input vertices
         if a.shape[0] < need:
             a = np.empty((2 * need, 2))
-        if k == 0:
-            n = clip_stage(xy, n, table[k], a, np.empty((0, 2)))  # no trace
+        if fresh:
+            n = clip_stage(xy, n, row, a, np.empty((0, 2)))  # no trace
         else:
-            n = clip_stage(b, n, table[k], a, np.empty((0, 2)))  # no trace
+            n = clip_stage(b, n, row, a, np.empty((0, 2)))
         a, b = b, a  # this stage's output is the next stage's input
+        fresh = False
         if n == 0:
             break
+    if fresh:
+        if b.shape[0] < n:
+            b = np.empty((2 * n, 2))
+        b[:n] = xy
     return n, a, b
+
+
+@njit(inline="always")
+def _bounds(xy):
+    """Bounding box of ``xy`` and whether a vertex repeats its predecessor (cyclically)."""
+    n = xy.shape[0]
+    xmin, ymin = xy[0, 0], xy[0, 1]
+    xmax, ymax = xmin, ymin
+    repeats = xy[n - 1, 0] == xy[0, 0] and xy[n - 1, 1] == xy[0, 1]
+    for i in range(1, n):
+        x, y = xy[i, 0], xy[i, 1]
+        xmin, xmax = min(xmin, x), max(xmax, x)
+        ymin, ymax = min(ymin, y), max(ymax, y)
+        repeats = repeats or (x == xy[i - 1, 0] and y == xy[i - 1, 1])
+    return xmin, ymin, xmax, ymax, repeats
 
 
 @njit

@@ -135,10 +135,10 @@ def _flatten(polygons: Sequence[np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
 
 def _check_offsets(offsets: object, vertex_count: int) -> np.ndarray:
     raw = np.asarray(offsets)
-    if raw.dtype.kind not in "iu":
-        raise TypeError(f"offsets must be integers, got dtype {raw.dtype}")
     if raw.ndim != 1 or raw.size == 0:
         raise ValueError(f"offsets must have shape (P + 1,), got shape {raw.shape}")
+    if raw.dtype.kind not in "iu":
+        raise TypeError(f"offsets must be integers, got dtype {raw.dtype}")
     if raw[0] != 0 or raw[-1] != vertex_count or np.any(np.diff(raw) < 0):
         raise ValueError(
             f"offsets must rise from 0 to the vertex count {vertex_count}, "
