@@ -49,6 +49,13 @@ class Image:
         self._depth = _frozen(_buffer(depth, size, np.float32, np.inf, "depth"))
         self._object_id = _frozen(_buffer(object_id, size, np.int32, -1, "object_id"))
 
+    @classmethod
+    def _from_buffers(cls, rgb: np.ndarray, depth: np.ndarray, object_id: np.ndarray) -> Image:
+        """Wrap a renderer's own buffers without copying (already clamped float32, int32)."""
+        image = cls.__new__(cls)
+        image._rgb, image._depth, image._object_id = (_frozen(a) for a in (rgb, depth, object_id))
+        return image
+
     @property
     def rgb(self) -> np.ndarray:
         """(H, W, 3) float32 linear intensities in [0, 1] (read-only)."""

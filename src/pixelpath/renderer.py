@@ -105,7 +105,7 @@ def render(
         progress=progress,
     )
     if factor == 1:
-        return Image(frame.rgb, frame.depth, frame.object_id)
+        return Image._from_buffers(frame.rgb, frame.depth, frame.object_id)
     return _downsample(frame, factor)
 
 
@@ -118,10 +118,11 @@ def render_steps(method: str = "zbuffer") -> int:
     >>> render_steps("zbuffer")
     4
     """
-    from pixelpath.hsr import METHODS, zbuffer
+    from pixelpath.hsr import METHODS
+    from pixelpath.hsr.zbuffer import STEPS
 
     _method(method, METHODS)
-    return zbuffer.STEPS
+    return STEPS
 
 
 def _method(method: str, registry: dict) -> Callable:

@@ -15,13 +15,13 @@ Examples
 
 from __future__ import annotations
 
+from pixelpath.hsr import zbuffer
 from pixelpath.hsr.backface import front_facing
-from pixelpath.hsr.zbuffer import Frame, zbuffer
 
-__all__ = ["METHODS", "Frame", "front_facing", "zbuffer"]
+__all__ = ["METHODS", "front_facing"]
 
 METHODS = {
-    "zbuffer": zbuffer,
+    "zbuffer": zbuffer.zbuffer,
     "scanline": None,
     "painter": None,
     "bsp": None,

@@ -104,8 +104,6 @@ def zbuffer(
     mode = shading_mode(shading)
     advance = progress or (lambda n: None)
     height, width = camera.height, camera.width
-    rgb = np.empty((height, width, 3), dtype=np.float32)
-    rgb[:] = np.asarray(scene.background, dtype=np.float32)
     inv_depth = np.zeros((height, width))
     triangle_id = np.full((height, width), -1, dtype=np.int32)
 
@@ -141,15 +139,15 @@ def zbuffer(
     advance(1)
 
     # 5. Deferred shading of the visible pixels.
+    rgb = np.empty((height, width, 3), dtype=np.float32)
+    depth = np.empty((height, width), dtype=np.float32)
+    object_id = np.empty((height, width), dtype=np.int32)
+    background = np.asarray(scene.background, dtype=np.float64)
     _kernels.shade_deferred(
-        triangle_id, setup, triangles, vertices, info, flat_colors, geometry.materials,
-        lights, ambient, eye, mode, bool(blinn), rgb,
+        triangle_id, inv_depth, setup, triangles, vertices, info, flat_colors,
+        geometry.materials, lights, ambient, eye, mode, bool(blinn), background, rgb, depth,
+        object_id,
     )
-    drawn = triangle_id >= 0
-    depth = np.full((height, width), np.inf, dtype=np.float32)
-    depth[drawn] = 1.0 / inv_depth[drawn]
-    object_id = np.full((height, width), -1, dtype=np.int32)
-    object_id[drawn] = info[triangle_id[drawn], 0]
     advance(1)
     return Frame(rgb=rgb, depth=depth, object_id=object_id)
 

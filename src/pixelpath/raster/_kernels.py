@@ -43,7 +43,8 @@ S1_PLANE = 6  # screen weight of vertex 1: s1 = a x + b y + c
 S2_PLANE = 9  # screen weight of vertex 2
 INVW_PLANE = 12  # 1/w = a x + b y + c
 VERTEX_INVW = 15  # 1/w at vertices 0, 1, 2 (in the triangle's own order)
-SETUP_FIELDS = 18
+SLOPES = 18  # dx/dy of the sorted edges (v0, v2), (v0, v1), (v1, v2); 0 for a horizontal one
+SETUP_FIELDS = 21
 
 # Column layout of the raster vertex attributes: clip position, world position, normal, and
 # the Gouraud vertex colours lit from the front (normal as given) and from the back (flipped).
@@ -199,6 +200,8 @@ def setup_triangles(screen, triangles, height, setup, rows):
                 xa, ya, xb, yb = xb, yb, xa, ya
         _store3(record, SORTED_XY, (xa, ya, xb))
         _store3(record, SORTED_XY + 3, (yb, xc, yc))
+        long_edge = _slope(xa, ya, xc, yc)
+        _store3(record, SLOPES, (long_edge, _slope(xa, ya, xb, yb), _slope(xb, yb, xc, yc)))
         # Rows whose centre j + 0.5 lies in [y_top, y_bottom).
         first = max(math.ceil(ya - 0.5), 0.0)
         stop = min(math.ceil(yc - 0.5), float(height))
@@ -208,9 +211,11 @@ def setup_triangles(screen, triangles, height, setup, rows):
 
 
 @njit(inline="always")
-def _edge_x(x_top, y_top, x_bottom, y_bottom, y):
-    """Return the x where the edge from its upper end to its lower end crosses scan line y."""
-    return x_top + (y - y_top) * (x_bottom - x_top) / (y_bottom - y_top)
+def _slope(x_top, y_top, x_bottom, y_bottom):
+    """Return dx/dy of an edge from its upper end to its lower end (0 when horizontal)."""
+    if y_bottom == y_top:
+        return 0.0
+    return (x_bottom - x_top) / (y_bottom - y_top)
 
 
 @njit(inline="always")
@@ -221,13 +226,12 @@ def scanline_span(record, y, width):
     (v1, v2) spans y; a horizontal edge is never active.
     """
     x0, y0 = record[SORTED_XY], record[SORTED_XY + 1]
-    x1, y1 = record[SORTED_XY + 2], record[SORTED_XY + 3]
-    x2, y2 = record[SORTED_XY + 4], record[SORTED_XY + 5]
-    x_long = _edge_x(x0, y0, x2, y2, y)
-    if y < y1:
-        x_short = _edge_x(x0, y0, x1, y1, y)
+    x_long = x0 + (y - y0) * record[SLOPES]
+    if y < record[SORTED_XY + 3]:
+        x_short = x0 + (y - y0) * record[SLOPES + 1]
     else:
-        x_short = _edge_x(x1, y1, x2, y2, y)
+        x1, y1 = record[SORTED_XY + 2], record[SORTED_XY + 3]
+        x_short = x1 + (y - y1) * record[SLOPES + 2]
     x_left = min(x_long, x_short)
     x_right = max(x_long, x_short)
     first = max(math.ceil(x_left - 0.5), 0.0)
@@ -297,8 +301,8 @@ def perspective_weights(record, x, y):
     t0 = (1.0 - s1 - s2) * record[VERTEX_INVW]
     t1 = s1 * record[VERTEX_INVW + 1]
     t2 = s2 * record[VERTEX_INVW + 2]
-    total = t0 + t1 + t2
-    return t0 / total, t1 / total, t2 / total
+    scale = 1.0 / (t0 + t1 + t2)
+    return t0 * scale, t1 * scale, t2 * scale
 
 
 @njit(parallel=True)
@@ -345,6 +349,12 @@ def shade_points(points, normals, flip, owner, materials, lights, ambient, eye, 
 
 
 @njit(inline="always")
+def _mix(attributes, a, b, c, w0, w1, w2, column):
+    """Weighted sum of one attribute column over a triangle's vertices a, b, c."""
+    return w0 * attributes[a, column] + w1 * attributes[b, column] + w2 * attributes[c, column]
+
+
+@njit(inline="always")
 def _clamp01(value):
     return min(max(value, 0.0), 1.0)
 
@@ -352,6 +362,7 @@ def _clamp01(value):
 @njit(parallel=True)
 def shade_deferred(
     triangle_id,
+    inv_depth,
     setup,
     triangles,
     attributes,
@@ -363,12 +374,17 @@ def shade_deferred(
     eye,
     mode,
     blinn,
+    background,
     rgb,
+    depth,
+    object_id,
 ):
-    """Shade every drawn pixel once, after visibility is resolved; write clamped RGB (H, W, 3).
+    """Shade every drawn pixel once, after visibility is resolved, and fill the output buffers.
 
-    ``triangle_info`` (T, 2) int: the object index (into ``materials``) and a flip flag (1 when
-    the face is seen from behind, so its normals are turned towards the viewer).
+    Writes clamped RGB (H, W, 3) (``background`` where nothing was drawn), the view-axis
+    depth (H, W) (``inf`` there) and the object id (H, W) (-1 there). ``triangle_info`` (T, 2)
+    int: the object index (into ``materials``) and a flip flag (1 when the face is seen from
+    behind, so its normals are turned towards the viewer).
     """
     height, width = triangle_id.shape
     for j in prange(height):
@@ -376,34 +392,37 @@ def shade_deferred(
         for i in range(width):
             t = triangle_id[j, i]
             if t < 0:
+                for channel in range(3):
+                    rgb[j, i, channel] = background[channel]
+                depth[j, i] = np.inf
+                object_id[j, i] = -1
                 continue
+            depth[j, i] = 1.0 / inv_depth[j, i]
+            object_id[j, i] = triangle_info[t, 0]
             if mode == FLAT:
                 for channel in range(3):
                     rgb[j, i, channel] = _clamp01(flat_colors[t, channel])
                 continue
             b0, b1, b2 = perspective_weights(setup[t], i + 0.5, j + 0.5)
-            va = attributes[triangles[t, 0]]
-            vb = attributes[triangles[t, 1]]
-            vc = attributes[triangles[t, 2]]
+            a, b, c = triangles[t, 0], triangles[t, 1], triangles[t, 2]
             if mode == GOURAUD:
                 first = BACK_COLOR if triangle_info[t, 1] else COLOR
-                for channel in range(first, first + 3):
-                    value = b0 * va[channel] + b1 * vb[channel] + b2 * vc[channel]
-                    rgb[j, i, channel - first] = _clamp01(value)
+                for channel in range(3):
+                    value = _mix(attributes, a, b, c, b0, b1, b2, first + channel)
+                    rgb[j, i, channel] = _clamp01(value)
                 continue
-            px = b0 * va[POSITION] + b1 * vb[POSITION] + b2 * vc[POSITION]
-            py = b0 * va[POSITION + 1] + b1 * vb[POSITION + 1] + b2 * vc[POSITION + 1]
-            pz = b0 * va[POSITION + 2] + b1 * vb[POSITION + 2] + b2 * vc[POSITION + 2]
-            nx = b0 * va[NORMAL] + b1 * vb[NORMAL] + b2 * vc[NORMAL]
-            ny = b0 * va[NORMAL + 1] + b1 * vb[NORMAL + 1] + b2 * vc[NORMAL + 1]
-            nz = b0 * va[NORMAL + 2] + b1 * vb[NORMAL + 2] + b2 * vc[NORMAL + 2]
+            px = _mix(attributes, a, b, c, b0, b1, b2, POSITION)
+            py = _mix(attributes, a, b, c, b0, b1, b2, POSITION + 1)
+            pz = _mix(attributes, a, b, c, b0, b1, b2, POSITION + 2)
+            nx = _mix(attributes, a, b, c, b0, b1, b2, NORMAL)
+            ny = _mix(attributes, a, b, c, b0, b1, b2, NORMAL + 1)
+            nz = _mix(attributes, a, b, c, b0, b1, b2, NORMAL + 2)
             length = math.sqrt(nx * nx + ny * ny + nz * nz)
             if length > 0.0:
-                if triangle_info[t, 1]:
-                    length = -length
-                nx /= length
-                ny /= length
-                nz /= length
+                scale = (-1.0 if triangle_info[t, 1] else 1.0) / length
+                nx *= scale
+                ny *= scale
+                nz *= scale
             shade_point(
                 px,
                 py,
@@ -454,8 +473,11 @@ def warmup() -> None:
         np.zeros(3, np.intp), material, lights, np.full(3, 0.1), np.zeros(3), False,
         np.empty((3, 3)),
     )
+    depth = np.empty((8, 8), dtype=np.float32)
+    object_id = np.empty((8, 8), dtype=np.int32)
     for mode in (FLAT, GOURAUD, PHONG):
         shade_deferred(
-            triangle_id, setup, triangles, attributes, info, np.ones((1, 3)), material,
-            lights, np.full(3, 0.1), np.array([0.0, 0.0, 5.0]), mode, False, rgb,
+            triangle_id, inv_depth, setup, triangles, attributes, info, np.ones((1, 3)),
+            material, lights, np.full(3, 0.1), np.array([0.0, 0.0, 5.0]), mode, False,
+            np.zeros(3), rgb, depth, object_id,
         )

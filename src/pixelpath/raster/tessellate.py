@@ -14,6 +14,8 @@ from __future__ import annotations
 
 import collections
 import dataclasses
+import functools
+from collections.abc import Callable
 
 import numpy as np
 
@@ -41,14 +43,14 @@ class SceneGeometry:
         Unit polygon normals (Newell), zero for degenerate polygons.
     polygon_points : (P, 3) float64
         A point of each polygon (its first vertex), for back-face tests.
-    polygon_centroids : (P, 3) float64
-        Vertex averages of the polygons, where flat shading evaluates the model.
     polygon_object : (P,) intp
         Index of the scene object each polygon belongs to.
     vertex_object : (V,) intp
         Index of the scene object each vertex belongs to.
     materials : (O, 8) float64
         Packed material of each object (``Material.packed()``).
+    meshes : tuple of Mesh
+        The mesh of each object.
     """
 
     vertices: np.ndarray
@@ -57,10 +59,15 @@ class SceneGeometry:
     triangle_polygon: np.ndarray
     polygon_normals: np.ndarray
     polygon_points: np.ndarray
-    polygon_centroids: np.ndarray
     polygon_object: np.ndarray
     vertex_object: np.ndarray
     materials: np.ndarray
+    meshes: tuple[Mesh, ...]
+
+    @functools.cached_property
+    def polygon_centroids(self) -> np.ndarray:
+        """(P, 3) vertex average of each polygon, where flat shading evaluates the model."""
+        return _stacked([_centroids(m) for m in self.meshes], (0, 3))
 
 
 def object_mesh(obj: object, camera: Camera) -> Mesh:
@@ -84,22 +91,37 @@ def object_mesh(obj: object, camera: Camera) -> Mesh:
     raise TypeError(f"cannot rasterize a {type(obj).__name__}: expected Sphere, Plane, Box or Mesh")
 
 
-# Recent sphere tessellations by identity (spheres are immutable), so re-rendering a scene
-# does not rebuild them; holding the sphere keeps its id from being reused.
-_SPHERE_MESHES: collections.OrderedDict[int, tuple[Sphere, Mesh]] = collections.OrderedDict()
-_SPHERE_CACHE_SIZE = 64
+class _IdentityCache:
+    """The last few values computed from immutable scene objects, keyed by identity.
+
+    Scene objects are immutable but compare by value (unhashable), so re-rendering a scene
+    looks its derived arrays up by ``id``; holding the object keeps that id from being reused.
+    """
+
+    def __init__(self, size: int) -> None:
+        self._entries: collections.OrderedDict[int, tuple[object, object]] = (
+            collections.OrderedDict()
+        )
+        self._size = size
+
+    def get(self, obj: object, compute: Callable[[object], object]) -> object:
+        hit = self._entries.get(id(obj))
+        if hit is not None and hit[0] is obj:
+            self._entries.move_to_end(id(obj))
+            return hit[1]
+        value = compute(obj)
+        self._entries[id(obj)] = (obj, value)
+        if len(self._entries) > self._size:
+            self._entries.popitem(last=False)
+        return value
+
+
+_SPHERE_MESHES = _IdentityCache(64)
+_FIRST_CORNERS = _IdentityCache(64)
 
 
 def _sphere_mesh(sphere: Sphere) -> Mesh:
-    hit = _SPHERE_MESHES.get(id(sphere))
-    if hit is not None and hit[0] is sphere:
-        _SPHERE_MESHES.move_to_end(id(sphere))
-        return hit[1]
-    mesh = sphere.to_mesh(subdivisions=SPHERE_SUBDIVISIONS)
-    _SPHERE_MESHES[id(sphere)] = (sphere, mesh)
-    if len(_SPHERE_MESHES) > _SPHERE_CACHE_SIZE:
-        _SPHERE_MESHES.popitem(last=False)
-    return mesh
+    return _SPHERE_MESHES.get(sphere, lambda s: s.to_mesh(subdivisions=SPHERE_SUBDIVISIONS))
 
 
 def _plane_grid(plane: Plane, camera: Camera) -> Mesh:
@@ -152,11 +174,11 @@ def scene_geometry(scene: Scene, camera: Camera | None = None) -> SceneGeometry:
         triangles=_stacked([m.triangles + v for m, v, _ in pairs], (0, 3), np.intp),
         triangle_polygon=_stacked([m.triangle_face + p for m, _, p in pairs], (0,), np.intp),
         polygon_normals=_stacked([m.face_normals for m in meshes], (0, 3)),
-        polygon_points=_stacked([_first_corners(m) for m in meshes], (0, 3)),
-        polygon_centroids=_stacked([_centroids(m) for m in meshes], (0, 3)),
+        polygon_points=_stacked([_FIRST_CORNERS.get(m, _first_corners) for m in meshes], (0, 3)),
         polygon_object=np.repeat(objects, polygon_counts),
         vertex_object=np.repeat(objects, vertex_counts),
         materials=_stacked([m.material.packed()[None] for m in meshes], (0, 8)),
+        meshes=tuple(meshes),
     )
 
 
@@ -164,6 +186,8 @@ def _stacked(parts: list[np.ndarray], empty: tuple[int, ...], dtype: type = np.f
     """Concatenate per-object arrays (an empty array of shape ``empty`` when there are none)."""
     if not parts:
         return np.empty(empty, dtype=dtype)
+    if len(parts) == 1:  # one object: its own (read-only) arrays, no copy
+        return np.ascontiguousarray(parts[0], dtype=dtype)
     return np.ascontiguousarray(np.concatenate(parts), dtype=dtype)
 
 
