@@ -78,7 +78,14 @@ class Camera(Record):
 
     @property
     def aspect(self) -> float:
-        """Width over height of the image."""
+        """Width over height of the image.
+
+        Examples
+        --------
+        >>> from pixelpath.scene import Camera
+        >>> Camera(eye=(0, 0, 1), target=(0, 0, 0), width=640, height=480).aspect
+        1.3333333333333333
+        """
         return self.width / self.height
 
     def basis(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

@@ -46,7 +46,14 @@ class Sphere(Record):
         )
 
     def bounds(self) -> np.ndarray:
-        """Return the (2, 3) axis-aligned bounding box ``[minimum, maximum]``."""
+        """Return the (2, 3) axis-aligned bounding box ``[minimum, maximum]``.
+
+        Examples
+        --------
+        >>> from pixelpath.scene import Sphere
+        >>> Sphere((1, 1, 1), 0.5).bounds().tolist()
+        [[0.5, 0.5, 0.5], [1.5, 1.5, 1.5]]
+        """
         return np.stack([self.center - self.radius, self.center + self.radius])
 
     def to_mesh(self, subdivisions: int = 3) -> Mesh:
@@ -84,7 +91,16 @@ class Plane(Record):
         )
 
     def tangents(self) -> tuple[np.ndarray, np.ndarray]:
-        """Return unit vectors (t1, t2) in the plane with ``t1 × t2 = normal``."""
+        """Return unit vectors (t1, t2) in the plane with ``t1 × t2 = normal``.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from pixelpath.scene import Plane
+        >>> t1, t2 = Plane((0, 0, 0), (0, 0, 1)).tangents()
+        >>> np.cross(t1, t2).tolist()
+        [0.0, 0.0, 1.0]
+        """
         n = self.normal
         helper = np.eye(3)[int(np.argmin(np.abs(n)))]  # the axis least aligned with n
         t1 = np.cross(helper, n)
@@ -139,11 +155,26 @@ class Box(Record):
         self._set(minimum=low, maximum=high, material=_material(self.material))
 
     def bounds(self) -> np.ndarray:
-        """Return the (2, 3) axis-aligned bounding box ``[minimum, maximum]``."""
+        """Return the (2, 3) axis-aligned bounding box ``[minimum, maximum]``.
+
+        Examples
+        --------
+        >>> from pixelpath.scene import Box
+        >>> Box((0, 0, 0), (1, 2, 3)).bounds().tolist()
+        [[0.0, 0.0, 0.0], [1.0, 2.0, 3.0]]
+        """
         return np.stack([self.minimum, self.maximum])
 
     def to_mesh(self) -> Mesh:
-        """Return the 6 outward quads (24 vertices, so each face has its own flat normal)."""
+        """Return the 6 outward quads (24 vertices, so each face has its own flat normal).
+
+        Examples
+        --------
+        >>> from pixelpath.scene import Box
+        >>> mesh = Box((0, 0, 0), (1, 1, 1)).to_mesh()
+        >>> len(mesh.vertices), mesh.face_normals[0].tolist()
+        (24, [1.0, 0.0, 0.0])
+        """
         center = (self.minimum + self.maximum) / 2.0
         half = (self.maximum - self.minimum) / 2.0
         corners, normals = [], []

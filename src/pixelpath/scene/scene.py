@@ -130,6 +130,14 @@ class Scene(Record):
         ------
         ValueError
             When the scene has no bounded object.
+
+        Examples
+        --------
+        >>> from pixelpath.scene import Box, Camera, Plane, Scene
+        >>> camera = Camera(eye=(0, 0, 9), target=(0, 0, 0))
+        >>> floor = Plane((0, 0, 0), (0, 1, 0))
+        >>> Scene(camera, [floor, Box((0, 0, 0), (1, 1, 1))]).bounds().tolist()
+        [[0.0, 0.0, 0.0], [1.0, 1.0, 1.0]]
         """
         boxes = [obj.bounds() for obj in self.objects if not isinstance(obj, Plane)]
         if not boxes:
