@@ -52,7 +52,7 @@ KeyPath = tuple[str | int, ...]
 
 
 def load_scene(path: str | Path) -> Scene:
-    """Read a TOML scene file; mesh paths in it are relative to the file's folder.
+    r"""Read a TOML scene file; mesh paths in it are relative to the file's folder.
 
     Parameters
     ----------
@@ -73,8 +73,15 @@ def load_scene(path: str | Path) -> Scene:
 
     Examples
     --------
-    >>> from pixelpath.scene import bundled_scenes, load_scene
-    >>> scene = load_scene("scene.toml")  # doctest: +SKIP
+    >>> import pathlib, tempfile
+    >>> from pixelpath.scene import load_scene
+    >>> path = pathlib.Path(tempfile.mkdtemp()) / "scene.toml"
+    >>> _ = path.write_text(
+    ...     '[camera]\neye = [0, 0, 5]\ntarget = [0, 0, 0]\n'
+    ...     '[[objects]]\ntype = "sphere"\ncenter = [0, 0, 0]\nradius = 1\n'
+    ... )
+    >>> load_scene(path).objects[0].radius
+    1.0
     """
     path = Path(path)
     if not path.is_file():
