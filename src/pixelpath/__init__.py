@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any
 
 __version__ = "0.1.0"
 
-_SUBMODULES = ("color", "clip", "lighting", "scene", "raster", "hsr", "raytrace", "io")
+_SUBMODULES = ("color", "clip", "lighting", "scene", "raster", "hsr", "io")
 
 # Public name -> module that defines it, imported on first access.
 _LAZY_NAMES = {
@@ -43,10 +43,31 @@ _KERNEL_MODULES = (
     "pixelpath.raster._kernels",
 )
 
-__all__ = [*_SUBMODULES, *_LAZY_NAMES, "warmup"]
+__all__ = [
+    "Box",
+    "Camera",
+    "DirectionalLight",
+    "Image",
+    "Material",
+    "Mesh",
+    "Plane",
+    "PointLight",
+    "Scene",
+    "Sphere",
+    "clip",
+    "color",
+    "hsr",
+    "io",
+    "lighting",
+    "load_scene",
+    "raster",
+    "render",
+    "scene",
+    "warmup",
+]
 
 if TYPE_CHECKING:
-    from pixelpath import clip, color, hsr, io, lighting, raster, raytrace, scene
+    from pixelpath import clip, color, hsr, io, lighting, raster, scene
     from pixelpath.image import Image
     from pixelpath.renderer import render
     from pixelpath.scene import (

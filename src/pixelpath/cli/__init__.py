@@ -66,7 +66,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         return int(args.run(args) or 0)
     except (CommandError, ValueError, TypeError, FileNotFoundError) as exc:
-        error_console().print(f"[bold red]pixelpath {args.command}: error:[/] {exc}", highlight=False)
+        error_console().print(f"[bold red]pixelpath {args.command}: error:[/] {exc}")
         return 2
     except KeyboardInterrupt:
         return 130

@@ -47,7 +47,9 @@ def error_console() -> Console:
 
 
 @contextlib.contextmanager
-def progress(description: str, total: int, *, quiet: bool = False) -> Iterator[Callable[[int], None]]:
+def progress(
+    description: str, total: int, *, quiet: bool = False
+) -> Iterator[Callable[[int], None]]:
     """Show a progress bar on standard error while work runs; yield an ``advance(n)`` callable.
 
     The bar is drawn only on a terminal and never when ``quiet`` is set, so logs and CI output
