@@ -10,8 +10,14 @@ from clip_strategies import convex_polygons, star_polygons
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from pixelpath.clip import Rect, ZeroWidthBridgeWarning, clip_flat, clip_polygons, sutherland_hodgman
-from pixelpath.clip import _kernels
+from pixelpath.clip import (
+    Rect,
+    ZeroWidthBridgeWarning,
+    _kernels,
+    clip_flat,
+    clip_polygons,
+    sutherland_hodgman,
+)
 
 WINDOW = Rect(-0.5, -0.4, 0.6, 0.5)
 

@@ -185,6 +185,9 @@ def _scan_bridges(poly, m, table, out):
     count = 0
     for k in range(table.shape[0]):
         row = table[k]
+        # Along a slanted edge (positions in units of its length) a rounding-sized overlap is
+        # no bridge: clipping a clipped polygon again can wiggle a vertex by an ulp.
+        shortest = ON_EDGE_RTOL if row[0] == EDGE else 0.0
         for i in range(m):
             t0, t1, on = _edge_on_boundary(poly, m, i, row)
             if not on:
@@ -195,7 +198,7 @@ def _scan_bridges(poly, m, table, out):
                     continue
                 lo = max(min(t0, t1), min(u0, u1))
                 hi = min(max(t0, t1), max(u0, u1))
-                if hi > lo:
+                if hi - lo > shortest:
                     if count < out.shape[0]:
                         _boundary_point(row, lo, out[count, 0])
                         _boundary_point(row, hi, out[count, 1])

@@ -46,7 +46,9 @@ def distinct_ring(points: np.ndarray, name: str) -> np.ndarray:
     repeats = np.all(points == np.roll(points, 1, axis=0), axis=1)
     ring = points[~repeats] if not repeats.all() else points[:1]
     if len(np.unique(ring, axis=0)) < 3:
-        raise ValueError(f"{name} needs at least 3 distinct vertices, got {len(ring)}: {ring.tolist()}")
+        raise ValueError(
+            f"{name} needs at least 3 distinct vertices, got {len(ring)}: {ring.tolist()}"
+        )
     return np.ascontiguousarray(ring)
 
 

@@ -9,6 +9,7 @@ face that takes and returns a list of ``(Ni, 2)`` arrays. Each polygon is clippe
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Sequence
 
 import numpy as np
@@ -104,15 +105,16 @@ def clip_polygons(polygons: Sequence[np.ndarray], window: object) -> list[np.nda
     --------
     >>> from pixelpath.clip import Rect, clip_polygons
     >>> squares = [[(1, 1), (9, 1), (9, 7), (1, 7)], [(3, 3), (4, 3), (4, 4), (3, 4)]]
-    >>> [p.tolist() for p in clip_polygons(squares, Rect(2, 2, 8, 6))]
-    [[[2.0, 6.0], [2.0, 2.0], [8.0, 2.0], [8.0, 6.0]], [[3.0, 3.0], [4.0, 3.0], [4.0, 4.0], [3.0, 4.0]]]
+    >>> for clipped in clip_polygons(squares, Rect(2, 2, 8, 6)):
+    ...     print(clipped.tolist())
+    [[2.0, 6.0], [2.0, 2.0], [8.0, 2.0], [8.0, 6.0]]
+    [[3.0, 3.0], [4.0, 3.0], [4.0, 4.0], [3.0, 4.0]]
     """
     if len(polygons) == 0:
         return []
     coords, offsets = _flatten(polygons)
     out, out_offsets = clip_flat(coords, offsets, window)
-    ends = out_offsets.tolist()
-    return [out[a:b] for a, b in zip(ends[:-1], ends[1:], strict=True)]
+    return [out[a:b] for a, b in itertools.pairwise(out_offsets.tolist())]
 
 
 def _flatten(polygons: Sequence[np.ndarray]) -> tuple[np.ndarray, np.ndarray]:

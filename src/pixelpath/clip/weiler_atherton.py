@@ -30,6 +30,7 @@ rejected with a ``ValueError`` naming the two edges that meet.
 
 from __future__ import annotations
 
+import itertools
 from fractions import Fraction
 
 import numpy as np
@@ -71,8 +72,10 @@ def weiler_atherton(subject: np.ndarray, window: object) -> list[np.ndarray]:
     --------
     >>> from pixelpath.clip import Rect, weiler_atherton
     >>> notched = [(0, 0), (6, 0), (6, 6), (0, 6), (0, 4), (4, 4), (4, 2), (0, 2)]
-    >>> [piece.tolist() for piece in weiler_atherton(notched, Rect(-1, -1, 3, 7))]
-    [[[0.0, 0.0], [3.0, 0.0], [3.0, 2.0], [0.0, 2.0]], [[0.0, 4.0], [3.0, 4.0], [3.0, 6.0], [0.0, 6.0]]]
+    >>> for piece in weiler_atherton(notched, Rect(-1, -1, 3, 7)):
+    ...     print(piece.tolist())
+    [[0.0, 0.0], [3.0, 0.0], [3.0, 2.0], [0.0, 2.0]]
+    [[0.0, 4.0], [3.0, 4.0], [3.0, 6.0], [0.0, 6.0]]
     """
     if isinstance(window, (Rect, ConvexWindow)):
         window = window.vertices
@@ -190,7 +193,7 @@ def _split(ring: list[Point], cuts: list[set[Fraction]]) -> list[Segment]:
     pieces = []
     for edge, params in zip(_edges(ring), cuts, strict=True):
         points = [edge[0], *(_along(edge, t) for t in sorted(params)), edge[1]]
-        pieces.extend(zip(points[:-1], points[1:], strict=True))
+        pieces.extend(itertools.pairwise(points))
     return pieces
 
 
@@ -264,7 +267,7 @@ def _link(pieces: list[Segment]) -> list[list[Point]]:
 
 
 def _next_piece(pieces: list[Segment], k: int, candidates: list[int]) -> int:
-    """The candidate reached first turning clockwise from the reverse of piece ``k``."""
+    """Return the candidate reached first turning clockwise from the reverse of piece ``k``."""
     start, end = pieces[k]
     back = _sub(start, end)
     best, best_key = -1, None

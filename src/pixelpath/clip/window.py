@@ -57,7 +57,8 @@ class Rect:
     def __post_init__(self) -> None:
         for name in ("xmin", "ymin", "xmax", "ymax"):
             value = getattr(self, name)
-            if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
+            real = isinstance(value, (int, float, np.integer, np.floating))
+            if isinstance(value, bool) or not real:
                 raise TypeError(f"Rect: {name} must be a real number, got {type(value).__name__}")
             if not math.isfinite(value):
                 raise ValueError(f"Rect: {name} must be finite, got {value}")
