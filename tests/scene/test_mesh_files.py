@@ -136,3 +136,46 @@ def test_obj_with_several_objects_keeps_each_face_in_place(tmp_path):
         [[0, 0, 0], [0, 0, 1], [1, 0, 0]],
         [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]],
     ]
+
+
+def test_coincident_vertices_are_merged_when_the_file_has_no_normals(tmp_path):
+    # Two triangles folded along the x axis, each with its own copy of the shared edge.
+    path = tmp_path / "seam.obj"
+    path.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 0 0\nv 0 0 0\nv 0 0 1\nf 1 2 3\nf 4 5 6\n")
+    mesh = Mesh.load(path)
+    np.testing.assert_array_equal(mesh.vertices, [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]])
+    assert mesh.faces == [[0, 1, 2], [1, 0, 3]]
+    # (1,0,0), (0,0,0), (0,0,1) faces +y: (-1,0,0) x (-1,0,1) = (0,1,0). The shared edge's
+    # normal is the average of +z and +y (equal areas).
+    np.testing.assert_allclose(mesh.vertex_normals[0], [0, np.sqrt(0.5), np.sqrt(0.5)])
+
+
+def test_vertices_with_file_normals_are_kept_apart(tmp_path):
+    path = tmp_path / "crease.obj"
+    path.write_text(
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 0 0\nv 0 0 0\nv 0 0 1\n"
+        "vn 0 0 1\nvn 0 0 1\nvn 0 0 1\nvn 0 -1 0\nvn 0 -1 0\nvn 0 -1 0\n"
+        "f 1//1 2//2 3//3\nf 4//4 5//5 6//6\n"
+    )
+    mesh = Mesh.load(path)
+    assert len(mesh.vertices) == 6
+    np.testing.assert_allclose(mesh.vertex_normals[[0, 4]], [[0, 0, 1], [0, -1, 0]])
+
+
+@pytest.mark.parametrize(
+    "name", ["suzanne.obj", "cow.obj", "spot.obj", "teapot.obj", "stanford-bunny.obj"]
+)
+def test_shared_meshes_keep_every_face_and_position(shared_mesh, name):
+    path = shared_mesh(name)
+    lines = path.read_text().splitlines()
+    positions = np.array([line.split()[1:4] for line in lines if line.startswith("v ")], float)
+    face_count = sum(line.startswith("f ") for line in lines)
+    has_normals = any(line.startswith("vn ") for line in lines)
+    mesh = Mesh.load(path)
+    assert mesh.face_count == face_count
+    # positions are merged only when the file brings no normals
+    expected = len(positions) if has_normals else len(np.unique(positions, axis=0))
+    assert len(mesh.vertices) == expected
+    np.testing.assert_allclose(mesh.bounds(), [positions.min(0), positions.max(0)])
+    used = np.unique(mesh.face_indices)  # the bunny has 1113 vertices no face uses
+    np.testing.assert_allclose(np.linalg.norm(mesh.vertex_normals[used], axis=1), 1.0, atol=1e-12)

@@ -14,9 +14,11 @@ trimesh does the parsing. Its loaders triangulate polygons in two places, which 
   materials) are joined piece by piece, each keeping whole faces only when they are all the
   same size.
 
-STL holds only triangles, each with its own three corners; coincident corners are merged so that
-vertex normals come out smooth. Normals stored in the file (OBJ ``vn``, PLY ``nx ny nz``) are
-returned when there is one per vertex.
+Normals stored in the file (OBJ ``vn``, PLY ``nx ny nz``) are returned when there is one per
+vertex. Files without them get their coincident vertices merged (keeping the order of first
+appearance), so that area-weighted vertex normals are smooth across seams: STL stores each
+triangle's corners separately, and some OBJ files (the Utah teapot) repeat vertices along patch
+borders.
 """
 
 from __future__ import annotations
@@ -76,8 +78,25 @@ def read_mesh(path: str | Path) -> tuple[np.ndarray, list[np.ndarray] | np.ndarr
         raise ValueError(f"{path}: {reason} ({type(exc).__name__}: {exc})") from None
     if len(faces) == 0:
         raise ValueError(f"{path}: the file has no faces (an empty mesh or a point cloud)")
-    normals = None if normals is None or np.shape(normals) != np.shape(vertices) else normals
-    return np.asarray(vertices, dtype=np.float64), faces, normals
+    vertices = np.asarray(vertices, dtype=np.float64)
+    if normals is None or np.shape(normals) != vertices.shape:
+        # Without normals in the file, corners at one position are one vertex, so that
+        # area-weighted normals are smooth across seams (trimesh's default does the same).
+        return *_merge_coincident(vertices, faces), None
+    return vertices, faces, normals
+
+
+def _merge_coincident(vertices: np.ndarray, faces: Any) -> tuple[np.ndarray, Any]:
+    """Join vertices with equal coordinates, keeping the order of first appearance."""
+    _, first, inverse = np.unique(vertices, axis=0, return_index=True, return_inverse=True)
+    if len(first) == len(vertices):
+        return vertices, faces
+    rank = np.empty(len(first), dtype=np.intp)
+    rank[np.argsort(first)] = np.arange(len(first))
+    remap = rank[inverse.reshape(-1)]
+    if isinstance(faces, np.ndarray):
+        return vertices[np.sort(first)], remap[faces]
+    return vertices[np.sort(first)], [remap[np.asarray(face)] for face in faces]
 
 
 def _read_obj(path: Path) -> tuple[np.ndarray, Any, Any]:
@@ -149,9 +168,7 @@ def _read_stl(path: Path) -> tuple[np.ndarray, Any, Any]:
 
     with path.open("rb") as file:
         loaded = load_stl(file)
-    corners = np.asarray(loaded["vertices"], dtype=np.float64)
-    vertices, merged = np.unique(corners, axis=0, return_inverse=True)
-    return vertices, merged.reshape(-1)[np.asarray(loaded["faces"])], None
+    return loaded["vertices"], np.asarray(loaded["faces"]), None
 
 
 def _concatenate(parts: list[dict[str, Any]]) -> tuple[np.ndarray, list[np.ndarray], Any]:
