@@ -144,6 +144,10 @@ def test_primitive_validation():
         icosphere(8)
     with pytest.raises(ValueError, match="minor_radius must be less than major_radius"):
         torus(1.0, 1.0)
+    with pytest.raises(ValueError, match="major_segments must be between 3 and 1024, got 5000"):
+        torus(major_segments=5000)
+    with pytest.raises(TypeError, match="minor_segments must be an int"):
+        torus(minor_segments=8.0)
     with pytest.raises(TypeError, match="material must be a Material"):
         Sphere((0, 0, 0), 1, material={"color": (1, 0, 0)})
 

@@ -17,6 +17,8 @@ from pixelpath.scene.mesh import Mesh
 
 # Maximum subdivision level: level 7 already has 163842 vertices and 327680 triangles.
 MAX_SUBDIVISIONS = 7
+# Maximum torus segments each way: 1024 × 1024 is a million quads.
+MAX_SEGMENTS = 1024
 _GOLDEN = (1.0 + math.sqrt(5.0)) / 2.0
 _ICOSAHEDRON_VERTICES = np.array(
     [
@@ -102,8 +104,8 @@ def torus(
             f"minor_radius must be less than major_radius, got {small} >= {big} "
             "(the tube would pass through the axis)"
         )
-    around = _count(major_segments, "major_segments", 3, 4096)
-    tube = _count(minor_segments, "minor_segments", 3, 4096)
+    around = _count(major_segments, "major_segments", 3, MAX_SEGMENTS)
+    tube = _count(minor_segments, "minor_segments", 3, MAX_SEGMENTS)
     phi = 2.0 * np.pi * np.arange(around)[:, None] / around
     theta = 2.0 * np.pi * np.arange(tube)[None, :] / tube
     cos_t, sin_t = np.cos(theta), np.sin(theta)
