@@ -1,0 +1,127 @@
+"""``pixelpath render`` and ``pixelpath demo``: files written, options, clean errors."""
+
+from __future__ import annotations
+
+import textwrap
+
+import numpy as np
+import pytest
+
+from pixelpath.cli import main
+from pixelpath.io import read_image
+from pixelpath.scene import bundled_scenes
+
+SCENE = textwrap.dedent(
+    """\
+    background = [0, 0, 0.5]
+
+    [camera]
+    eye = [0, 0, 5]
+    target = [0, 0, 0]
+    width = 24
+    height = 16
+
+    [[lights]]
+    type = "point"
+    position = [2, 3, 4]
+
+    [[objects]]
+    type = "box"
+    minimum = [-1, -1, -1]
+    maximum = [1, 1, 1]
+    """
+)
+
+
+@pytest.fixture
+def scene_file(tmp_path):
+    path = tmp_path / "scene.toml"
+    path.write_text(SCENE)
+    return path
+
+
+def test_render_writes_the_image(scene_file, tmp_path, capsys):
+    out = tmp_path / "out.png"
+    assert main(["render", str(scene_file), "-o", str(out)]) == 0
+    image = read_image(out)
+    assert image.shape == (16, 24, 3)
+    assert image[0, 0].tolist() == pytest.approx([0, 0, 128 / 255])  # background
+    assert image[8, 12].sum() > 0
+    assert "wrote" in capsys.readouterr().out
+
+
+def test_render_options(scene_file, tmp_path):
+    out = tmp_path / "flat.png"
+    argv = ["render", str(scene_file), "-o", str(out), "--method", "zbuffer",
+            "--shading", "flat", "--size", "30x20", "--ssaa", "2", "--no-cull", "-q"]
+    assert main(argv) == 0
+    image = read_image(out)
+    assert image.shape == (20, 30, 3)
+    # The box's front face is flat-shaded: one value over its interior.
+    face = image[8:12, 13:17]
+    assert np.all(face == face[0, 0])
+
+
+def test_render_a_bundled_scene_by_name(tmp_path):
+    name = sorted(bundled_scenes())[0]
+    out = tmp_path / "b.png"
+    assert main(["render", name, "-o", str(out), "--size", "32x20", "-q"]) == 0
+    assert read_image(out).shape == (20, 32, 3)
+
+
+@pytest.mark.parametrize(
+    ("extra", "message"),
+    [
+        (["--size", "big"], "--size"),
+        (["--size", "0x10"], "--size"),
+        (["--method", "painter"], "not implemented"),
+        (["--ssaa", "0"], "ssaa"),
+    ],
+)
+def test_render_bad_options_exit_2(scene_file, tmp_path, capsys, extra, message):
+    assert main(["render", str(scene_file), "-o", str(tmp_path / "x.png"), *extra]) == 2
+    assert message in capsys.readouterr().err
+    assert not (tmp_path / "x.png").exists()
+
+
+def test_render_load_errors_name_the_file(tmp_path, capsys):
+    broken = tmp_path / "broken.toml"
+    broken.write_text(SCENE.replace("minimum", "minimun"))
+    assert main(["render", str(broken), "-o", str(tmp_path / "x.png")]) == 2
+    err = capsys.readouterr().err
+    assert "broken.toml" in err and "minimun" in err
+    assert main(["render", str(tmp_path / "none.toml"), "-o", str(tmp_path / "x.png")]) == 2
+    assert "not found" in capsys.readouterr().err
+
+
+def test_render_into_a_missing_folder_fails_cleanly(scene_file, tmp_path, capsys):
+    assert main(["render", str(scene_file), "-o", str(tmp_path / "no" / "x.png")]) == 2
+    assert "does not exist" in capsys.readouterr().err
+
+
+def test_demo_renders_every_bundled_scene(tmp_path, capsys):
+    folder = tmp_path / "demo"
+    assert main(["demo", "-o", str(folder), "--size", "32x20", "--ssaa", "1", "-q"]) == 0
+    written = sorted(p.name for p in folder.iterdir())
+    assert written == sorted(f"{name}.png" for name in bundled_scenes())
+    assert len(written) >= 2
+    for path in folder.iterdir():
+        assert read_image(path).shape == (20, 32, 3)
+    out = capsys.readouterr().out
+    assert all(name in out for name in written)
+
+
+def test_demo_all_shadings(tmp_path):
+    folder = tmp_path / "all"
+    assert main(["demo", "-o", str(folder), "--shading", "all", "--size", "16x12",
+                 "--ssaa", "1", "-q"]) == 0
+    names = {p.name for p in folder.iterdir()}
+    for scene in bundled_scenes():
+        assert {f"{scene}-{s}.png" for s in ("flat", "gouraud", "phong")} <= names
+
+
+def test_demo_output_must_be_a_folder(tmp_path, capsys):
+    file = tmp_path / "file"
+    file.write_text("")
+    assert main(["demo", "-o", str(file)]) == 2
+    assert "folder" in capsys.readouterr().err
