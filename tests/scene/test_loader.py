@@ -361,3 +361,13 @@ def test_bundled_scenes_load():
     for name, path in scenes.items():
         scene = load_scene(path)
         assert scene.objects, f"bundled scene {name} has no objects"
+
+
+def test_bundled_scenes_follow_the_published_schema():
+    jsonschema = pytest.importorskip("jsonschema")
+    import tomllib
+
+    from pixelpath.scene.schema import scene_json_schema
+
+    for path in bundled_scenes().values():
+        jsonschema.validate(tomllib.loads(path.read_text()), scene_json_schema())
