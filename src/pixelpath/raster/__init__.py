@@ -14,8 +14,8 @@ Examples
 >>> import numpy as np
 >>> from pixelpath.raster import scan_convert
 >>> ids = scan_convert(np.array([[0.0, 0.0], [4.0, 0.0], [0.0, 4.0]]), [[0, 1, 2]], 4, 4)
->>> (ids == 0).sum()  # the pixel centres strictly inside or on a top/left edge
-np.int64(6)
+>>> int((ids == 0).sum())  # the pixel centres strictly inside or on a top/left edge
+6
 """
 
 from pixelpath.raster.frustum import clip_to_frustum

@@ -46,7 +46,7 @@ def world_to_clip(points: np.ndarray, camera: Camera) -> np.ndarray:
     >>> from pixelpath.scene import Camera
     >>> from pixelpath.raster import world_to_clip
     >>> cam = Camera(eye=(0, 0, 5), target=(0, 0, 0), fov=90, width=2, height=2)
-    >>> world_to_clip([[0.0, 0.0, 0.0]], cam)[0, 3]  # the target is 5 units in front of the eye
+    >>> float(world_to_clip([[0.0, 0.0, 0.0]], cam)[0, 3])  # the target is 5 units ahead
     5.0
     """
     points = _points(points, 3, "points")
