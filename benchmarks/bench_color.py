@@ -53,7 +53,10 @@ def bench_dtype(dtype, repeat, cv2, skcolor):
     copy_dst = np.empty_like(image)
     rows.append(("np.copyto (floor)", "", best_ms(lambda: np.copyto(copy_dst, image), repeat)))
 
-    buffers = {3: np.empty((HEIGHT, WIDTH, 3), result_dtype), 4: np.empty((HEIGHT, WIDTH, 4), result_dtype)}
+    buffers = {
+        3: np.empty((HEIGHT, WIDTH, 3), result_dtype),
+        4: np.empty((HEIGHT, WIDTH, 4), result_dtype),
+    }
     conversions = [
         ("rgb_to_hsv", color.rgb_to_hsv, 3),
         ("rgb_to_hsl", color.rgb_to_hsl, 3),
@@ -68,21 +71,50 @@ def bench_dtype(dtype, repeat, cv2, skcolor):
         rows.append((f"pixelpath {name}", f"new {new:.1f} / out= {reuse:.1f}", reuse))
     hsv = color.rgb_to_hsv(image)
     hsl = color.rgb_to_hsl(image)
-    for name, fn, values in (("hsv_to_rgb", color.hsv_to_rgb, hsv), ("hsl_to_rgb", color.hsl_to_rgb, hsl)):
+    for name, fn, values in (
+        ("hsv_to_rgb", color.hsv_to_rgb, hsv),
+        ("hsl_to_rgb", color.hsl_to_rgb, hsl),
+    ):
         new = best_ms(lambda fn=fn, v=values: fn(v), repeat)
         reuse = best_ms(lambda fn=fn, v=values: fn(v, out=buffers[3]), repeat)
         rows.append((f"pixelpath {name}", f"new {new:.1f} / out= {reuse:.1f}", reuse))
 
     if cv2 is not None:
         cv_dst = np.empty_like(image)
-        rows.append(("OpenCV cvtColor RGB2HSV", "dst=", best_ms(lambda: cv2.cvtColor(image, cv2.COLOR_RGB2HSV, dst=cv_dst), repeat)))
-        rows.append(("OpenCV cvtColor RGB2HLS", "dst=", best_ms(lambda: cv2.cvtColor(image, cv2.COLOR_RGB2HLS, dst=cv_dst), repeat)))
+        rows.append(
+            (
+                "OpenCV cvtColor RGB2HSV",
+                "dst=",
+                best_ms(lambda: cv2.cvtColor(image, cv2.COLOR_RGB2HSV, dst=cv_dst), repeat),
+            )
+        )
+        rows.append(
+            (
+                "OpenCV cvtColor RGB2HLS",
+                "dst=",
+                best_ms(lambda: cv2.cvtColor(image, cv2.COLOR_RGB2HLS, dst=cv_dst), repeat),
+            )
+        )
         cv_hsv = cv2.cvtColor(image, cv2.COLOR_RGB2HSV)
-        rows.append(("OpenCV cvtColor HSV2RGB", "dst=", best_ms(lambda: cv2.cvtColor(cv_hsv, cv2.COLOR_HSV2RGB, dst=cv_dst), repeat)))
-        rows.append(("OpenCV cvtColor RGB2YCrCb", "dst=", best_ms(lambda: cv2.cvtColor(image, cv2.COLOR_RGB2YCrCb, dst=cv_dst), repeat)))
+        rows.append(
+            (
+                "OpenCV cvtColor HSV2RGB",
+                "dst=",
+                best_ms(lambda: cv2.cvtColor(cv_hsv, cv2.COLOR_HSV2RGB, dst=cv_dst), repeat),
+            )
+        )
+        rows.append(
+            (
+                "OpenCV cvtColor RGB2YCrCb",
+                "dst=",
+                best_ms(lambda: cv2.cvtColor(image, cv2.COLOR_RGB2YCrCb, dst=cv_dst), repeat),
+            )
+        )
     if skcolor is not None:
         few = max(1, repeat // 3)
-        rows.append(("scikit-image rgb2hsv", f"best of {few}", best_ms(lambda: skcolor.rgb2hsv(image), few)))
+        rows.append(
+            ("scikit-image rgb2hsv", f"best of {few}", best_ms(lambda: skcolor.rgb2hsv(image), few))
+        )
         rows.append(("scikit-image rgb2yiq", "", best_ms(lambda: skcolor.rgb2yiq(image), few)))
         rows.append(("scikit-image rgb2ycbcr", "", best_ms(lambda: skcolor.rgb2ycbcr(image), few)))
 
@@ -115,8 +147,10 @@ def main():
         skcolor = None
         print("  (scikit-image not installed: pip install '.[bench]' to compare with it)")
 
-    print(f"image {WIDTH}x{HEIGHT}; numba threads {numba.get_num_threads()}"
-          + (f", OpenCV threads {cv2.getNumThreads()}" if cv2 is not None else ""))
+    print(
+        f"image {WIDTH}x{HEIGHT}; numba threads {numba.get_num_threads()}"
+        + (f", OpenCV threads {cv2.getNumThreads()}" if cv2 is not None else "")
+    )
     for dtype in (np.float32, np.uint8):
         print(f"\n{np.dtype(dtype).name} input")
         print(f"  {'conversion':34s} {'ms':>9s}  note")

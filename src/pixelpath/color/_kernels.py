@@ -41,6 +41,7 @@ CMYK_TO_RGB = 6
 
 # Pixels per parallel work item.
 CHUNK = 8192
+_LARGEST = np.finfo(np.float64).max
 
 
 @njit(inline="always")
@@ -54,9 +55,9 @@ def smaller(a, b):
 
 
 @njit(inline="always")
-def not_finite(x):
-    """1 if ``x`` is NaN or ±inf, else 0 (x − x is NaN exactly then)."""
-    return np.int64(x - x != 0.0)
+def not_finite(magnitude):
+    """1 if a sum of magnitudes |a| + |b| + ... is NaN or inf (some term is), else 0."""
+    return np.int64(not magnitude <= _LARGEST)
 
 
 @njit(error_model="numpy")
@@ -70,7 +71,7 @@ def affine_span(src, dst, scale, matrix, offset):
         a = src[3 * i] * scale
         b = src[3 * i + 1] * scale
         c = src[3 * i + 2] * scale
-        bad += not_finite(a + b + c)
+        bad += not_finite(abs(a) + abs(b) + abs(c))
         dst[3 * i] = m00 * a + m01 * b + m02 * c + o0
         dst[3 * i + 1] = m10 * a + m11 * b + m12 * c + o1
         dst[3 * i + 2] = m20 * a + m21 * b + m22 * c + o2
@@ -84,7 +85,7 @@ def rgb_to_hsx_span(src, dst, scale, lightness):
         r = src[3 * i] * scale
         g = src[3 * i + 1] * scale
         b = src[3 * i + 2] * scale
-        bad += not_finite(r + g + b)
+        bad += not_finite(abs(r) + abs(g) + abs(b))
         cmax = larger(larger(r, g), b)
         cmin = smaller(smaller(r, g), b)
         delta = cmax - cmin
@@ -99,10 +100,11 @@ def rgb_to_hsx_span(src, dst, scale, lightness):
         sextant = sextant - 6.0 if sextant >= 6.0 else sextant
         dst[3 * i] = 60.0 * sextant
         if lightness:
-            light = 0.5 * (cmax + cmin)
-            spread = 1.0 - abs(2.0 * light - 1.0)
+            # 1 − |2L − 1| written as min(Cmax + Cmin, 2 − Cmax − Cmin): no cancellation for
+            # dark colours, so S stays within [0, 1] to the last bit.
+            spread = smaller(cmax + cmin, 2.0 - cmax - cmin)
             dst[3 * i + 1] = delta / spread if spread > 0.0 else 0.0
-            dst[3 * i + 2] = light
+            dst[3 * i + 2] = 0.5 * (cmax + cmin)
         else:
             dst[3 * i + 1] = delta / cmax if cmax > 0.0 else 0.0
             dst[3 * i + 2] = cmax
@@ -124,7 +126,7 @@ def hsx_to_rgb_span(src, dst, scale, lightness):
         h = src[3 * i] * scale
         s = src[3 * i + 1] * scale
         v = src[3 * i + 2] * scale
-        bad += not_finite(h + s + v)
+        bad += not_finite(abs(h) + abs(s) + abs(v))
         sextant = (h - 360.0 * np.floor(h / 360.0)) / 60.0  # H mod 360: 360 and −60 wrap
         sextant = 0.0 if sextant >= 6.0 else sextant
         if lightness:
@@ -146,7 +148,7 @@ def rgb_to_cmyk_span(src, dst, scale):
         cyan = 1.0 - src[3 * i] * scale
         magenta = 1.0 - src[3 * i + 1] * scale
         yellow = 1.0 - src[3 * i + 2] * scale
-        bad += not_finite(cyan + magenta + yellow)
+        bad += not_finite(abs(cyan) + abs(magenta) + abs(yellow))
         black = smaller(smaller(cyan, magenta), yellow)
         ink = 1.0 - black
         inv = 1.0 / (ink if ink > 0.0 else 1.0)  # pure black: K = 1 and C' = M' = Y' = 0
@@ -165,7 +167,7 @@ def cmyk_to_rgb_span(src, dst, scale):
         m = src[4 * i + 1] * scale
         y = src[4 * i + 2] * scale
         k = src[4 * i + 3] * scale
-        bad += not_finite(c + m + y + k)
+        bad += not_finite(abs(c) + abs(m) + abs(y) + abs(k))
         white = 1.0 - k
         dst[3 * i] = (1.0 - c) * white
         dst[3 * i + 1] = (1.0 - m) * white

@@ -157,16 +157,19 @@ def _apply(conversion: _Conversion, values: ArrayLike, name: str, out: np.ndarra
     src, scale = _prepare(values, name, conversion.src)
     dst_channels = MODELS[conversion.dst]
     result = _prepare_out(out, (*src.shape[:-1], dst_channels), _result_dtype(src))
-    bad = _kernels.convert_pixels(
-        src.reshape(-1),
-        result.reshape(-1),
-        src.shape[-1],
-        dst_channels,
-        scale,
-        getattr(_kernels, conversion.op),
-        conversion.matrix,
-        conversion.offset,
-    )
+    # Non-finite input is counted by the kernel and raised below; errstate keeps the pure-Python
+    # run (NUMBA_DISABLE_JIT=1) from warning on the way, as the compiled run never does.
+    with np.errstate(invalid="ignore", over="ignore"):
+        bad = _kernels.convert_pixels(
+            src.reshape(-1),
+            result.reshape(-1),
+            src.shape[-1],
+            dst_channels,
+            scale,
+            getattr(_kernels, conversion.op),
+            conversion.matrix,
+            conversion.offset,
+        )
     if bad:
         raise ValueError(
             f"{name} has {bad} colour(s) with NaN or infinite components; "
