@@ -52,7 +52,7 @@ def test_results_too_big_for_their_staging_slot_are_clipped_again():
     polygons = [rng.uniform(-1, 1, (n, 2)) for n in (3, 9, 30)]
     coords = np.concatenate(polygons)
     offsets = np.array([0, 3, 12, 42])
-    # slot_scale=0 gives every polygon an empty staging slot: all go through pass 2.
+    # slot_scale=0 gives every polygon an empty staging slot: all are clipped again in pass 3.
     out, out_offsets, status = _kernels.clip_many(coords, offsets, WINDOW.table, 2, 0)
     assert not status.any()
     for i, expected in enumerate(one_by_one(polygons, WINDOW)):
@@ -107,3 +107,17 @@ def test_bad_polygons_are_named_by_index(bad, error, match):
 def test_bad_offsets_are_rejected(offsets, error, match):
     with pytest.raises(error, match=match):
         clip_flat(np.array([(0, 0), (1, 0), (0, 1.0)]), offsets, WINDOW)
+
+
+def test_inside_outside_crossing_and_repeated_vertices_match_one_by_one():
+    polygons = [
+        [(0, 0), (0.1, 0), (0.1, 0.1)],  # inside
+        [(0, 0), (0.1, 0), (0.1, 0), (0.1, 0.1), (0, 0)],  # inside, with repeats
+        [(2, 2), (3, 2), (3, 3)],  # outside
+        [(-1, -1), (1, -1), (1, 1), (-1, 1)],  # covers the window
+        [(0.5, 0), (0.7, 0), (0.7, 0.1), (0.7, 0.1)],  # crosses the right boundary, repeats
+    ]
+    results = clip_polygons(polygons, WINDOW)
+    for got, expected in zip(results, one_by_one(polygons, WINDOW), strict=True):
+        np.testing.assert_array_equal(got, expected)
+    assert [len(r) for r in results] == [3, 3, 0, 4, 4]

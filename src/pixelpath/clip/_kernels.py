@@ -20,6 +20,8 @@ LEFT, RIGHT, BOTTOM, TOP, EDGE = 0, 1, 2, 3, 4
 
 OK, NON_FINITE, TOO_FEW_VERTICES = 0, 1, 2
 
+WHOLLY_OUTSIDE, WHOLLY_INSIDE, STRADDLES = -1, 1, 0
+
 # Relative distance under which a computed vertex counts as lying on a slanted window edge
 # (rectangle boundaries are exact: the notes' formulas put x = xmin exactly).
 ON_EDGE_RTOL = 1e-9
@@ -132,16 +134,15 @@ def _run_stages(xy, table, a, b):
     outputs never do), so it is skipped; one with the box wholly outside leaves nothing.
     """
     n = xy.shape[0]
-    xmin, ymin, xmax, ymax, repeats = _bounds(xy)
+    box = _bounds(xy)
     fresh = True  # the current polygon is still xy itself
     for k in range(table.shape[0]):
         row = table[k]
-        if row[0] != EDGE and not repeats:
-            lo_in, hi_in = inside(row, xmin, ymin), inside(row, xmax, ymax)
-            if lo_in and hi_in:
-                continue
-            if not (lo_in or hi_in):
-                return 0, a, b
+        side = _box_side(row, box)
+        if side == WHOLLY_OUTSIDE:
+            return 0, a, b
+        if side == WHOLLY_INSIDE and not box[4]:
+            continue
         need = n + n // 2 + 1  # a stage emits at most 3 vertices per 2 input vertices
         if a.shape[0] < need:
             a = np.empty((2 * need, 2))
@@ -158,6 +159,30 @@ def _run_stages(xy, table, a, b):
             b = np.empty((2 * n, 2))
         b[:n] = xy
     return n, a, b
+
+
+@njit(inline="always")
+def _box_side(row, box):
+    """Where a bounding box lies for a rectangle boundary (``STRADDLES`` for slanted edges)."""
+    if row[0] == EDGE:
+        return STRADDLES
+    lo_in, hi_in = inside(row, box[0], box[1]), inside(row, box[2], box[3])
+    if lo_in and hi_in:
+        return WHOLLY_INSIDE
+    return STRADDLES if lo_in or hi_in else WHOLLY_OUTSIDE
+
+
+@njit(inline="always")
+def _shortcut(xy, table):
+    """``WHOLLY_OUTSIDE`` (nothing left), ``WHOLLY_INSIDE`` (unchanged) or ``STRADDLES``."""
+    box = _bounds(xy)
+    unchanged = not box[4]
+    for k in range(table.shape[0]):
+        side = _box_side(table[k], box)
+        if side == WHOLLY_OUTSIDE:
+            return WHOLLY_OUTSIDE
+        unchanged = unchanged and side == WHOLLY_INSIDE
+    return WHOLLY_INSIDE if unchanged else STRADDLES
 
 
 @njit(inline="always")
@@ -281,56 +306,61 @@ def trace_stage(src, row):
 
 
 @njit(parallel=True)
-def clip_many(coords, offsets, table, chunks, slot_scale=2):
+def clip_many(coords, offsets, table, chunks, slot_scale=1):
     """Clip every polygon of a flat buffer; return ``(coords, offsets, status)``.
 
     ``chunks`` groups of polygons are shared among the threads (a few per thread balances load).
+    Three parallel passes:
 
-    Pass 1 clips chunks of polygons in parallel, each chunk with its own scratch buffers, and
-    keeps each result in a staging slot of ``slot_scale * (n + K)`` rows (only the rows written
-    are ever touched in memory). Pass 2 packs the results at their final offsets; a result too
-    big for its slot, which needs a pathological subject, is clipped again there.
+    1. check each polygon and sort it by its bounding box: wholly outside a rectangle boundary
+       (nothing left), wholly inside every boundary (unchanged), or to be clipped;
+    2. clip the latter, each chunk with its own scratch buffers, into staging slots of
+       ``slot_scale * (n + K)`` rows given to those polygons only (so little memory is touched);
+    3. pack every result at its final offset; a result too big for its slot, which takes a
+       subject crossing the boundaries many times, is clipped again there.
     """
     count = offsets.shape[0] - 1
-    slot = np.empty(count + 1, dtype=np.intp)
-    slot[0] = 0
-    for i in range(count):
-        slot[i + 1] = slot[i] + slot_scale * (offsets[i + 1] - offsets[i] + table.shape[0])
-    staging = np.empty((slot[count], 2))
-    sizes = np.zeros(count, dtype=np.intp)
-    status = np.zeros(count, dtype=np.intp)
     chunks = max(1, min(count, chunks))
+    status = np.zeros(count, dtype=np.intp)
+    fate = np.empty(count, dtype=np.intp)
     for c in prange(chunks):
-        lo, hi = c * count // chunks, (c + 1) * count // chunks
-        a = np.empty((256, 2))
-        b = np.empty((256, 2))
-        for i in range(lo, hi):
+        for i in range(c * count // chunks, (c + 1) * count // chunks):
             xy = coords[offsets[i] : offsets[i + 1]]
             status[i] = check_subject(xy)
-            if status[i] != OK:
-                continue
-            m, a, b = _run_stages(xy, table, a, b)
-            if m < 3:
-                continue
-            sizes[i] = m
-            if m <= slot[i + 1] - slot[i]:
-                staging[slot[i] : slot[i] + m] = b[:m]
-    out_offsets = np.empty(count + 1, dtype=np.intp)
-    out_offsets[0] = 0
+            fate[i] = _shortcut(xy, table) if status[i] == OK else WHOLLY_OUTSIDE
+    slot = np.zeros(count + 1, dtype=np.intp)
+    for i in range(count):
+        room = offsets[i + 1] - offsets[i] + table.shape[0] if fate[i] == STRADDLES else 0
+        slot[i + 1] = slot[i] + slot_scale * room
+    staging = np.empty((slot[count], 2))
+    sizes = np.zeros(count, dtype=np.intp)
+    for c in prange(chunks):
+        a = np.empty((256, 2))
+        b = np.empty((256, 2))
+        for i in range(c * count // chunks, (c + 1) * count // chunks):
+            if fate[i] == WHOLLY_INSIDE:
+                sizes[i] = offsets[i + 1] - offsets[i]
+            elif fate[i] == STRADDLES:
+                m, a, b = _run_stages(coords[offsets[i] : offsets[i + 1]], table, a, b)
+                sizes[i] = m if m >= 3 else 0
+                if 3 <= m <= slot[i + 1] - slot[i]:
+                    staging[slot[i] : slot[i] + m] = b[:m]
+    out_offsets = np.zeros(count + 1, dtype=np.intp)
     for i in range(count):
         out_offsets[i + 1] = out_offsets[i] + sizes[i]
     out = np.empty((out_offsets[count], 2))
-    for i in prange(count):
-        m = sizes[i]
-        if m == 0:
-            continue
-        if m <= slot[i + 1] - slot[i]:
-            out[out_offsets[i] : out_offsets[i] + m] = staging[slot[i] : slot[i] + m]
-        else:
-            n = offsets[i + 1] - offsets[i]
-            xy = coords[offsets[i] : offsets[i + 1]]
-            m, _, res = _run_stages(xy, table, np.empty((2 * n + 2, 2)), np.empty((2 * n + 2, 2)))
-            out[out_offsets[i] : out_offsets[i] + m] = res[:m]
+    for c in prange(chunks):
+        for i in range(c * count // chunks, (c + 1) * count // chunks):
+            m, start = sizes[i], out_offsets[i]
+            if fate[i] == WHOLLY_INSIDE:
+                out[start : start + m] = coords[offsets[i] : offsets[i + 1]]
+            elif m > slot[i + 1] - slot[i]:
+                xy = coords[offsets[i] : offsets[i + 1]]
+                scratch = 2 * xy.shape[0] + 2
+                m, _, res = _run_stages(xy, table, np.empty((scratch, 2)), np.empty((scratch, 2)))
+                out[start : start + m] = res[:m]
+            elif m > 0:
+                out[start : start + m] = staging[slot[i] : slot[i] + m]
     return out, out_offsets, status
 
 
