@@ -130,7 +130,7 @@ def hsx_to_rgb_span(src, dst, scale, lightness):
         sextant = (h - 360.0 * np.floor(h / 360.0)) / 60.0  # H mod 360: 360 and −60 wrap
         sextant = 0.0 if sextant >= 6.0 else sextant
         if lightness:
-            chroma = (1.0 - abs(2.0 * v - 1.0)) * s
+            chroma = smaller(2.0 * v, 2.0 - 2.0 * v) * s  # (1 − |2L − 1|)·S, no cancellation
             low = v - 0.5 * chroma
         else:
             chroma = v * s
