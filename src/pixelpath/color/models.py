@@ -490,8 +490,8 @@ def yiq_to_rgb(yiq: ArrayLike, *, out: np.ndarray | None = None) -> NDArray[np.f
     Examples
     --------
     >>> from pixelpath.color import yiq_to_rgb
-    >>> [round(v, 6) for v in yiq_to_rgb([0.299, 0.596, 0.211]).tolist()]
-    [1.0, 0.0, 0.0]
+    >>> yiq_to_rgb([0.299, 0.596, 0.211]).round(6) + 0.0  # + 0.0 turns -0.0 into 0.0
+    array([1., 0., 0.])
     """
     return _apply(_TO_RGB["yiq"], yiq, "yiq", out)
 

@@ -1,0 +1,92 @@
+"""The package itself: fast import with nothing compiled, the kernel cache, the command line."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+
+import pytest
+
+import pixelpath
+from pixelpath.cli import COMMANDS, build_parser, main
+
+
+def python(code: str, **env: str) -> str:
+    """Run ``code`` in a fresh interpreter with no cache-directory settings but ``env``."""
+    clean = {
+        k: v for k, v in os.environ.items() if k not in ("NUMBA_CACHE_DIR", "PIXELPATH_CACHE_DIR")
+    }
+    result = subprocess.run(
+        [sys.executable, "-c", code],
+        capture_output=True,
+        text=True,
+        check=True,
+        env={**clean, **env},
+    )
+    return result.stdout.strip()
+
+
+def test_import_compiles_nothing_and_does_not_import_numba():
+    heavy = "('numba', 'llvmlite', 'trimesh')"
+    code = f"import sys, pixelpath; print([m for m in sys.modules if m.startswith({heavy})])"
+    loaded = python(code)
+    assert loaded == "[]"
+
+
+def test_public_names_resolve_lazily():
+    for name in pixelpath.__all__:
+        assert getattr(pixelpath, name) is not None
+    with pytest.raises(AttributeError, match="no attribute 'nope'"):
+        _ = pixelpath.nope
+
+
+def test_kernel_cache_lives_in_the_user_cache_directory(tmp_path):
+    code = "import pixelpath._jit, numba; print(numba.core.config.CACHE_DIR)"
+    env = {
+        k: v for k, v in os.environ.items() if k not in ("NUMBA_CACHE_DIR", "PIXELPATH_CACHE_DIR")
+    }
+    result = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, check=True, env=env
+    )
+    cache = result.stdout.strip()
+    assert "site-packages" not in cache and cache.endswith(os.path.join("pixelpath", "numba"))
+    assert python(code, PIXELPATH_CACHE_DIR=str(tmp_path)) == str(tmp_path / "numba")
+    assert python(code, NUMBA_CACHE_DIR=str(tmp_path)) == str(tmp_path)
+
+
+def test_every_command_is_registered_with_an_example(capsys):
+    parser = build_parser()
+    subparsers = next(a for a in parser._actions if a.dest == "command")
+    assert list(subparsers.choices) == list(COMMANDS)
+    for name in COMMANDS:
+        with pytest.raises(SystemExit) as exit_info:
+            main([name, "--help"])
+        assert exit_info.value.code == 0
+        help_text = capsys.readouterr().out
+        assert f"examples:\n  pixelpath {name}" in help_text
+
+
+def test_top_level_help_and_version(capsys):
+    assert main([]) == 2
+    listing = capsys.readouterr().out
+    assert all(name in listing for name in COMMANDS)
+    with pytest.raises(SystemExit):
+        main(["--version"])
+    assert capsys.readouterr().out.strip() == f"pixelpath {pixelpath.__version__}"
+
+
+def test_python_dash_m_runs_the_cli():
+    result = subprocess.run(
+        [sys.executable, "-m", "pixelpath", "color", "0,0,255", "--to", "hsv"],
+        capture_output=True,
+        text=True,
+        check=True,
+    )
+    assert "240, 1, 1" in result.stdout
+
+
+@pytest.mark.slow
+def test_warmup_compiles_every_kernel_group(capsys):
+    assert main(["warmup"]) == 0
+    assert "warmed up" in capsys.readouterr().out
