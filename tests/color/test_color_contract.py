@@ -182,3 +182,13 @@ def test_convert_same_model_copies_with_the_dtype_policy():
     same = color.convert(cmyk, "cmyk", "cmyk")
     assert same.dtype == np.float32 and same is not cmyk
     np.testing.assert_array_equal(same, cmyk)
+
+
+@pytest.mark.parametrize("fn", [color.rgb_to_hsv, color.rgb_to_cmyk, color.rgb_to_yiq])
+def test_parallel_path_equals_the_small_input_path(fn):
+    from pixelpath.color._kernels import CHUNK
+
+    rgb = np.random.default_rng(9).random((2 * CHUNK + 3, 3))
+    whole = fn(rgb)  # above one chunk: the parallel kernel
+    pieces = np.concatenate([fn(rgb[k : k + 1000]) for k in range(0, len(rgb), 1000)])
+    np.testing.assert_array_equal(whole, pieces)

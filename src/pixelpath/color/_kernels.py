@@ -221,4 +221,6 @@ def warmup() -> None:
         (np.float64, np.float64),
     ):
         src = np.zeros(3, dtype=dtype)
-        convert_pixels(src, np.zeros(3, dtype=out_dtype), 3, 3, 1.0, AFFINE, matrix, offset)
+        dst = np.zeros(3, dtype=out_dtype)
+        convert_span(src, dst, 1.0, AFFINE, matrix, offset)
+        convert_pixels(src, dst, 3, 3, 1.0, AFFINE, matrix, offset)

@@ -159,17 +159,25 @@ def _apply(conversion: _Conversion, values: ArrayLike, name: str, out: np.ndarra
     result = _prepare_out(out, (*src.shape[:-1], dst_channels), _result_dtype(src))
     # Non-finite input is counted by the kernel and raised below; errstate keeps the pure-Python
     # run (NUMBA_DISABLE_JIT=1) from warning on the way, as the compiled run never does.
+    flat_src, flat_dst = src.reshape(-1), result.reshape(-1)
+    op = getattr(_kernels, conversion.op)
     with np.errstate(invalid="ignore", over="ignore"):
-        bad = _kernels.convert_pixels(
-            src.reshape(-1),
-            result.reshape(-1),
-            src.shape[-1],
-            dst_channels,
-            scale,
-            getattr(_kernels, conversion.op),
-            conversion.matrix,
-            conversion.offset,
-        )
+        if flat_src.size <= _kernels.CHUNK * src.shape[-1]:
+            # One chunk's worth: waking the thread pool would cost more than the work.
+            bad = _kernels.convert_span(
+                flat_src, flat_dst, scale, op, conversion.matrix, conversion.offset
+            )
+        else:
+            bad = _kernels.convert_pixels(
+                flat_src,
+                flat_dst,
+                src.shape[-1],
+                dst_channels,
+                scale,
+                op,
+                conversion.matrix,
+                conversion.offset,
+            )
     if bad:
         raise ValueError(
             f"{name} has {bad} colour(s) with NaN or infinite components; "
