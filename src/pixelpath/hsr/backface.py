@@ -63,5 +63,10 @@ def front_facing(normals: np.ndarray, points: np.ndarray, eye: Any) -> np.ndarra
         )
     if eye.shape != (3,):
         raise ValueError(f"eye must have shape (3,), got {eye.shape}")
-    view = points - eye
-    return np.einsum("ij,ij->i", normals, view) < 0.0
+    from pixelpath.raster import _kernels
+
+    out = np.empty(len(normals), dtype=np.bool_)
+    _kernels.front_facing_many(
+        np.ascontiguousarray(normals), np.ascontiguousarray(points), eye, out
+    )
+    return out

@@ -22,6 +22,7 @@ The pipeline (:mod:`pixelpath.raster`):
 from __future__ import annotations
 
 import dataclasses
+import threading
 from collections.abc import Callable
 
 import numpy as np
@@ -96,16 +97,16 @@ def zbuffer(
     from pixelpath.hsr.backface import front_facing
     from pixelpath.lighting import pack_lights
     from pixelpath.raster import _kernels
-    from pixelpath.raster.frustum import clip_to_frustum
+    from pixelpath.raster.frustum import classify, clip_crossing
     from pixelpath.raster.shading import shading_mode
     from pixelpath.raster.tessellate import scene_geometry
+    from pixelpath.raster.transform import world_to_clip
 
     camera = camera or scene.camera
     mode = shading_mode(shading)
     advance = progress or (lambda n: None)
     height, width = camera.height, camera.width
-    inv_depth = np.zeros((height, width))
-    triangle_id = np.full((height, width), -1, dtype=np.int32)
+    inv_depth, triangle_id = _scratch_buffers(height, width)
 
     # 1. Geometry and object-space back-face culling.
     geometry = scene_geometry(scene, camera)
@@ -118,16 +119,28 @@ def zbuffer(
     advance(1)
 
     # 2-3. Lighting at vertices or polygons, clip space, frustum clipping.
-    attributes = _vertex_attributes(geometry, camera, mode, lights, ambient, eye, blinn)
-    vertices, triangles, source = clip_to_frustum(attributes, geometry.triangles, keep)
+    clip = world_to_clip(geometry.vertices, camera)
+    columns = (clip, geometry.vertices, geometry.normals)
+    if mode == _kernels.GOURAUD:
+        columns += (_vertex_colors(geometry, lights, ambient, eye, blinn),)
+    inside, crossing = classify(clip, geometry.triangles, keep)
+    new_columns, new_triangles, new_source = clip_crossing(columns, geometry.triangles, crossing)
+    if len(new_triangles):
+        columns = tuple(np.concatenate(pair) for pair in zip(columns, new_columns, strict=True))
+    clip, positions, normals = columns[:3]
+    colors = columns[3] if len(columns) > 3 else np.empty((0, 6))
+    triangles = np.concatenate([geometry.triangles[inside], new_triangles])
+    source = np.concatenate([inside, new_source])
     polygon = geometry.triangle_polygon[source]
-    info = np.stack([geometry.polygon_object[polygon], ~front[polygon]], axis=1).astype(np.intp)
+    info = np.empty((len(source), 2), dtype=np.intp)
+    info[:, 0] = geometry.polygon_object[polygon]
+    info[:, 1] = ~front[polygon]
     flat_colors = _flat_colors(geometry, polygon, ~front, mode, lights, ambient, eye, blinn)
     advance(1)
 
     # 4. Viewport and scan conversion with the depth test.
-    screen = np.empty((len(vertices), 3))
-    _kernels.clip_to_screen(np.ascontiguousarray(vertices[:, :4]), width, height, screen)
+    screen = np.empty((len(clip), 3))
+    _kernels.clip_to_screen(clip, width, height, screen)
     setup = np.empty((len(triangles), _kernels.SETUP_FIELDS))
     rows = np.empty((len(triangles), 2), dtype=np.intp)
     _kernels.setup_triangles(screen, triangles, height, setup, rows)
@@ -144,33 +157,41 @@ def zbuffer(
     object_id = np.empty((height, width), dtype=np.int32)
     background = np.asarray(scene.background, dtype=np.float64)
     _kernels.shade_deferred(
-        triangle_id, inv_depth, setup, triangles, vertices, info, flat_colors,
-        geometry.materials, lights, ambient, eye, mode, bool(blinn), background, rgb, depth,
-        object_id,
+        triangle_id, inv_depth, setup, triangles, positions, normals, colors, info,
+        flat_colors, geometry.materials, lights, ambient, eye, mode, bool(blinn), background,
+        rgb, depth, object_id,
     )
     advance(1)
     return Frame(rgb=rgb, depth=depth, object_id=object_id)
 
 
-def _vertex_attributes(geometry, camera, mode, lights, ambient, eye, blinn) -> np.ndarray:
-    """(V, ATTRIBUTES) rows: clip position, world position, normal, front and back colours."""
-    from pixelpath.raster import _kernels
-    from pixelpath.raster.shading import shade_points
-    from pixelpath.raster.transform import world_to_clip
+_SCRATCH = threading.local()
 
-    k = _kernels
-    attributes = np.zeros((len(geometry.vertices), k.ATTRIBUTES))
-    attributes[:, k.CLIP : k.CLIP + 4] = world_to_clip(geometry.vertices, camera)
-    attributes[:, k.POSITION : k.POSITION + 3] = geometry.vertices
-    attributes[:, k.NORMAL : k.NORMAL + 3] = geometry.normals
-    if mode == k.GOURAUD:
-        for column, flipped in ((k.COLOR, False), (k.BACK_COLOR, True)):
-            attributes[:, column : column + 3] = shade_points(
-                geometry.vertices, geometry.normals,
-                np.full(len(geometry.vertices), flipped), geometry.vertex_object,
-                geometry.materials, lights, ambient, eye, blinn=blinn,
-            )
-    return attributes
+
+def _scratch_buffers(height: int, width: int) -> tuple[np.ndarray, np.ndarray]:
+    """Return the calling thread's 1/w and triangle buffers of this size, kept between frames.
+
+    The rasterizer clears them itself; reusing them spares allocating and page-faulting
+    12 bytes per pixel each frame. One pair per thread keeps concurrent renders apart.
+    """
+    buffers = getattr(_SCRATCH, "buffers", None)
+    if buffers is None or buffers[0].shape != (height, width):
+        buffers = (np.empty((height, width)), np.empty((height, width), dtype=np.int32))
+        _SCRATCH.buffers = buffers
+    return buffers
+
+
+def _vertex_colors(geometry, lights, ambient, eye, blinn) -> np.ndarray:
+    """(V, 6) Gouraud intensities at the vertices, lit from the front, then from the back."""
+    from pixelpath.raster.shading import shade_points
+
+    colors = np.empty((len(geometry.vertices), 6))
+    for start, flipped in ((0, False), (3, True)):
+        colors[:, start : start + 3] = shade_points(
+            geometry.vertices, geometry.normals, np.full(len(geometry.vertices), flipped),
+            geometry.vertex_object, geometry.materials, lights, ambient, eye, blinn=blinn,
+        )
+    return colors
 
 
 def _flat_colors(geometry, polygon, back, mode, lights, ambient, eye, blinn) -> np.ndarray:

@@ -30,7 +30,7 @@ import math
 import numpy as np
 
 from pixelpath._jit import njit, prange, register_warmup
-from pixelpath.clip._halfspace import clip_polygon_halfspace, halfspace_distance
+from pixelpath.clip._halfspace import clip_polygon_halfspace
 from pixelpath.lighting._kernels import shade_point
 
 FLAT = 0
@@ -46,14 +46,10 @@ VERTEX_INVW = 15  # 1/w at vertices 0, 1, 2 (in the triangle's own order)
 SLOPES = 18  # dx/dy of the sorted edges (v0, v2), (v0, v1), (v1, v2); 0 for a horizontal one
 SETUP_FIELDS = 21
 
-# Column layout of the raster vertex attributes: clip position, world position, normal, and
-# the Gouraud vertex colours lit from the front (normal as given) and from the back (flipped).
-CLIP = 0
-POSITION = 4
-NORMAL = 7
-COLOR = 10
-BACK_COLOR = 13
-ATTRIBUTES = 16
+# Columns of the Gouraud vertex colours: lit from the front (normal as given) and from the back
+# (normal reversed, for two-sided faces seen from behind).
+COLOR = 0
+BACK_COLOR = 3
 
 BAND_ROWS = 32
 
@@ -80,28 +76,61 @@ GUARD_BAND = 8.0
 MAX_CLIPPED = 9
 
 
-@njit(parallel=True)
+@njit(inline="always")
+def faces_away(normal, point, eye):
+    """Return the object-space back-face test N · (P − eye) >= 0 (V from the eye inwards)."""
+    return (
+        normal[0] * (point[0] - eye[0])
+        + normal[1] * (point[1] - eye[1])
+        + normal[2] * (point[2] - eye[2])
+        >= 0.0
+    )
+
+
+@njit
+def front_facing_many(normals, points, eye, out):
+    """Write whether each face (F,) turns towards the eye (not :func:`faces_away`)."""
+    for f in range(normals.shape[0]):
+        out[f] = not faces_away(normals[f], points[f], eye)
+
+
+@njit(inline="always")
+def _outcode(x, y, z, w):
+    """Return bit p set when the vertex is outside FRUSTUM_PLANES[p]."""
+    code = 0
+    if z < -w:
+        code |= 1
+    if z > w:
+        code |= 2
+    if x < -w:
+        code |= 4
+    if x > w:
+        code |= 8
+    if y < -w:
+        code |= 16
+    if y > w:
+        code |= 32
+    return code
+
+
+@njit
 def classify_triangles(clip, triangles, keep, status):
     """Sort each kept triangle (T,) into OUTSIDE, INSIDE or CROSSING the view frustum."""
-    for t in prange(triangles.shape[0]):
+    for t in range(triangles.shape[0]):
         status[t] = OUTSIDE
         if not keep[t]:
             continue
-        outside_all = np.zeros(6, dtype=np.bool_)
-        outside_all[:] = True
+        outside_all = 63
         needs_clip = False
         for corner in range(3):
-            v = clip[triangles[t, corner]]
-            x, y, z, w = v[0], v[1], v[2], v[3]
-            for p in range(6):
-                if halfspace_distance(FRUSTUM_PLANES[p], v) >= 0.0:
-                    outside_all[p] = False
+            v = triangles[t, corner]
+            x, y, z, w = clip[v, 0], clip[v, 1], clip[v, 2], clip[v, 3]
+            outside_all &= _outcode(x, y, z, w)
             band = GUARD_BAND * w
             if z < -w or z > w or abs(x) > band or abs(y) > band:
                 needs_clip = True
-        if outside_all.any():
-            continue
-        status[t] = CROSSING if needs_clip else INSIDE
+        if outside_all == 0:
+            status[t] = CROSSING if needs_clip else INSIDE
 
 
 @njit
@@ -141,10 +170,10 @@ def clip_triangles(attributes, triangles, crossing):
     return vertices[:n_vertices], new_triangles[:n_triangles], source[:n_triangles]
 
 
-@njit(parallel=True)
+@njit
 def clip_to_screen(clip, width, height, screen):
     """Write (x_screen, y_screen, 1/w) of each clip-space vertex (V, 4) into screen (V, 3)."""
-    for v in prange(clip.shape[0]):
+    for v in range(clip.shape[0]):
         inv_w = 1.0 / clip[v, 3]
         screen[v, 0] = (clip[v, 0] * inv_w + 1.0) * 0.5 * width
         screen[v, 1] = (1.0 - clip[v, 1] * inv_w) * 0.5 * height
@@ -262,12 +291,15 @@ def bin_triangles(rows, n_bands, band_rows):
 def rasterize_bands(setup, rows, offsets, items, band_rows, inv_depth, triangle_id):
     """Depth-test every triangle's pixels, keeping the nearest (largest 1/w) per pixel.
 
-    ``inv_depth`` (H, W) starts at 0 (infinitely far) and ``triangle_id`` (H, W) at -1.
+    Each band first clears its rows of ``inv_depth`` (H, W) to 0 (infinitely far) and of
+    ``triangle_id`` (H, W) to -1 (nothing), so the buffers may hold anything on entry.
     """
     height, width = inv_depth.shape
     for band in prange(offsets.shape[0] - 1):
         band_first = band * band_rows
         band_stop = min(band_first + band_rows, height)
+        inv_depth[band_first:band_stop] = 0.0
+        triangle_id[band_first:band_stop] = -1
         for k in range(offsets[band], offsets[band + 1]):
             t = items[k]
             record = setup[t]
@@ -349,9 +381,9 @@ def shade_points(points, normals, flip, owner, materials, lights, ambient, eye, 
 
 
 @njit(inline="always")
-def _mix(attributes, a, b, c, w0, w1, w2, column):
-    """Weighted sum of one attribute column over a triangle's vertices a, b, c."""
-    return w0 * attributes[a, column] + w1 * attributes[b, column] + w2 * attributes[c, column]
+def _mix(values, a, b, c, w0, w1, w2, column):
+    """Weighted sum of one column of per-vertex values over a triangle's vertices a, b, c."""
+    return w0 * values[a, column] + w1 * values[b, column] + w2 * values[c, column]
 
 
 @njit(inline="always")
@@ -365,7 +397,9 @@ def shade_deferred(
     inv_depth,
     setup,
     triangles,
-    attributes,
+    positions,
+    normals,
+    colors,
     triangle_info,
     flat_colors,
     materials,
@@ -408,15 +442,15 @@ def shade_deferred(
             if mode == GOURAUD:
                 first = BACK_COLOR if triangle_info[t, 1] else COLOR
                 for channel in range(3):
-                    value = _mix(attributes, a, b, c, b0, b1, b2, first + channel)
+                    value = _mix(colors, a, b, c, b0, b1, b2, first + channel)
                     rgb[j, i, channel] = _clamp01(value)
                 continue
-            px = _mix(attributes, a, b, c, b0, b1, b2, POSITION)
-            py = _mix(attributes, a, b, c, b0, b1, b2, POSITION + 1)
-            pz = _mix(attributes, a, b, c, b0, b1, b2, POSITION + 2)
-            nx = _mix(attributes, a, b, c, b0, b1, b2, NORMAL)
-            ny = _mix(attributes, a, b, c, b0, b1, b2, NORMAL + 1)
-            nz = _mix(attributes, a, b, c, b0, b1, b2, NORMAL + 2)
+            px = _mix(positions, a, b, c, b0, b1, b2, 0)
+            py = _mix(positions, a, b, c, b0, b1, b2, 1)
+            pz = _mix(positions, a, b, c, b0, b1, b2, 2)
+            nx = _mix(normals, a, b, c, b0, b1, b2, 0)
+            ny = _mix(normals, a, b, c, b0, b1, b2, 1)
+            nz = _mix(normals, a, b, c, b0, b1, b2, 2)
             length = math.sqrt(nx * nx + ny * ny + nz * nz)
             if length > 0.0:
                 scale = (-1.0 if triangle_info[t, 1] else 1.0) / length
@@ -450,34 +484,36 @@ def warmup() -> None:
     triangles = np.array([[0, 1, 2]], dtype=np.intp)
     status = np.empty(1, dtype=np.int8)
     classify_triangles(clip, triangles, np.ones(1, dtype=np.bool_), status)
-    clip_triangles(np.zeros((3, ATTRIBUTES)), triangles, np.zeros(1, dtype=np.intp))
+    normal = np.array([[0.0, 0.0, 1.0]])
+    front_facing_many(normal, np.zeros((1, 3)), np.ones(3), np.empty(1, dtype=np.bool_))
+    clip_triangles(np.zeros((3, 10)), triangles, np.zeros(1, dtype=np.intp))
     screen = np.empty((3, 3))
     clip_to_screen(clip, 8, 8, screen)
     setup = np.zeros((1, SETUP_FIELDS))
     rows = np.zeros((1, 2), dtype=np.intp)
     setup_triangles(screen, triangles, 8, setup, rows)
     offsets, items = bin_triangles(rows, 1, BAND_ROWS)
-    inv_depth = np.zeros((8, 8))
-    triangle_id = np.full((8, 8), -1, dtype=np.int32)
+    inv_depth = np.empty((8, 8))
+    triangle_id = np.empty((8, 8), dtype=np.int32)
     rasterize_bands(setup, rows, offsets, items, BAND_ROWS, inv_depth, triangle_id)
     count_coverage(setup, rows, 8, np.zeros((8, 8), dtype=np.int32))
     interpolate_values(setup, triangles, np.ones((3, 1)), triangle_id, np.zeros((8, 8, 1)))
-    attributes = np.zeros((3, ATTRIBUTES))
-    attributes[:, NORMAL + 2] = 1.0
+    normals = np.zeros((3, 3))
+    normals[:, 2] = 1.0
     info = np.zeros((1, 2), dtype=np.intp)
     material = np.array([[1.0, 1.0, 1.0, 0.1, 0.7, 0.3, 32.0, 0.0]])
     lights = np.array([[0.0, 0.0, 0.0, 5.0, 1.0, 1.0, 1.0]])
     rgb = np.zeros((8, 8, 3), dtype=np.float32)
+    positions = clip[:, :3].copy()
     shade_points(
-        clip[:, :3].copy(), attributes[:, NORMAL : NORMAL + 3].copy(), np.zeros(3, np.bool_),
-        np.zeros(3, np.intp), material, lights, np.full(3, 0.1), np.zeros(3), False,
-        np.empty((3, 3)),
+        positions, normals, np.zeros(3, np.bool_), np.zeros(3, np.intp), material, lights,
+        np.full(3, 0.1), np.zeros(3), False, np.empty((3, 3)),
     )
     depth = np.empty((8, 8), dtype=np.float32)
     object_id = np.empty((8, 8), dtype=np.int32)
     for mode in (FLAT, GOURAUD, PHONG):
         shade_deferred(
-            triangle_id, inv_depth, setup, triangles, attributes, info, np.ones((1, 3)),
-            material, lights, np.full(3, 0.1), np.array([0.0, 0.0, 5.0]), mode, False,
-            np.zeros(3), rgb, depth, object_id,
+            triangle_id, inv_depth, setup, triangles, positions, normals, np.zeros((3, 6)),
+            info, np.ones((1, 3)), material, lights, np.full(3, 0.1), np.array([0.0, 0.0, 5.0]),
+            mode, False, np.zeros(3), rgb, depth, object_id,
         )

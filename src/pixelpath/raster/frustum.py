@@ -58,8 +58,6 @@ def clip_to_frustum(
     >>> bool(np.all(out[3:, 2] >= -out[3:, 3]))
     True
     """
-    from pixelpath.raster import _kernels
-
     vertices = np.ascontiguousarray(vertices, dtype=np.float64)
     if vertices.ndim != 2 or vertices.shape[1] < 4:
         raise ValueError(f"vertices must have shape (V, k) with k >= 4, got {vertices.shape}")
@@ -71,17 +69,56 @@ def clip_to_frustum(
         raise ValueError(f"keep must have shape ({len(triangles)},), got {keep.shape}")
     if not np.all(np.isfinite(vertices[:, :4])):
         raise ValueError("vertices must have finite clip coordinates (no NaN or inf)")
-
-    status = np.empty(len(triangles), dtype=np.int8)
-    _kernels.classify_triangles(np.ascontiguousarray(vertices[:, :4]), triangles, keep, status)
-    inside = np.flatnonzero(status == _kernels.INSIDE)
-    crossing = np.flatnonzero(status == _kernels.CROSSING)
-    new_vertices, new_triangles, new_source = _kernels.clip_triangles(vertices, triangles, crossing)
+    clip = np.ascontiguousarray(vertices[:, :4])
+    inside, crossing = classify(clip, triangles, keep)
+    (new_vertices,), new_triangles, new_source = clip_crossing((vertices,), triangles, crossing)
     return (
         np.concatenate([vertices, new_vertices]),
         np.concatenate([triangles[inside], new_triangles]),
         np.concatenate([inside, new_source]),
     )
+
+
+def classify(
+    clip: np.ndarray, triangles: np.ndarray, keep: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """Return the kept triangles wholly inside (guard band) and those to clip, as indices.
+
+    ``clip`` is (V, 4) float64, ``triangles`` (T, 3) intp and ``keep`` (T,) bool, all
+    contiguous; triangles outside one frustum plane are in neither list.
+    """
+    from pixelpath.raster import _kernels
+
+    status = np.empty(len(triangles), dtype=np.int8)
+    _kernels.classify_triangles(clip, triangles, keep, status)
+    return np.flatnonzero(status == _kernels.INSIDE), np.flatnonzero(status == _kernels.CROSSING)
+
+
+def clip_crossing(
+    columns: tuple[np.ndarray, ...], triangles: np.ndarray, crossing: np.ndarray
+) -> tuple[tuple[np.ndarray, ...], np.ndarray, np.ndarray]:
+    """Clip the ``crossing`` triangles; per-vertex data comes in several column blocks.
+
+    ``columns`` are (V, k_i) arrays of per-vertex values; the first block's first four columns
+    are the clip coordinates. Only the vertices of crossing triangles are gathered, so a frame
+    that needs no clipping copies nothing. Returns the new vertices' blocks (N, k_i), their
+    triangles (indices continue after V) and each new triangle's source triangle.
+    """
+    from pixelpath.raster import _kernels
+
+    count = len(columns[0])
+    if len(crossing) == 0:
+        empty = tuple(np.empty((0, block.shape[1])) for block in columns)
+        return empty, np.empty((0, 3), dtype=np.intp), np.empty(0, dtype=np.intp)
+    corners, local = np.unique(triangles[crossing], return_inverse=True)
+    rows = np.hstack([block[corners] for block in columns])
+    local = np.ascontiguousarray(local.reshape(-1, 3), dtype=np.intp)
+    new_rows, new_triangles, source = _kernels.clip_triangles(
+        rows, local, np.arange(len(crossing), dtype=np.intp)
+    )
+    splits = np.cumsum([block.shape[1] for block in columns])[:-1]
+    blocks = tuple(np.ascontiguousarray(b) for b in np.hsplit(new_rows, splits))
+    return blocks, new_triangles - len(rows) + count, crossing[source]
 
 
 def _triangle_indices(triangles: np.ndarray, vertex_count: int) -> np.ndarray:

@@ -87,8 +87,8 @@ def scan_convert(
     from pixelpath.raster import _kernels
 
     width, height, triangles, setup, rows = _setup(points, triangles, width, height)
-    inv_depth = np.zeros((height, width))
-    triangle_id = np.full((height, width), -1, dtype=np.int32)
+    inv_depth = np.empty((height, width))
+    triangle_id = np.empty((height, width), dtype=np.int32)
     n_bands = -(-height // _kernels.BAND_ROWS)
     offsets, items = _kernels.bin_triangles(rows, n_bands, _kernels.BAND_ROWS)
     _kernels.rasterize_bands(

@@ -117,7 +117,8 @@ class _IdentityCache:
 
 
 _SPHERE_MESHES = _IdentityCache(64)
-_FIRST_CORNERS = _IdentityCache(64)
+# Per scene: its geometry for the last camera position and far distance (planes depend on them).
+_GEOMETRIES = _IdentityCache(8)
 
 
 def _sphere_mesh(sphere: Sphere) -> Mesh:
@@ -152,6 +153,12 @@ def scene_geometry(scene: Scene, camera: Camera | None = None) -> SceneGeometry:
     camera : Camera, optional
         The camera planes are fitted to (default ``scene.camera``).
 
+    Returns
+    -------
+    SceneGeometry
+        Shared by later calls for the same (immutable) scene and camera position, so
+        re-rendering a scene does not tessellate it again; do not modify its arrays.
+
     Examples
     --------
     >>> from pixelpath.scene import Box, Camera, Scene
@@ -161,6 +168,15 @@ def scene_geometry(scene: Scene, camera: Camera | None = None) -> SceneGeometry:
     (12, 3)
     """
     camera = camera or scene.camera
+    key = (*camera.eye.tolist(), camera.far)
+    cached = _GEOMETRIES.get(scene, lambda _: {})
+    if key not in cached:
+        cached.clear()
+        cached[key] = _build_geometry(scene, camera)
+    return cached[key]
+
+
+def _build_geometry(scene: Scene, camera: Camera) -> SceneGeometry:
     meshes = [object_mesh(obj, camera) for obj in scene.objects]
     vertex_counts = [len(m.vertices) for m in meshes]
     polygon_counts = [m.face_count for m in meshes]
@@ -174,7 +190,7 @@ def scene_geometry(scene: Scene, camera: Camera | None = None) -> SceneGeometry:
         triangles=_stacked([m.triangles + v for m, v, _ in pairs], (0, 3), np.intp),
         triangle_polygon=_stacked([m.triangle_face + p for m, _, p in pairs], (0,), np.intp),
         polygon_normals=_stacked([m.face_normals for m in meshes], (0, 3)),
-        polygon_points=_stacked([_FIRST_CORNERS.get(m, _first_corners) for m in meshes], (0, 3)),
+        polygon_points=_stacked([_first_corners(m) for m in meshes], (0, 3)),
         polygon_object=np.repeat(objects, polygon_counts),
         vertex_object=np.repeat(objects, vertex_counts),
         materials=_stacked([m.material.packed()[None] for m in meshes], (0, 8)),
@@ -186,8 +202,6 @@ def _stacked(parts: list[np.ndarray], empty: tuple[int, ...], dtype: type = np.f
     """Concatenate per-object arrays (an empty array of shape ``empty`` when there are none)."""
     if not parts:
         return np.empty(empty, dtype=dtype)
-    if len(parts) == 1:  # one object: its own (read-only) arrays, no copy
-        return np.ascontiguousarray(parts[0], dtype=dtype)
     return np.ascontiguousarray(np.concatenate(parts), dtype=dtype)
 
 
