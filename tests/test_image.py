@@ -75,3 +75,13 @@ def test_repr_png_is_a_png_of_the_picture():
 def test_to_uint8_maps_value_times_255():
     img = Image(np.array([[[0.0, 0.5, 1.0]]]))
     assert img.to_uint8().tolist() == [[[0, 128, 255]]]
+
+
+def test_saved_file_gets_the_usual_permissions(tmp_path):
+    import os
+
+    path = tmp_path / "p.png"
+    Image(gradient()).save(path)
+    mask = os.umask(0o022)
+    os.umask(mask)
+    assert path.stat().st_mode & 0o777 == 0o666 & ~mask

@@ -93,9 +93,18 @@ def write_image(path: str | os.PathLike, rgb: np.ndarray, *, gamma: float | None
         raise ValueError(f"unknown image extension {path.suffix!r} for {path}; use .png, .jpg, ...")
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     try:
+        if hasattr(os, "fchmod"):  # mkstemp makes 0600; give the file the usual permissions
+            os.fchmod(fd, _new_file_mode())
         with os.fdopen(fd, "wb") as handle:
             image.save(handle, format=fmt)
         os.replace(tmp, path)
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
         raise
+
+
+def _new_file_mode() -> int:
+    """Return the mode a newly created file gets under the process umask (0644 under 022)."""
+    mask = os.umask(0o022)
+    os.umask(mask)
+    return 0o666 & ~mask
