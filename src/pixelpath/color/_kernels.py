@@ -127,7 +127,8 @@ def hsx_to_rgb_span(src, dst, scale, lightness):
         s = src[3 * i + 1] * scale
         v = src[3 * i + 2] * scale
         bad += not_finite(abs(h) + abs(s) + abs(v))
-        sextant = (h - 360.0 * np.floor(h / 360.0)) / 60.0  # H mod 360: 360 and −60 wrap
+        sextant = h * (1.0 / 60.0)
+        sextant = sextant - 6.0 * np.floor(sextant * (1.0 / 6.0))  # H mod 360: 360, −60 wrap
         sextant = 0.0 if sextant >= 6.0 else sextant
         if lightness:
             chroma = smaller(2.0 * v, 2.0 - 2.0 * v) * s  # (1 − |2L − 1|)·S, no cancellation
