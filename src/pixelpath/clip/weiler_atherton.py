@@ -11,10 +11,13 @@ keeps that walk but makes every decision exactly, which is what the degenerate c
    vertices lying on the other polygon's edges, and the ends of collinear overlaps. Both
    polygons' edges are split there, so the two boundaries share those points exactly.
 3. Each piece of the subject's boundary is kept when it lies inside the window, each piece of
-   the window's boundary when it lies inside the subject (tested at its midpoint, which is
-   never on the other boundary). A piece both boundaries share is kept once when both
-   interiors lie on the same side of it and dropped when they lie on opposite sides (the
-   polygons only touch there).
+   the window's boundary when it lies inside the subject. A piece's side can only change
+   where the boundaries touch, so it is decided once per run of pieces, at the contact the run
+   starts from, by where the run heads: into the open half-plane of the edge it starts on, or
+   into the interior angle of the vertex (the entry/exit label of the classic algorithm, but
+   also right when the boundaries only touch). A piece both boundaries share is kept once
+   when both interiors lie on the same side of it and dropped when they lie on opposite sides
+   (the polygons only touch there).
 4. The kept pieces are linked into loops: arriving at a point, the walk leaves along the first
    kept piece clockwise from the way it came, which is Weiler-Atherton's switch between the
    two vertex lists. This turn rule keeps pieces that touch at a single point apart. Every
@@ -42,6 +45,8 @@ __all__ = ["weiler_atherton"]
 
 Point = tuple[Fraction, Fraction]
 Segment = tuple[Point, Point]
+
+VERTEX, EDGE_INTERIOR = 0, 1  # where a contact point lies on a polygon
 
 
 def weiler_atherton(subject: np.ndarray, window: object) -> list[np.ndarray]:
@@ -81,12 +86,18 @@ def weiler_atherton(subject: np.ndarray, window: object) -> list[np.ndarray]:
         window = window.vertices
     subject_ring = _exact_ring(subject, "subject")
     window_ring = _exact_ring(window, "window")
-    subject_cuts, window_cuts, contacts = _cut_points(subject_ring, window_ring)
+    subject_cuts, window_cuts, on_window, on_subject = _cut_points(subject_ring, window_ring)
     subject_pieces = _split(subject_ring, subject_cuts)
     window_pieces = _split(window_ring, window_cuts)
-    kept = _keep_inside(subject_pieces, window_pieces, subject_ring, window_ring, contacts)
+    window_set = set(window_pieces)
+    shared = [p for p in subject_pieces if p in window_set]
+    opposed = [p for p in subject_pieces if (p[1], p[0]) in window_set]
+    on_both = {*shared, *opposed, *((b, a) for a, b in opposed)}
+    kept = shared  # both interiors on the same side: kept once
+    kept += _inside_pieces(subject_pieces, window_ring, on_window, on_both)
+    kept += _inside_pieces(window_pieces, subject_ring, on_subject, on_both)
     loops = [_drop_straight_vertices(loop) for loop in _link(kept)]
-    return sorted((_to_array(loop) for loop in loops), key=lambda a: (a[0, 0], a[0, 1]))
+    return sorted((_float_ring(loop) for loop in loops), key=lambda a: (a[0, 0], a[0, 1]))
 
 
 def _exact_ring(polygon: object, name: str) -> list[Point]:
@@ -123,44 +134,81 @@ def _check_simple(ring: list[Point], name: str) -> None:
             )
 
 
-def _cut_points(
-    subject: list[Point], window: list[Point]
-) -> tuple[list[set[Fraction]], list[set[Fraction]], set[Point]]:
+def _cut_points(subject: list[Point], window: list[Point]):
     """Find every contact of the two boundaries.
 
     Returns, per subject edge and per window edge, the parameters in (0, 1) where the edge must
-    be cut, and the set of all contact points.
+    be cut, and for each contact point where it lies on the window and on the subject.
     """
     subject_edges, window_edges = _edges(subject), _edges(window)
     subject_cuts: list[set[Fraction]] = [set() for _ in subject_edges]
     window_cuts: list[set[Fraction]] = [set() for _ in window_edges]
-    contacts: set[Point] = set()
+    on_window: dict[Point, tuple[int, int]] = {}
+    on_subject: dict[Point, tuple[int, int]] = {}
     for i, j in _candidate_pairs(subject, window):
         for t, u in _contacts(*subject_edges[i], *window_edges[j]):
-            contacts.add(_along(subject_edges[i], t))
+            point = _along(subject_edges[i], t)
+            _locate(on_window, point, j, u, len(window))
+            _locate(on_subject, point, i, t, len(subject))
             if 0 < t < 1:
                 subject_cuts[i].add(t)
             if 0 < u < 1:
                 window_cuts[j].add(u)
-    return subject_cuts, window_cuts, contacts
+    return subject_cuts, window_cuts, on_window, on_subject
+
+
+def _locate(where: dict[Point, tuple[int, int]], point: Point, edge: int, t: Fraction,
+            size: int) -> None:
+    """Record that ``point`` is at parameter ``t`` of ``edge``: a vertex or inside the edge."""
+    if t == 0:
+        where[point] = (VERTEX, edge)
+    elif t == 1:
+        where[point] = (VERTEX, (edge + 1) % size)
+    else:
+        where.setdefault(point, (EDGE_INTERIOR, edge))
 
 
 def _candidate_pairs(a: list[Point], b: list[Point]) -> list[tuple[int, int]]:
-    """Pairs of edges whose bounding boxes meet (a cheap float filter; floats are exact here)."""
-    boxes_a, boxes_b = _boxes(a), _boxes(b)
-    meet = (
-        (boxes_a[:, None, 0] <= boxes_b[None, :, 2])
-        & (boxes_b[None, :, 0] <= boxes_a[:, None, 2])
-        & (boxes_a[:, None, 1] <= boxes_b[None, :, 3])
-        & (boxes_b[None, :, 1] <= boxes_a[:, None, 3])
-    )
-    return list(zip(*(idx.tolist() for idx in np.nonzero(meet)), strict=True))
+    """Pairs of edges (one of ``a``, one of ``b``) that may touch: a float filter.
+
+    Their bounding boxes meet, and neither edge lies wholly on one side of the other's line by
+    more than the rounding error of the orientation test (the coordinates are the exact float
+    inputs; the error bound is Shewchuk's for ``orient2d``). The exact test decides the rest.
+    """
+    points_a, points_b = _float_ring(a), _float_ring(b)
+    ends_a, ends_b = np.roll(points_a, -1, axis=0), np.roll(points_b, -1, axis=0)
+    lo_a, hi_a = np.minimum(points_a, ends_a), np.maximum(points_a, ends_a)
+    lo_b, hi_b = np.minimum(points_b, ends_b), np.maximum(points_b, ends_b)
+    meet = np.all((lo_a[:, None] <= hi_b[None]) & (lo_b[None] <= hi_a[:, None]), axis=2)
+    i, j = np.nonzero(meet)
+    p0, p1, q0, q1 = points_a[i], ends_a[i], points_b[j], ends_b[j]
+    apart = _surely_one_side(p0, p1, q0, q1) | _surely_one_side(q0, q1, p0, p1)
+    return list(zip(i[~apart].tolist(), j[~apart].tolist(), strict=True))
 
 
-def _boxes(ring: list[Point]) -> np.ndarray:
-    points = np.array([(float(x), float(y)) for x, y in ring])
-    ends = np.roll(points, -1, axis=0)
-    return np.hstack([np.minimum(points, ends), np.maximum(points, ends)])
+# (3 + 16 eps) eps with eps = 2**-53, rounded up: bounds the error of the float orientation.
+_ORIENT_ERROR = 3.4e-16
+
+
+def _surely_one_side(a: np.ndarray, b: np.ndarray, c: np.ndarray, d: np.ndarray) -> np.ndarray:
+    """Whether c and d lie strictly on the same side of line ab, beyond rounding doubt."""
+    side_c, error_c = _orient(a, b, c)
+    side_d, error_d = _orient(a, b, d)
+    with np.errstate(invalid="ignore", over="ignore"):  # overflow: NaN, never "surely"
+        return ((side_c > error_c) & (side_d > error_d)) | (
+            (side_c < -error_c) & (side_d < -error_d)
+        )
+
+
+def _orient(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    with np.errstate(invalid="ignore", over="ignore"):
+        left = (a[:, 0] - c[:, 0]) * (b[:, 1] - c[:, 1])
+        right = (a[:, 1] - c[:, 1]) * (b[:, 0] - c[:, 0])
+        return left - right, _ORIENT_ERROR * (np.abs(left) + np.abs(right))
+
+
+def _float_ring(ring: list[Point]) -> np.ndarray:
+    return np.array([(float(x), float(y)) for x, y in ring], dtype=np.float64).reshape(-1, 2)
 
 
 def _contacts(p0: Point, p1: Point, q0: Point, q1: Point) -> list[tuple[Fraction, Fraction]]:
@@ -197,40 +245,47 @@ def _split(ring: list[Point], cuts: list[set[Fraction]]) -> list[Segment]:
     return pieces
 
 
-def _keep_inside(
-    subject_pieces: list[Segment],
-    window_pieces: list[Segment],
-    subject: list[Point],
-    window: list[Point],
-    contacts: set[Point],
-) -> list[Segment]:
-    """Return the boundary pieces of the intersection, each directed counter-clockwise."""
-    window_set = set(window_pieces)
-    shared = [p for p in subject_pieces if p in window_set]
-    opposed = [p for p in subject_pieces if (p[1], p[0]) in window_set]
-    on_both = {*shared, *opposed, *((b, a) for a, b in opposed)}
-    kept = shared
-    kept += _inside_pieces(subject_pieces, window, contacts, on_both)
-    kept += _inside_pieces(window_pieces, subject, contacts, on_both)
-    return kept
-
-
 def _inside_pieces(
-    pieces: list[Segment], other: list[Point], contacts: set[Point], skip: set[Segment]
+    pieces: list[Segment],
+    other: list[Point],
+    on_other: dict[Point, tuple[int, int]],
+    skip: set[Segment],
 ) -> list[Segment]:
-    """Pieces strictly inside ``other``; one midpoint test per run between contact points."""
+    """Return the pieces (not in ``skip``) strictly inside ``other``.
+
+    A piece's side can change only where the ring touches ``other``, so it is decided once per
+    run, locally, at the contact point the run starts from; a ring that never touches
+    ``other`` takes one point-in-polygon test.
+    """
+    starts = [k for k, piece in enumerate(pieces) if piece[0] in on_other]
+    if not starts:
+        return pieces if _strictly_inside(_midpoint(pieces[0]), other) else []
     kept, inside = [], False
-    fresh_run = True
-    for piece in pieces:
+    for k in range(starts[0], starts[0] + len(pieces)):
+        piece = pieces[k % len(pieces)]
         if piece in skip:
-            fresh_run = True
             continue
-        if fresh_run or piece[0] in contacts:
-            inside = _strictly_inside(_midpoint(piece), other)
-            fresh_run = False
+        if piece[0] in on_other:
+            inside = _leaves_inside(piece, other, on_other[piece[0]])
         if inside:
             kept.append(piece)
     return kept
+
+
+def _leaves_inside(piece: Segment, ring: list[Point], where: tuple[int, int]) -> bool:
+    """Whether ``piece``, starting on the boundary of ``ring``, heads into its interior."""
+    start, end = piece
+    heading = _sub(end, start)
+    kind, index = where
+    if kind == EDGE_INTERIOR:  # the interior is the open half-plane left of the edge
+        return _cross(_sub(ring[(index + 1) % len(ring)], ring[index]), heading) > 0
+    # At a vertex the interior is the sector swept counter-clockwise from the outgoing edge
+    # to the incoming edge reversed.
+    outgoing = _sub(ring[(index + 1) % len(ring)], start)
+    incoming_reversed = _sub(ring[index - 1], start)
+    return _ccw_quarter(outgoing, heading) != 0 and _ccw_before(
+        outgoing, heading, incoming_reversed
+    )
 
 
 def _strictly_inside(p: Point, ring: list[Point]) -> bool:
@@ -267,33 +322,37 @@ def _link(pieces: list[Segment]) -> list[list[Point]]:
 
 
 def _next_piece(pieces: list[Segment], k: int, candidates: list[int]) -> int:
-    """Return the candidate reached first turning clockwise from the reverse of piece ``k``."""
+    """Return the candidate reached first turning clockwise from the reverse of piece ``k``.
+
+    That is the one with the largest counter-clockwise angle from the reverse direction: it
+    bounds the interior sector on the left of piece ``k``.
+    """
     start, end = pieces[k]
     back = _sub(start, end)
-    best, best_key = -1, None
-    for c in candidates:
-        d = _sub(pieces[c][1], end)
-        if best_key is None or _turns_before(back, d, best_key):
-            best, best_key = c, d
+    best, best_heading = candidates[0], _sub(pieces[candidates[0]][1], end)
+    for c in candidates[1:]:
+        heading = _sub(pieces[c][1], end)
+        if _ccw_before(back, best_heading, heading):
+            best, best_heading = c, heading
     return best
 
 
-def _turns_before(ref: Point, d1: Point, d2: Point) -> bool:
-    """Whether d1 comes strictly before d2 turning clockwise from ``ref``."""
-    h1, h2 = _clockwise_half(ref, d1), _clockwise_half(ref, d2)
-    if h1 != h2:
-        return h1 < h2
-    return h1 in (0, 2) and _cross(d1, d2) < 0
+def _ccw_before(ref: Point, d1: Point, d2: Point) -> bool:
+    """Whether d1 comes strictly before d2 turning counter-clockwise from ``ref``."""
+    q1, q2 = _ccw_quarter(ref, d1), _ccw_quarter(ref, d2)
+    if q1 != q2:
+        return q1 < q2
+    return q1 in (1, 3) and _cross(d1, d2) > 0
 
 
-def _clockwise_half(ref: Point, d: Point) -> int:
-    """0: clockwise angle in (0, pi); 1: pi; 2: (pi, 2 pi); 3: zero (going straight back)."""
+def _ccw_quarter(ref: Point, d: Point) -> int:
+    """0: angle 0 from ``ref``; 1: in (0, pi); 2: pi; 3: in (pi, 2 pi)."""
     cross, dot = _cross(ref, d), _dot(ref, d)
-    if cross < 0:
-        return 0
     if cross > 0:
-        return 2
-    return 1 if dot < 0 else 3
+        return 1
+    if cross < 0:
+        return 3
+    return 0 if dot > 0 else 2
 
 
 def _drop_straight_vertices(loop: list[Point]) -> list[Point]:
@@ -305,10 +364,6 @@ def _drop_straight_vertices(loop: list[Point]) -> list[Point]:
     ]
     lowest = min(range(len(kept)), key=lambda i: (kept[i][0], kept[i][1]))
     return kept[lowest:] + kept[:lowest]
-
-
-def _to_array(loop: list[Point]) -> np.ndarray:
-    return np.array([(float(x), float(y)) for x, y in loop], dtype=np.float64)
 
 
 def _edges(ring: list[Point]) -> list[Segment]:
