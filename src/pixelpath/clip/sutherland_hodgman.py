@@ -121,7 +121,9 @@ def sutherland_hodgman(
 def sutherland_hodgman(
     subject: np.ndarray, window: object, trace: Literal[True]
 ) -> tuple[np.ndarray, ClipTrace]: ...
-def sutherland_hodgman(subject, window, trace=False):
+def sutherland_hodgman(
+    subject: np.ndarray, window: object, trace: bool = False
+) -> np.ndarray | tuple[np.ndarray, ClipTrace]:
     """Clip a polygon against a convex window with the Sutherland-Hodgman algorithm.
 
     Parameters

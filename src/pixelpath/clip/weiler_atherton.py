@@ -23,7 +23,9 @@ keeps that walk but makes every decision exactly, which is what the degenerate c
    two vertex lists. This turn rule keeps pieces that touch at a single point apart. Every
    piece is used once, so the walk ends after at most as many steps as there are pieces.
 
-Because the arithmetic is exact, no symbolic perturbation is needed: a vertex on an edge is on
+The intersection of two simple polygons has no holes (its complement is the union of two
+connected unbounded sets), so every piece is one counter-clockwise ring. Because the
+arithmetic is exact, no symbolic perturbation is needed: a vertex on an edge is on
 it, and touching is touching. Results: subject inside the window gives the subject, window
 inside the subject gives the window, identical polygons give the polygon, touching without
 overlap (at a point or along an edge) gives nothing. Collinear vertices are dropped from the
