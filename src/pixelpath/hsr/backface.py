@@ -53,9 +53,11 @@ def front_facing(normals: np.ndarray, points: np.ndarray, eye: Any) -> np.ndarra
     >>> front_facing([[1.0, 0.0, 0.0]], [[2.0, 0.0, 0.0]], eye=(5, 0, 0)).tolist()
     [True]
     """
-    normals = np.asarray(normals, dtype=np.float64)
-    points = np.asarray(points, dtype=np.float64)
-    eye = np.asarray(eye, dtype=np.float64)
+    from pixelpath.raster._arrays import kernel_array
+
+    normals = kernel_array(normals)
+    points = kernel_array(points)
+    eye = kernel_array(eye)
     if normals.ndim != 2 or normals.shape[1] != 3 or points.shape != normals.shape:
         raise ValueError(
             f"normals and points must both have shape (F, 3), got {normals.shape} and "
@@ -66,7 +68,5 @@ def front_facing(normals: np.ndarray, points: np.ndarray, eye: Any) -> np.ndarra
     from pixelpath.raster import _kernels
 
     out = np.empty(len(normals), dtype=np.bool_)
-    _kernels.front_facing_many(
-        np.ascontiguousarray(normals), np.ascontiguousarray(points), eye, out
-    )
+    _kernels.front_facing_many(normals, points, eye, out)
     return out

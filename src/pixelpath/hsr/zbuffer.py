@@ -97,6 +97,7 @@ def zbuffer(
     from pixelpath.hsr.backface import front_facing
     from pixelpath.lighting import pack_lights
     from pixelpath.raster import _kernels
+    from pixelpath.raster._arrays import kernel_array
     from pixelpath.raster.frustum import classify, clip_crossing
     from pixelpath.raster.shading import shading_mode
     from pixelpath.raster.tessellate import scene_geometry
@@ -110,9 +111,9 @@ def zbuffer(
 
     # 1. Geometry and object-space back-face culling.
     geometry = scene_geometry(scene, camera)
-    eye = np.asarray(camera.eye, dtype=np.float64)
+    eye = kernel_array(camera.eye)
     lights = pack_lights(scene.lights)
-    ambient = np.asarray(scene.ambient, dtype=np.float64)
+    ambient = kernel_array(scene.ambient)
     front = front_facing(geometry.polygon_normals, geometry.polygon_points, eye)
     polygon_keep = front if backface_cull else np.ones(len(front), dtype=np.bool_)
     keep = polygon_keep[geometry.triangle_polygon]
@@ -155,7 +156,7 @@ def zbuffer(
     rgb = np.empty((height, width, 3), dtype=np.float32)
     depth = np.empty((height, width), dtype=np.float32)
     object_id = np.empty((height, width), dtype=np.int32)
-    background = np.asarray(scene.background, dtype=np.float64)
+    background = kernel_array(scene.background)
     _kernels.shade_deferred(
         triangle_id, inv_depth, setup, triangles, positions, normals, colors, info,
         flat_colors, geometry.materials, lights, ambient, eye, mode, bool(blinn), background,

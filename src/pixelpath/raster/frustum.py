@@ -18,6 +18,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from pixelpath.raster._arrays import kernel_array
+
 __all__ = ["clip_to_frustum"]
 
 
@@ -58,13 +60,13 @@ def clip_to_frustum(
     >>> bool(np.all(out[3:, 2] >= -out[3:, 3]))
     True
     """
-    vertices = np.ascontiguousarray(vertices, dtype=np.float64)
+    vertices = kernel_array(vertices)
     if vertices.ndim != 2 or vertices.shape[1] < 4:
         raise ValueError(f"vertices must have shape (V, k) with k >= 4, got {vertices.shape}")
     triangles = _triangle_indices(triangles, len(vertices))
     if keep is None:
         keep = np.ones(len(triangles), dtype=np.bool_)
-    keep = np.ascontiguousarray(keep, dtype=np.bool_)
+    keep = kernel_array(keep, np.bool_)
     if keep.shape != (len(triangles),):
         raise ValueError(f"keep must have shape ({len(triangles)},), got {keep.shape}")
     if not np.all(np.isfinite(vertices[:, :4])):
@@ -135,4 +137,4 @@ def _triangle_indices(triangles: np.ndarray, vertex_count: int) -> np.ndarray:
             f"triangles index vertices 0..{vertex_count - 1}, got indices "
             f"{array.min()}..{array.max()}"
         )
-    return np.ascontiguousarray(array, dtype=np.intp)
+    return kernel_array(array, np.intp)

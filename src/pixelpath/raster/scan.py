@@ -22,6 +22,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from pixelpath.raster._arrays import kernel_array
+
 __all__ = ["coverage", "interpolate", "scan_convert"]
 
 
@@ -172,5 +174,5 @@ def interpolate(
         )
     width, height, triangles, setup, _ = _setup(points, triangles, width, height)
     out = np.full((height, width, table.shape[1]), np.nan)
-    _kernels.interpolate_values(setup, triangles, np.ascontiguousarray(table), triangle_id, out)
+    _kernels.interpolate_values(setup, triangles, kernel_array(table), triangle_id, out)
     return out[..., 0] if single else out

@@ -23,6 +23,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from pixelpath.raster._arrays import kernel_array
+
 __all__ = ["SHADINGS", "shade_points", "shading_mode"]
 
 SHADINGS = ("flat", "gouraud", "phong")
@@ -99,14 +101,14 @@ def shade_points(
 
     out = np.empty((len(points), 3))
     _kernels.shade_points(
-        np.ascontiguousarray(points, dtype=np.float64),
-        np.ascontiguousarray(normals, dtype=np.float64),
-        np.ascontiguousarray(flip, dtype=np.bool_),
-        np.ascontiguousarray(owner, dtype=np.intp),
-        materials,
-        lights,
-        ambient,
-        eye,
+        kernel_array(points),
+        kernel_array(normals),
+        kernel_array(flip, np.bool_),
+        kernel_array(owner, np.intp),
+        kernel_array(materials),
+        kernel_array(lights),
+        kernel_array(ambient),
+        kernel_array(eye),
         bool(blinn),
         out,
     )

@@ -20,6 +20,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from pixelpath.raster._arrays import kernel_array
+
 if TYPE_CHECKING:
     from pixelpath.scene import Camera
 
@@ -87,7 +89,7 @@ def clip_to_screen(clip: np.ndarray, width: int, height: int) -> np.ndarray:
 
 def _points(values: np.ndarray, size: int, name: str) -> np.ndarray:
     """Return ``values`` as a finite contiguous float64 (N, size) array, or raise ValueError."""
-    array = np.ascontiguousarray(values, dtype=np.float64)
+    array = kernel_array(values)
     if array.ndim != 2 or array.shape[1] != size:
         raise ValueError(f"{name} must have shape (N, {size}), got shape {array.shape}")
     if not np.all(np.isfinite(array)):
