@@ -69,6 +69,15 @@ def test_plot_writes_pngs(tmp_path):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["bridges.png", "stages.png"]
 
 
+def test_weiler_atherton_plot_with_a_concave_window(tmp_path, capsys):
+    pytest.importorskip("matplotlib")
+    path = tmp_path / "pieces.png"
+    argv = ["clip", "0,0 6,0 6,6 0,6", "--window", "1,1 5,1 5,5 3,2 1,5"]
+    assert main([*argv, "--method", "weiler-atherton", "--plot", str(path)]) == 0
+    assert "piece 1: (1, 1) -> (5, 1) -> (5, 5) -> (3, 2) -> (1, 5)" in capsys.readouterr().out
+    assert path.read_bytes()[:4] == b"\x89PNG"
+
+
 def test_plot_without_matplotlib_says_how_to_install_it(monkeypatch, tmp_path, capsys):
     from pixelpath.clip.plot import plot_trace
 

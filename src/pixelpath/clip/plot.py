@@ -20,7 +20,7 @@ from pixelpath.clip.sutherland_hodgman import (
     zero_width_bridges,
 )
 from pixelpath.clip.weiler_atherton import weiler_atherton
-from pixelpath.clip.window import as_window
+from pixelpath.clip.window import Rect, as_window
 
 __all__ = ["plot_bridges", "plot_trace"]
 
@@ -83,7 +83,8 @@ def plot_bridges(subject: np.ndarray, window: object, path: str | os.PathLike) -
     subject : (N, 2) array_like
         A simple polygon, typically concave.
     window : Rect or (K, 2) array_like
-        A convex window (Sutherland-Hodgman needs one).
+        The window; when it is concave Sutherland-Hodgman does not apply and only
+        Weiler-Atherton's pieces are drawn.
     path : str or path-like
         The PNG file to write.
 
@@ -106,28 +107,43 @@ def plot_bridges(subject: np.ndarray, window: object, path: str | os.PathLike) -
     PosixPath('bridges.png')
     """
     plt = _pyplot()
-    window = as_window(window)
     subject = np.asarray(subject, dtype=np.float64)
+    pieces = weiler_atherton(subject, window)
+    try:
+        convex = as_window(window)
+    except ValueError:  # a concave window: Sutherland-Hodgman does not apply
+        convex = None
+    outline = np.asarray(window.vertices if isinstance(window, Rect) else window, dtype=float)
+    panels = 1 if convex is None else 2
+    fig, axes = plt.subplots(1, panels, figsize=(3.0 * panels, 3.0), sharex=True, sharey=True,
+                             squeeze=False)
+    axes = axes[0]
+    for ax in axes:
+        _fill(ax, subject, color="lightgray", alpha=0.4)
+        _outline(ax, outline, **WINDOW_STYLE)
+    if convex is not None:
+        _draw_bridged(axes[0], subject, convex)
+    colours = ("tab:green", "tab:purple", "tab:cyan")
+    for k, piece in enumerate(pieces):
+        _fill(axes[-1], piece, color=colours[k % len(colours)], alpha=0.6)
+    noun = "piece" if len(pieces) == 1 else "pieces"
+    axes[-1].set_title(f"weiler_atherton: {len(pieces)} {noun}", fontsize=9)
+    return _save(fig, axes, path)
+
+
+def _draw_bridged(ax, subject: np.ndarray, window) -> None:
+    """Sutherland-Hodgman's single polygon, its zero-width bridges in red."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", ZeroWidthBridgeWarning)
         clipped = sutherland_hodgman(subject, window)
-    fig, axes = plt.subplots(1, 2, figsize=(6.0, 3.0), sharex=True, sharey=True)
-    for ax in axes:
-        _fill(ax, subject, color="lightgray", alpha=0.4)
-        _outline(ax, window.vertices, **WINDOW_STYLE)
-    _fill(axes[0], clipped, **RESULT_STYLE)
-    _outline(axes[0], clipped, color="tab:orange", linewidth=1.0)
-    for bridge in zero_width_bridges(clipped, window):
-        axes[0].plot(*bridge.T, color="tab:red", linewidth=3, label="zero-width bridge")
-    if axes[0].get_legend_handles_labels()[0]:
-        axes[0].legend(loc="lower right", fontsize=7)
-    axes[0].set_title("sutherland_hodgman: one polygon", fontsize=9)
-    pieces = weiler_atherton(subject, window)
-    for piece, colour in zip(pieces, ("tab:green", "tab:purple", "tab:cyan") * len(pieces),
-                             strict=False):
-        _fill(axes[1], piece, color=colour, alpha=0.6)
-    axes[1].set_title(f"weiler_atherton: {len(pieces)} pieces", fontsize=9)
-    return _save(fig, axes, path)
+    _fill(ax, clipped, **RESULT_STYLE)
+    if len(clipped):
+        _outline(ax, clipped, color="tab:orange", linewidth=1.0)
+    for bridge in zero_width_bridges(clipped, window) if len(clipped) else ():
+        ax.plot(*bridge.T, color="tab:red", linewidth=3, label="zero-width bridge")
+    if ax.get_legend_handles_labels()[0]:
+        ax.legend(loc="lower right", fontsize=7)
+    ax.set_title("sutherland_hodgman: one polygon", fontsize=9)
 
 
 def _pyplot():

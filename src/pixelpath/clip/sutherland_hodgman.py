@@ -45,12 +45,34 @@ __all__ = [
 
 
 class ZeroWidthBridgeWarning(UserWarning):
-    """The clipped polygon runs along the window boundary and back (a concave subject)."""
+    """The clipped polygon runs along the window boundary and back (a concave subject).
+
+    Examples
+    --------
+    >>> import warnings
+    >>> from pixelpath.clip import Rect, ZeroWidthBridgeWarning, sutherland_hodgman
+    >>> notched = [(0, 0), (6, 0), (6, 6), (0, 6), (0, 4), (4, 4), (4, 2), (0, 2)]
+    >>> with warnings.catch_warnings(record=True) as caught:
+    ...     warnings.simplefilter("always")
+    ...     _ = sutherland_hodgman(notched, Rect(-1, -1, 3, 7))
+    >>> caught[0].category is ZeroWidthBridgeWarning
+    True
+    """
 
 
 @dataclass(frozen=True)
 class ClipStep:
-    """One (S, E) pair of a stage: where each end lies and what the notes' rule emitted."""
+    """One (S, E) pair of a stage: where each end lies and what the notes' rule emitted.
+
+    Examples
+    --------
+    >>> from pixelpath.clip import Rect, sutherland_hodgman
+    >>> _, trace = sutherland_hodgman([(1, 1), (9, 1), (9, 7), (1, 7)], Rect(2, 2, 8, 6),
+    ...                               trace=True)
+    >>> step = trace.stages[0].steps[1]  # S = (1, 1) outside, E = (9, 1) inside the left edge
+    >>> step.case, step.emitted.tolist()
+    ('out -> in', [[2.0, 1.0], [9.0, 1.0]])
+    """
 
     s: np.ndarray
     e: np.ndarray
@@ -66,7 +88,17 @@ class ClipStep:
 
 @dataclass(frozen=True)
 class ClipStage:
-    """The work of one boundary: its input list, its (S, E) steps and its output list."""
+    """The work of one boundary: its input list, its (S, E) steps and its output list.
+
+    Examples
+    --------
+    >>> from pixelpath.clip import Rect, sutherland_hodgman
+    >>> _, trace = sutherland_hodgman([(1, 1), (9, 1), (9, 7), (1, 7)], Rect(2, 2, 8, 6),
+    ...                               trace=True)
+    >>> stage = trace.stages[1]
+    >>> stage.boundary, stage.output.tolist()
+    ('right', [[2.0, 1.0], [8.0, 1.0], [8.0, 7.0], [2.0, 7.0]])
+    """
 
     boundary: str
     input: np.ndarray

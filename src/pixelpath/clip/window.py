@@ -84,7 +84,14 @@ class Rect:
 
 @dataclass(frozen=True)
 class ConvexWindow:
-    """A validated convex polygon window (built by :func:`as_window`)."""
+    """A validated convex polygon window (built by :func:`as_window`).
+
+    Examples
+    --------
+    >>> from pixelpath.clip.window import as_window
+    >>> as_window([(0, 0), (0, 2), (2, 0)]).boundary_names
+    ('edge 1', 'edge 2', 'edge 3')
+    """
 
     vertices: np.ndarray
     table: np.ndarray
@@ -96,7 +103,15 @@ class ConvexWindow:
 
 
 def boundary_names(window: Rect | ConvexWindow) -> tuple[str, ...]:
-    """Return the names of the window's boundaries in clipping order."""
+    """Return the names of the window's boundaries in clipping order.
+
+    Examples
+    --------
+    >>> from pixelpath.clip import Rect
+    >>> from pixelpath.clip.window import boundary_names
+    >>> boundary_names(Rect(0, 0, 1, 1))
+    ('left', 'right', 'bottom', 'top')
+    """
     return RECT_BOUNDARIES if isinstance(window, Rect) else window.boundary_names
 
 
@@ -107,6 +122,16 @@ def as_window(window: object) -> Rect | ConvexWindow:
     ------
     ValueError
         If the polygon is degenerate or not convex (the message names the reflex vertex).
+
+    Examples
+    --------
+    >>> from pixelpath.clip.window import as_window
+    >>> as_window([(0, 0), (2, 0), (2, 2), (0, 2)]).vertices.shape
+    (4, 2)
+    >>> as_window([(0, 0), (4, 2), (0, 4), (1, 2)])  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    ValueError: window: not convex, vertex 3 at (1, 2) is reflex; ...
     """
     if isinstance(window, (Rect, ConvexWindow)):
         return window
