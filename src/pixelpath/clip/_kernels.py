@@ -208,19 +208,24 @@ def _scan_bridges(poly, m, table, out):
     directions: Sutherland-Hodgman's way of joining pieces of a concave subject.
     """
     count = 0
+    spans = np.empty((m, 2))  # the polygon's edges lying on one boundary, as positions along it
     for k in range(table.shape[0]):
         row = table[k]
         # Along a slanted edge (positions in units of its length) a rounding-sized overlap is
         # no bridge: clipping a clipped polygon again can wiggle a vertex by an ulp.
         shortest = ON_EDGE_RTOL if row[0] == EDGE else 0.0
+        found = 0
         for i in range(m):
             t0, t1, on = _edge_on_boundary(poly, m, i, row)
-            if not on:
-                continue
-            for j in range(i + 1, m):
-                u0, u1, on_j = _edge_on_boundary(poly, m, j, row)
-                if not on_j or (t1 > t0) == (u1 > u0):
-                    continue
+            if on:
+                spans[found, 0], spans[found, 1] = t0, t1
+                found += 1
+        for i in range(found):
+            t0, t1 = spans[i, 0], spans[i, 1]
+            for j in range(i + 1, found):
+                u0, u1 = spans[j, 0], spans[j, 1]
+                if (t1 > t0) == (u1 > u0):
+                    continue  # same direction: no doubling back
                 lo = max(min(t0, t1), min(u0, u1))
                 hi = min(max(t0, t1), max(u0, u1))
                 if hi - lo > shortest:
