@@ -139,7 +139,7 @@ def zbuffer(
     flat_colors = _flat_colors(geometry, polygon, ~front, mode, lights, ambient, eye, blinn)
     advance(1)
 
-    # 4. Viewport and scan conversion with the depth test.
+    # 4. Viewport and triangle set-up.
     screen = np.empty((len(clip), 3))
     _kernels.clip_to_screen(clip, width, height, screen)
     setup = np.empty((len(triangles), _kernels.SETUP_FIELDS))
@@ -147,20 +147,17 @@ def zbuffer(
     _kernels.setup_triangles(screen, triangles, height, setup, rows)
     n_bands = -(-height // _kernels.BAND_ROWS)
     offsets, items = _kernels.bin_triangles(rows, n_bands, _kernels.BAND_ROWS)
-    _kernels.rasterize_bands(
-        setup, rows, offsets, items, _kernels.BAND_ROWS, inv_depth, triangle_id
-    )
     advance(1)
 
-    # 5. Deferred shading of the visible pixels.
+    # 5. Scan conversion with the depth test, then deferred shading, band by band.
     rgb = np.empty((height, width, 3), dtype=np.float32)
     depth = np.empty((height, width), dtype=np.float32)
     object_id = np.empty((height, width), dtype=np.int32)
     background = kernel_array(scene.background)
-    _kernels.shade_deferred(
-        triangle_id, inv_depth, setup, triangles, positions, normals, colors, info,
-        flat_colors, geometry.materials, lights, ambient, eye, mode, bool(blinn), background,
-        rgb, depth, object_id,
+    _kernels.render_bands(
+        setup, rows, offsets, items, _kernels.BAND_ROWS, inv_depth, triangle_id, triangles,
+        positions, normals, colors, info, flat_colors, geometry.materials, lights, ambient, eye,
+        mode, bool(blinn), background, rgb, depth, object_id,
     )
     advance(1)
     return Frame(rgb=rgb, depth=depth, object_id=object_id)

@@ -18,9 +18,10 @@ The pipeline these kernels implement (driven by :mod:`pixelpath.hsr.zbuffer`):
    get bit-identical spans. The image is cut into bands of rows run in parallel; each band
    visits its triangles in ascending order and keeps a sample only when it is strictly nearer,
    so ties go to the lower triangle index whatever the thread count (deterministic output).
-4. ``shade_deferred``: the depth test stored only (1/w, triangle) per pixel; shading runs once
-   per visible pixel afterwards, from the perspective-correct barycentric weights
-   ``b_i = (s_i / w_i) / sum_k (s_k / w_k)`` of the screen weights ``s_i``.
+4. ``render_bands``: the same, then, while the band is still in cache, shading once per visible
+   pixel (deferred): the depth test stored only (1/w, triangle) per pixel; shading uses the
+   perspective-correct barycentric weights ``b_i = (s_i / w_i) / sum_k (s_k / w_k)`` of the
+   screen weights ``s_i``.
 """
 
 from __future__ import annotations
@@ -201,10 +202,14 @@ def _above(xa, ya, xb, yb):
     return ya < yb or (ya == yb and xa < xb)
 
 
-@njit(parallel=True)
+@njit
 def setup_triangles(screen, triangles, height, setup, rows):
-    """Fill the set-up record (T, SETUP_FIELDS) and the covered rows [first, stop) (T, 2)."""
-    for t in prange(triangles.shape[0]):
+    """Fill the set-up record (T, SETUP_FIELDS) and the covered rows [first, stop) (T, 2).
+
+    Serial on purpose: it costs well under a millisecond for 70k triangles, less than waking
+    the worker threads for a parallel loop (only ``render_bands`` is worth that).
+    """
+    for t in range(triangles.shape[0]):
         a, b, c = triangles[t, 0], triangles[t, 1], triangles[t, 2]
         xa, ya, wa = screen[a, 0], screen[a, 1], screen[a, 2]
         xb, yb, wb = screen[b, 0], screen[b, 1], screen[b, 2]
@@ -287,6 +292,29 @@ def bin_triangles(rows, n_bands, band_rows):
     return offsets, items
 
 
+@njit
+def _rasterize_band(setup, rows, offsets, items, band, band_rows, inv_depth, triangle_id):
+    """Clear one band of rows, then depth-test its triangles' pixels (nearest 1/w wins)."""
+    height, width = inv_depth.shape
+    band_first = band * band_rows
+    band_stop = min(band_first + band_rows, height)
+    inv_depth[band_first:band_stop] = 0.0
+    triangle_id[band_first:band_stop] = -1
+    for k in range(offsets[band], offsets[band + 1]):
+        t = items[k]
+        record = setup[t]
+        pa, pb, pc = record[INVW_PLANE], record[INVW_PLANE + 1], record[INVW_PLANE + 2]
+        for j in range(max(rows[t, 0], band_first), min(rows[t, 1], band_stop)):
+            y = j + 0.5
+            first, stop = scanline_span(record, y, width)
+            row_value = pb * y + pc
+            for i in range(first, stop):
+                inv_w = pa * (i + 0.5) + row_value
+                if inv_w > inv_depth[j, i]:
+                    inv_depth[j, i] = inv_w
+                    triangle_id[j, i] = t
+
+
 @njit(parallel=True)
 def rasterize_bands(setup, rows, offsets, items, band_rows, inv_depth, triangle_id):
     """Depth-test every triangle's pixels, keeping the nearest (largest 1/w) per pixel.
@@ -294,25 +322,8 @@ def rasterize_bands(setup, rows, offsets, items, band_rows, inv_depth, triangle_
     Each band first clears its rows of ``inv_depth`` (H, W) to 0 (infinitely far) and of
     ``triangle_id`` (H, W) to -1 (nothing), so the buffers may hold anything on entry.
     """
-    height, width = inv_depth.shape
     for band in prange(offsets.shape[0] - 1):
-        band_first = band * band_rows
-        band_stop = min(band_first + band_rows, height)
-        inv_depth[band_first:band_stop] = 0.0
-        triangle_id[band_first:band_stop] = -1
-        for k in range(offsets[band], offsets[band + 1]):
-            t = items[k]
-            record = setup[t]
-            pa, pb, pc = record[INVW_PLANE], record[INVW_PLANE + 1], record[INVW_PLANE + 2]
-            for j in range(max(rows[t, 0], band_first), min(rows[t, 1], band_stop)):
-                y = j + 0.5
-                first, stop = scanline_span(record, y, width)
-                row_value = pb * y + pc
-                for i in range(first, stop):
-                    inv_w = pa * (i + 0.5) + row_value
-                    if inv_w > inv_depth[j, i]:
-                        inv_depth[j, i] = inv_w
-                        triangle_id[j, i] = t
+        _rasterize_band(setup, rows, offsets, items, band, band_rows, inv_depth, triangle_id)
 
 
 @njit
@@ -392,7 +403,54 @@ def _clamp01(value):
 
 
 @njit(parallel=True)
-def shade_deferred(
+def render_bands(
+    setup,
+    rows,
+    offsets,
+    items,
+    band_rows,
+    inv_depth,
+    triangle_id,
+    triangles,
+    positions,
+    normals,
+    colors,
+    triangle_info,
+    flat_colors,
+    materials,
+    lights,
+    ambient,
+    eye,
+    mode,
+    blinn,
+    background,
+    rgb,
+    depth,
+    object_id,
+):
+    """Rasterize each band of rows, then shade its visible pixels once (deferred shading).
+
+    One parallel pass: a band's depth and triangle buffers are still in cache when it is
+    shaded. Writes clamped RGB (H, W, 3) (``background`` where nothing was drawn), the
+    view-axis depth (H, W) (``inf`` there) and the object id (H, W) (-1 there).
+    ``triangle_info`` (T, 2) int: the object index (into ``materials``) and a flip flag (1 when
+    the face is seen from behind, so its normals are turned towards the viewer).
+    """
+    height = inv_depth.shape[0]
+    for band in prange(offsets.shape[0] - 1):
+        _rasterize_band(setup, rows, offsets, items, band, band_rows, inv_depth, triangle_id)
+        out = np.empty(3)
+        for j in range(band * band_rows, min((band + 1) * band_rows, height)):
+            _shade_row(
+                j, triangle_id, inv_depth, setup, triangles, positions, normals, colors,
+                triangle_info, flat_colors, materials, lights, ambient, eye, mode, blinn,
+                background, rgb, depth, object_id, out,
+            )
+
+
+@njit
+def _shade_row(
+    j,
     triangle_id,
     inv_depth,
     setup,
@@ -412,69 +470,61 @@ def shade_deferred(
     rgb,
     depth,
     object_id,
+    out,
 ):
-    """Shade every drawn pixel once, after visibility is resolved, and fill the output buffers.
-
-    Writes clamped RGB (H, W, 3) (``background`` where nothing was drawn), the view-axis
-    depth (H, W) (``inf`` there) and the object id (H, W) (-1 there). ``triangle_info`` (T, 2)
-    int: the object index (into ``materials``) and a flip flag (1 when the face is seen from
-    behind, so its normals are turned towards the viewer).
-    """
-    height, width = triangle_id.shape
-    for j in prange(height):
-        out = np.empty(3)
-        for i in range(width):
-            t = triangle_id[j, i]
-            if t < 0:
-                for channel in range(3):
-                    rgb[j, i, channel] = background[channel]
-                depth[j, i] = np.inf
-                object_id[j, i] = -1
-                continue
-            depth[j, i] = 1.0 / inv_depth[j, i]
-            object_id[j, i] = triangle_info[t, 0]
-            if mode == FLAT:
-                for channel in range(3):
-                    rgb[j, i, channel] = _clamp01(flat_colors[t, channel])
-                continue
-            b0, b1, b2 = perspective_weights(setup[t], i + 0.5, j + 0.5)
-            a, b, c = triangles[t, 0], triangles[t, 1], triangles[t, 2]
-            if mode == GOURAUD:
-                first = BACK_COLOR if triangle_info[t, 1] else COLOR
-                for channel in range(3):
-                    value = _mix(colors, a, b, c, b0, b1, b2, first + channel)
-                    rgb[j, i, channel] = _clamp01(value)
-                continue
-            px = _mix(positions, a, b, c, b0, b1, b2, 0)
-            py = _mix(positions, a, b, c, b0, b1, b2, 1)
-            pz = _mix(positions, a, b, c, b0, b1, b2, 2)
-            nx = _mix(normals, a, b, c, b0, b1, b2, 0)
-            ny = _mix(normals, a, b, c, b0, b1, b2, 1)
-            nz = _mix(normals, a, b, c, b0, b1, b2, 2)
-            length = math.sqrt(nx * nx + ny * ny + nz * nz)
-            if length > 0.0:
-                scale = (-1.0 if triangle_info[t, 1] else 1.0) / length
-                nx *= scale
-                ny *= scale
-                nz *= scale
-            shade_point(
-                px,
-                py,
-                pz,
-                nx,
-                ny,
-                nz,
-                eye[0],
-                eye[1],
-                eye[2],
-                materials[triangle_info[t, 0]],
-                lights,
-                ambient,
-                blinn,
-                out,
-            )
+    """Fill row j of the output buffers from the triangle seen at each of its pixels."""
+    for i in range(triangle_id.shape[1]):
+        t = triangle_id[j, i]
+        if t < 0:
             for channel in range(3):
-                rgb[j, i, channel] = _clamp01(out[channel])
+                rgb[j, i, channel] = background[channel]
+            depth[j, i] = np.inf
+            object_id[j, i] = -1
+            continue
+        depth[j, i] = 1.0 / inv_depth[j, i]
+        object_id[j, i] = triangle_info[t, 0]
+        if mode == FLAT:
+            for channel in range(3):
+                rgb[j, i, channel] = _clamp01(flat_colors[t, channel])
+            continue
+        b0, b1, b2 = perspective_weights(setup[t], i + 0.5, j + 0.5)
+        a, b, c = triangles[t, 0], triangles[t, 1], triangles[t, 2]
+        if mode == GOURAUD:
+            first = BACK_COLOR if triangle_info[t, 1] else COLOR
+            for channel in range(3):
+                value = _mix(colors, a, b, c, b0, b1, b2, first + channel)
+                rgb[j, i, channel] = _clamp01(value)
+            continue
+        px = _mix(positions, a, b, c, b0, b1, b2, 0)
+        py = _mix(positions, a, b, c, b0, b1, b2, 1)
+        pz = _mix(positions, a, b, c, b0, b1, b2, 2)
+        nx = _mix(normals, a, b, c, b0, b1, b2, 0)
+        ny = _mix(normals, a, b, c, b0, b1, b2, 1)
+        nz = _mix(normals, a, b, c, b0, b1, b2, 2)
+        length = math.sqrt(nx * nx + ny * ny + nz * nz)
+        if length > 0.0:
+            scale = (-1.0 if triangle_info[t, 1] else 1.0) / length
+            nx *= scale
+            ny *= scale
+            nz *= scale
+        shade_point(
+            px,
+            py,
+            pz,
+            nx,
+            ny,
+            nz,
+            eye[0],
+            eye[1],
+            eye[2],
+            materials[triangle_info[t, 0]],
+            lights,
+            ambient,
+            blinn,
+            out,
+        )
+        for channel in range(3):
+            rgb[j, i, channel] = _clamp01(out[channel])
 
 
 @register_warmup
@@ -512,8 +562,9 @@ def warmup() -> None:
     depth = np.empty((8, 8), dtype=np.float32)
     object_id = np.empty((8, 8), dtype=np.int32)
     for mode in (FLAT, GOURAUD, PHONG):
-        shade_deferred(
-            triangle_id, inv_depth, setup, triangles, positions, normals, np.zeros((3, 6)),
-            info, np.ones((1, 3)), material, lights, np.full(3, 0.1), np.array([0.0, 0.0, 5.0]),
-            mode, False, np.zeros(3), rgb, depth, object_id,
+        render_bands(
+            setup, rows, offsets, items, BAND_ROWS, inv_depth, triangle_id, triangles,
+            positions, normals, np.zeros((3, 6)), info, np.ones((1, 3)), material, lights,
+            np.full(3, 0.1), np.array([0.0, 0.0, 5.0]), mode, False, np.zeros(3), rgb, depth,
+            object_id,
         )
