@@ -135,6 +135,7 @@ def _run_stages(xy, table, a, b):
     """
     n = xy.shape[0]
     box = _bounds(xy)
+    untraced = np.empty((0, 2))  # no room to record crossings: the stages keep no trace
     fresh = True  # the current polygon is still xy itself
     for k in range(table.shape[0]):
         row = table[k]
@@ -147,9 +148,9 @@ def _run_stages(xy, table, a, b):
         if a.shape[0] < need:
             a = np.empty((2 * need, 2))
         if fresh:
-            n = clip_stage(xy, n, row, a, np.empty((0, 2)))  # no trace
+            n = clip_stage(xy, n, row, a, untraced)
         else:
-            n = clip_stage(b, n, row, a, np.empty((0, 2)))
+            n = clip_stage(b, n, row, a, untraced)
         a, b = b, a  # this stage's output is the next stage's input
         fresh = False
         if n == 0:
