@@ -82,7 +82,7 @@ class Rect:
         )
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)  # compared by identity: its fields are arrays
 class ConvexWindow:
     """A validated convex polygon window (built by :func:`as_window`).
 
