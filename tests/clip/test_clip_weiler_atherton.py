@@ -161,3 +161,33 @@ def test_random_concave_pairs_agree_with_shapely(subject, window):
 def test_random_grid_pairs_with_degenerate_contacts_agree_with_shapely(subject, window):
     assume(is_valid_polygon(subject) and is_valid_polygon(window))
     check_against_shapely(subject, window)
+
+
+def test_subject_inside_touching_the_window_from_inside():
+    # Shares the square's left edge partly and touches its top edge at one vertex.
+    inner = [(0, 1), (2, 1), (2, 2), (1, 4), (0, 3)]
+    assert as_lists(weiler_atherton(inner, SQUARE)) == [[[0, 1], [2, 1], [2, 2], [1, 4], [0, 3]]]
+
+
+def test_window_inside_touching_the_subject_at_a_vertex():
+    window = [(0, 0), (2, 1), (1, 2)]  # its first vertex is the square's corner
+    assert as_lists(weiler_atherton(SQUARE, window)) == [[[0, 0], [2, 1], [1, 2]]]
+
+
+def test_window_edges_collinear_with_a_concave_subject_notch():
+    # The window's top edge runs exactly along the notch's floor, y = 2.
+    pieces = weiler_atherton(NOTCHED, [(1, 0), (5, 0), (5, 2), (1, 2)])
+    assert as_lists(pieces) == [[[1, 0], [5, 0], [5, 2], [1, 2]]]
+    pieces = weiler_atherton(NOTCHED, [(1, 2), (5, 2), (5, 4), (1, 4)])  # fills the notch
+    assert as_lists(pieces) == [[[4, 2], [5, 2], [5, 4], [4, 4]]]
+
+
+@given(subject=star_polygons(max_vertices=8, grid=True), corners=star_polygons(3, 3, grid=True))
+@settings(max_examples=40, deadline=None)
+def test_random_grid_subjects_against_rects_agree_with_shapely(subject, corners):
+    assume(is_valid_polygon(subject))
+    (xmin, ymin), (xmax, ymax) = corners.min(axis=0), corners.max(axis=0)
+    assume(xmin < xmax and ymin < ymax)
+    check_against_shapely(subject, Rect(xmin, ymin, xmax, ymax).vertices)
+    pieces = weiler_atherton(subject, Rect(xmin, ymin, xmax, ymax))
+    assert len(pieces) == len(weiler_atherton(subject, Rect(xmin, ymin, xmax, ymax).vertices))
