@@ -7,6 +7,7 @@ import pytest
 import shapely
 from clip_strategies import is_valid_polygon, polygonal_parts, signed_area, star_polygons
 from hypothesis import assume, given, settings
+from hypothesis import strategies as st
 
 from pixelpath.clip import Rect, weiler_atherton
 
@@ -191,3 +192,19 @@ def test_random_grid_subjects_against_rects_agree_with_shapely(subject, corners)
     check_against_shapely(subject, Rect(xmin, ymin, xmax, ymax).vertices)
     pieces = weiler_atherton(subject, Rect(xmin, ymin, xmax, ymax))
     assert len(pieces) == len(weiler_atherton(subject, Rect(xmin, ymin, xmax, ymax).vertices))
+
+
+@given(seed=st.integers(0, 2**32 - 1))
+@settings(max_examples=30, deadline=None)
+def test_interval_sweep_finds_every_overlapping_pair(seed):
+    from pixelpath.clip.weiler_atherton import _x_overlaps
+
+    rng = np.random.default_rng(seed)
+    ends_a, ends_b = rng.integers(0, 20, (2, 15, 2)) / 4  # small grid: many touching ends
+    lo_a, hi_a = ends_a.min(axis=1), ends_a.max(axis=1)
+    lo_b, hi_b = ends_b.min(axis=1), ends_b.max(axis=1)
+    i, j = _x_overlaps(lo_a, hi_a, lo_b, hi_b)
+    found = {(a, b) for a, b in zip(i.tolist(), j.tolist(), strict=True)}
+    brute = {(a, b) for a in range(15) for b in range(15)
+             if lo_a[a] <= hi_b[b] and lo_b[b] <= hi_a[a]}
+    assert brute <= found

@@ -181,11 +181,31 @@ def _candidate_pairs(a: list[Point], b: list[Point]) -> list[tuple[int, int]]:
     ends_a, ends_b = np.roll(points_a, -1, axis=0), np.roll(points_b, -1, axis=0)
     lo_a, hi_a = np.minimum(points_a, ends_a), np.maximum(points_a, ends_a)
     lo_b, hi_b = np.minimum(points_b, ends_b), np.maximum(points_b, ends_b)
-    meet = np.all((lo_a[:, None] <= hi_b[None]) & (lo_b[None] <= hi_a[:, None]), axis=2)
-    i, j = np.nonzero(meet)
+    i, j = _x_overlaps(lo_a[:, 0], hi_a[:, 0], lo_b[:, 0], hi_b[:, 0])
+    meet = np.all((lo_a[i] <= hi_b[j]) & (lo_b[j] <= hi_a[i]), axis=1)
+    i, j = i[meet], j[meet]
     p0, p1, q0, q1 = points_a[i], ends_a[i], points_b[j], ends_b[j]
     apart = _surely_one_side(p0, p1, q0, q1) | _surely_one_side(q0, q1, p0, p1)
     return list(zip(i[~apart].tolist(), j[~apart].tolist(), strict=True))
+
+
+def _x_overlaps(
+    lo_a: np.ndarray, hi_a: np.ndarray, lo_b: np.ndarray, hi_b: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """Index pairs whose x-intervals may overlap, without testing all n x m pairs.
+
+    With b's intervals sorted by their left end, an interval of b that overlaps [lo, hi] of a
+    starts in [lo - widest, hi] (widest: b's widest interval), a range found by bisection.
+    """
+    order = np.argsort(lo_b, kind="stable")
+    starts = lo_b[order]
+    widest = float(np.max(hi_b - lo_b))
+    reach = np.nextafter(lo_a - widest, -np.inf)  # rounding must not lose a candidate
+    first = np.searchsorted(starts, reach, side="left")
+    count = np.searchsorted(starts, hi_a, side="right") - first
+    i = np.repeat(np.arange(lo_a.size), count)
+    offset = np.arange(i.size) - np.repeat(np.cumsum(count) - count, count)
+    return i, order[np.repeat(first, count) + offset]
 
 
 # (3 + 16 eps) eps with eps = 2**-53, rounded up: bounds the error of the float orientation.
