@@ -116,7 +116,7 @@ def render_steps(method: str = "zbuffer") -> int:
     --------
     >>> from pixelpath.renderer import render_steps
     >>> render_steps("zbuffer")
-    4
+    11
     """
     from pixelpath.hsr import METHODS
     from pixelpath.hsr.zbuffer import STEPS

@@ -22,6 +22,7 @@ The pipeline (:mod:`pixelpath.raster`):
 from __future__ import annotations
 
 import dataclasses
+import itertools
 import threading
 from collections.abc import Callable
 
@@ -31,7 +32,9 @@ from pixelpath.scene import Camera, Scene
 
 __all__ = ["STEPS", "Frame", "zbuffer"]
 
-STEPS = 4  # progress callbacks per frame
+RENDER_SLICES = 8  # progress steps of the rasterize-and-shade pass
+SLICED_PIXELS = 1 << 22  # frames this large report that pass slice by slice
+STEPS = 3 + RENDER_SLICES  # progress steps per frame
 
 
 @dataclasses.dataclass(frozen=True)
@@ -78,7 +81,7 @@ def zbuffer(
     blinn : bool
         Blinn-Phong highlights instead of Phong's.
     progress : callable, optional
-        Called with 1 after each of the ``STEPS`` stages.
+        Called with a number of steps done as work advances (``STEPS`` in all).
 
     Returns
     -------
@@ -154,12 +157,17 @@ def zbuffer(
     depth = np.empty((height, width), dtype=np.float32)
     object_id = np.empty((height, width), dtype=np.int32)
     background = kernel_array(scene.background)
-    _kernels.render_bands(
-        setup, rows, offsets, items, _kernels.BAND_ROWS, inv_depth, triangle_id, triangles,
-        positions, normals, colors, info, flat_colors, geometry.materials, lights, ambient, eye,
-        mode, bool(blinn), background, rgb, depth, object_id,
-    )
-    advance(1)
+    # Large frames go in slices of bands so that a progress bar can move.
+    slices = RENDER_SLICES if height * width >= SLICED_PIXELS else 1
+    bounds = np.linspace(0, n_bands, slices + 1).astype(int).tolist()
+    for start, stop in itertools.pairwise(bounds):
+        _kernels.render_bands(
+            start, stop, setup, rows, offsets, items, _kernels.BAND_ROWS, inv_depth,
+            triangle_id, triangles, positions, normals, colors, info, flat_colors,
+            geometry.materials, lights, ambient, eye, mode, bool(blinn), background, rgb, depth,
+            object_id,
+        )
+        advance(RENDER_SLICES // slices)
     return Frame(rgb=rgb, depth=depth, object_id=object_id)
 
 

@@ -404,6 +404,8 @@ def _clamp01(value):
 
 @njit(parallel=True)
 def render_bands(
+    band_start,
+    band_stop,
     setup,
     rows,
     offsets,
@@ -428,7 +430,7 @@ def render_bands(
     depth,
     object_id,
 ):
-    """Rasterize each band of rows, then shade its visible pixels once (deferred shading).
+    """Rasterize bands [band_start, band_stop) of rows, then shade their visible pixels once.
 
     One parallel pass: a band's depth and triangle buffers are still in cache when it is
     shaded. Writes clamped RGB (H, W, 3) (``background`` where nothing was drawn), the
@@ -437,7 +439,7 @@ def render_bands(
     the face is seen from behind, so its normals are turned towards the viewer).
     """
     height = inv_depth.shape[0]
-    for band in prange(offsets.shape[0] - 1):
+    for band in prange(band_start, band_stop):
         _rasterize_band(setup, rows, offsets, items, band, band_rows, inv_depth, triangle_id)
         out = np.empty(3)
         for j in range(band * band_rows, min((band + 1) * band_rows, height)):
@@ -563,8 +565,8 @@ def warmup() -> None:
     object_id = np.empty((8, 8), dtype=np.int32)
     for mode in (FLAT, GOURAUD, PHONG):
         render_bands(
-            setup, rows, offsets, items, BAND_ROWS, inv_depth, triangle_id, triangles,
-            positions, normals, np.zeros((3, 6)), info, np.ones((1, 3)), material, lights,
-            np.full(3, 0.1), np.array([0.0, 0.0, 5.0]), mode, False, np.zeros(3), rgb, depth,
-            object_id,
+            0, len(offsets) - 1, setup, rows, offsets, items, BAND_ROWS, inv_depth,
+            triangle_id, triangles, positions, normals, np.zeros((3, 6)), info, np.ones((1, 3)),
+            material, lights, np.full(3, 0.1), np.array([0.0, 0.0, 5.0]), mode, False,
+            np.zeros(3), rgb, depth, object_id,
         )
