@@ -12,6 +12,8 @@ import importlib
 import sys
 from collections.abc import Sequence
 
+from rich.markup import escape
+
 from pixelpath import __version__
 from pixelpath.cli._common import CommandError, error_console
 
@@ -66,7 +68,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         return int(args.run(args) or 0)
     except (CommandError, ValueError, TypeError, FileNotFoundError) as exc:
-        error_console().print(f"[bold red]pixelpath {args.command}: error:[/] {exc}")
+        # escape: messages may hold brackets ("pixelpath[plot]") that are not rich markup.
+        error_console().print(f"[bold red]pixelpath {args.command}: error:[/] {escape(str(exc))}")
         return 2
     except KeyboardInterrupt:
         return 130

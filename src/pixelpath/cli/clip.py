@@ -109,14 +109,12 @@ def parse_window(text: str):
 def _plot(path: str | None, function: str, *args) -> None:
     if not path:
         return
-    from rich.markup import escape
-
     from pixelpath.clip import plot
 
     try:
         written = getattr(plot, function)(*args, path)
-    except ImportError as exc:  # matplotlib missing; escape keeps "[plot]" from being markup
-        raise CommandError(escape(str(exc))) from None
+    except ImportError as exc:  # matplotlib missing
+        raise CommandError(str(exc)) from None
     error_console().print(f"wrote {written}")
 
 
