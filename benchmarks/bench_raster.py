@@ -70,17 +70,17 @@ void main() {
 """
 
 
-def load_model(name: str) -> pp.Mesh:
-    """The shared mesh ``name``, or a procedural stand-in of similar size when it is absent."""
+def load_model(name: str) -> tuple[str, pp.Mesh]:
+    """A label and the shared mesh ``name``, or a procedural stand-in of similar size."""
     from pixelpath.scene import icosphere, torus
 
     path = MESHES / name
     if path.is_file():
-        return pp.Mesh.load(path)
-    print(f"  ({path} not found: using a procedural stand-in)")
+        return name, pp.Mesh.load(path)
+    print(f"\n({path} not found: using a procedural stand-in)")
     if name.startswith("stanford-bunny"):
-        return icosphere(subdivisions=6)
-    return torus(major_segments=80, minor_segments=40)
+        return "icosphere (bunny stand-in)", icosphere(subdivisions=6)
+    return "torus (teapot stand-in)", torus(major_segments=80, minor_segments=40)
 
 
 def framed_scene(mesh: pp.Mesh, size: int) -> pp.Scene:
@@ -170,9 +170,9 @@ def open_llvmpipe(scene: pp.Scene) -> Llvmpipe | None:
 
 
 def bench(name: str, size: int, frames: int) -> None:
-    mesh = load_model(name)
+    label, mesh = load_model(name)
     scene = framed_scene(mesh, size)
-    print(f"\n{name}: {len(mesh.triangles):,} triangles at {size}x{size}, Phong per pixel")
+    print(f"\n{label}: {len(mesh.triangles):,} triangles at {size}x{size}, Phong per pixel")
     image = pp.render(scene, shading="phong")
     median, best = time_frames(lambda: pp.render(scene, shading="phong"), frames)
     print(f"  pixelpath zbuffer  {median:7.1f} ms/frame (best {best:.1f})")
