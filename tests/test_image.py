@@ -44,6 +44,8 @@ def test_buffers_are_checked_against_the_image_size():
         Image(np.zeros((2, 2, 3)), depth=np.zeros((3, 2)))
     with pytest.raises(ValueError, match="rgb"):
         Image(np.zeros((2, 2)))
+    with pytest.raises(ValueError, match="finite"):
+        Image(np.full((2, 2, 3), np.nan))
 
 
 def test_save_round_trips_through_png(tmp_path):

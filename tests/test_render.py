@@ -90,6 +90,11 @@ def test_bad_arguments(kwargs, error, match):
         pp.render(small_scene(), **kwargs)
 
 
+def test_nan_vertices_never_reach_the_rasterizer():
+    with pytest.raises(ValueError, match="finite"):
+        pp.Mesh([[0, 0, np.nan], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]])
+
+
 def test_scene_must_be_a_scene():
     with pytest.raises(TypeError, match="Scene"):
         pp.render({"camera": None})

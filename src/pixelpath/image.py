@@ -44,6 +44,8 @@ class Image:
         rgb = np.asarray(rgb)
         if rgb.ndim != 3 or rgb.shape[2] != 3 or rgb.shape[0] == 0 or rgb.shape[1] == 0:
             raise ValueError(f"rgb must have shape (H, W, 3) with H, W >= 1, got {rgb.shape}")
+        if not np.all(np.isfinite(rgb)):
+            raise ValueError("rgb must be finite (no NaN or inf intensities)")
         size = rgb.shape[:2]
         self._rgb = _frozen(np.clip(rgb.astype(np.float32), 0.0, 1.0))
         self._depth = _frozen(_buffer(depth, size, np.float32, np.inf, "depth"))
