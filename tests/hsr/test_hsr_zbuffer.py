@@ -158,3 +158,24 @@ def test_degenerate_faces_render_without_error():
     for cull in (True, False):
         image = pp.render(pp.Scene(camera, objects=[mesh]), shading="flat", backface_cull=cull)
         assert (image.object_id == 0).sum() > 10
+
+
+def test_picture_does_not_depend_on_the_thread_count():
+    import numba
+
+    if numba.config.DISABLE_JIT or numba.config.NUMBA_NUM_THREADS < 2:
+        pytest.skip("needs compiled kernels and at least two Numba threads")
+    objects = [pp.Sphere((0, 0, 0), 1.0), pp.Plane((0, -1, 0), (0, 1, 0))]
+    camera = pp.Camera(eye=(0.5, 1, 4), target=(0, 0, 0), width=64, height=200)
+    scene = pp.Scene(camera, objects=objects, lights=[pp.PointLight((3, 4, 5))])
+    before = numba.get_num_threads()
+    try:
+        numba.set_num_threads(1)
+        one = pp.render(scene)
+        numba.set_num_threads(2)
+        two = pp.render(scene)
+    finally:
+        numba.set_num_threads(before)
+    assert np.array_equal(np.asarray(one), np.asarray(two))
+    assert np.array_equal(one.depth, two.depth)
+    assert np.array_equal(one.object_id, two.object_id)
