@@ -129,3 +129,16 @@ def test_large_frames_render_in_slices_with_the_same_result(monkeypatch):
     assert len(steps) == 3 + zbuffer.RENDER_SLICES and sum(steps) == zbuffer.STEPS
     assert np.array_equal(np.asarray(sliced), np.asarray(whole))
     assert np.array_equal(sliced.object_id, whole.object_id)
+
+
+def test_stats_count_the_pipeline():
+    # The eye (0, 0, 4) is in front of the box's z = 1 face only: the other five faces turn
+    # away from it (N.V > 0), so 10 of the 12 triangles are culled and 2 are drawn.
+    box = pp.Box((-1, -1, -1), (1, 1, 1))
+    stats = pp.render(small_scene(objects=[box])).stats
+    assert stats["triangles"] == 12
+    assert stats["back faces culled"] == 10
+    assert stats["triangles scan-converted"] == 2
+    both = pp.render(small_scene(objects=[box]), backface_cull=False).stats
+    assert both["back faces culled"] == 0 and both["triangles scan-converted"] == 12
+    assert pp.Image(np.zeros((1, 1, 3))).stats == {}

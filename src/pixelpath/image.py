@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import io
 import os
+import types
+from collections.abc import Mapping
 
 import numpy as np
 
@@ -26,6 +28,9 @@ class Image:
     object_id : (H, W) int array_like, optional
         Index into ``scene.objects`` of the object seen at each pixel, -1 for the background.
         Default: all -1.
+    stats : mapping of str to int, optional
+        Counts the renderer reports about its work (for the z-buffer: triangles culled,
+        clipped, scan-converted); empty by default.
 
     Examples
     --------
@@ -39,7 +44,11 @@ class Image:
     """
 
     def __init__(
-        self, rgb: np.ndarray, depth: np.ndarray | None = None, object_id: np.ndarray | None = None
+        self,
+        rgb: np.ndarray,
+        depth: np.ndarray | None = None,
+        object_id: np.ndarray | None = None,
+        stats: Mapping[str, int] | None = None,
     ) -> None:
         rgb = np.asarray(rgb)
         if rgb.ndim != 3 or rgb.shape[2] != 3 or rgb.shape[0] == 0 or rgb.shape[1] == 0:
@@ -50,12 +59,16 @@ class Image:
         self._rgb = _frozen(np.clip(rgb.astype(np.float32), 0.0, 1.0))
         self._depth = _frozen(_buffer(depth, size, np.float32, np.inf, "depth"))
         self._object_id = _frozen(_buffer(object_id, size, np.int32, -1, "object_id"))
+        self._stats = types.MappingProxyType(dict(stats or {}))
 
     @classmethod
-    def _from_buffers(cls, rgb: np.ndarray, depth: np.ndarray, object_id: np.ndarray) -> Image:
+    def _from_buffers(
+        cls, rgb: np.ndarray, depth: np.ndarray, object_id: np.ndarray, stats: Mapping[str, int]
+    ) -> Image:
         """Wrap a renderer's own buffers without copying (already clamped float32, int32)."""
         image = cls.__new__(cls)
         image._rgb, image._depth, image._object_id = (_frozen(a) for a in (rgb, depth, object_id))
+        image._stats = types.MappingProxyType(dict(stats))
         return image
 
     @property
@@ -72,6 +85,11 @@ class Image:
     def object_id(self) -> np.ndarray:
         """(H, W) int32 index of the object seen at each pixel; -1 for background (read-only)."""
         return self._object_id
+
+    @property
+    def stats(self) -> Mapping[str, int]:
+        """What the renderer counted while drawing this image (read-only; may be empty)."""
+        return self._stats
 
     @property
     def width(self) -> int:

@@ -59,7 +59,8 @@ def render(
     Returns
     -------
     Image
-        RGB in [0, 1] (float32), ``.depth`` and ``.object_id``.
+        RGB in [0, 1] (float32), ``.depth``, ``.object_id``, and ``.stats``: how many
+        triangles were culled, clipped and scan-converted.
 
     Raises
     ------
@@ -105,7 +106,7 @@ def render(
         progress=progress,
     )
     if factor == 1:
-        return Image._from_buffers(frame.rgb, frame.depth, frame.object_id)
+        return Image._from_buffers(frame.rgb, frame.depth, frame.object_id, frame.stats)
     return _downsample(frame, factor)
 
 
@@ -167,4 +168,5 @@ def _downsample(frame, factor: int) -> Image:
         rgb,
         np.take_along_axis(depth, pick, axis=2)[..., 0],
         np.take_along_axis(ids, pick, axis=2)[..., 0],
+        frame.stats,
     )

@@ -125,3 +125,13 @@ def test_demo_output_must_be_a_folder(tmp_path, capsys):
     file.write_text("")
     assert main(["demo", "-o", str(file)]) == 2
     assert "folder" in capsys.readouterr().err
+
+
+def test_render_explain_prints_the_pipeline_counts(scene_file, tmp_path, capsys):
+    # A box seen from the front: 12 triangles, the 6 of the three hidden faces are culled.
+    out = tmp_path / "e.png"
+    assert main(["render", str(scene_file), "-o", str(out), "--explain", "-q"]) == 0
+    text = capsys.readouterr().out
+    for stage in ("triangles", "back faces culled", "triangles scan-converted", "pixels covered"):
+        assert stage in text
+    assert out.is_file()

@@ -43,6 +43,11 @@ def register(subparsers: Any) -> None:
     parser.add_argument("--no-cull", action="store_true", help="draw back faces too (two-sided)")
     parser.add_argument("--blinn", action="store_true", help="Blinn-Phong highlights")
     parser.add_argument("--gamma", type=float, help="encode with this display gamma (e.g. 2.2)")
+    parser.add_argument(
+        "--explain",
+        action="store_true",
+        help="print what each pipeline stage did (culled, clipped, drawn, pixels covered)",
+    )
     parser.add_argument("-q", "--quiet", action="store_true", help="no progress bar or summary")
 
 
@@ -91,8 +96,13 @@ def load_scene_sized(name: str, size: str | None) -> Any:
     return scene
 
 
-def render_to_file(scene: Any, output: Path, args: argparse.Namespace, label: str) -> float:
-    """Render with the options in ``args``, showing progress; write ``output``; return seconds."""
+def render_to_file(
+    scene: Any, output: Path, args: argparse.Namespace, label: str
+) -> tuple[Any, float]:
+    """Render with the options in ``args``, showing progress; write ``output``.
+
+    Returns the image and the seconds it took.
+    """
     from pixelpath.renderer import render, render_steps
 
     if not output.parent.is_dir():
@@ -113,14 +123,16 @@ def render_to_file(scene: Any, output: Path, args: argparse.Namespace, label: st
             progress=advance,
         )
     image.save(output, gamma=args.gamma)
-    return time.perf_counter() - start
+    return image, time.perf_counter() - start
 
 
 def run(args: argparse.Namespace) -> int:
     """Render the scene and write the image."""
     scene = load_scene_sized(args.scene, args.size)
     output = Path(args.output)
-    elapsed = render_to_file(scene, output, args, Path(args.scene).stem)
+    image, elapsed = render_to_file(scene, output, args, Path(args.scene).stem)
+    if args.explain:
+        explain(scene, image, args)
     if not args.quiet:
         camera = scene.camera
         console().print(
@@ -129,3 +141,20 @@ def run(args: argparse.Namespace) -> int:
         )
     return 0
 
+
+def explain(scene: Any, image: Any, args: argparse.Namespace) -> None:
+    """Print the pipeline's counts for this frame, stage by stage."""
+    from rich.table import Table
+
+    table = Table(title=f"{args.method}, {args.shading} shading", title_justify="left")
+    table.add_column("stage")
+    table.add_column("count", justify="right")
+    table.add_row("objects", str(len(scene.objects)))
+    for name, count in image.stats.items():
+        table.add_row(name, f"{count:,}")
+    drawn = int((image.object_id >= 0).sum())
+    table.add_row("pixels covered", f"{drawn:,} of {image.width * image.height:,}")
+    if drawn:
+        finite = image.depth[image.object_id >= 0]
+        table.add_row("depth range", f"{finite.min():.4g} .. {finite.max():.4g}")
+    console().print(table)

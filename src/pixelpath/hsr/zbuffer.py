@@ -36,6 +36,17 @@ RENDER_SLICES = 8  # progress steps of the rasterize-and-shade pass
 SLICED_PIXELS = 1 << 22  # frames this large report that pass slice by slice
 STEPS = 3 + RENDER_SLICES  # progress steps per frame
 
+# Frame.stats keys, in pipeline order.
+STAT_NAMES = (
+    "triangles",  # after tessellation
+    "back faces culled",
+    "outside the frustum",
+    "inside the frustum",  # drawn as they are
+    "clipped",  # crossing the near or far plane, or far outside the sides
+    "pieces after clipping",
+    "triangles scan-converted",
+)
+
 
 @dataclasses.dataclass(frozen=True)
 class Frame:
@@ -49,11 +60,14 @@ class Frame:
         Distance along the viewing axis; ``inf`` where nothing was drawn.
     object_id : (H, W) int32
         Index of the scene object seen at each pixel; -1 for the background.
+    stats : dict of str to int
+        How many triangles each pipeline stage took in and let through (see ``STAT_NAMES``).
     """
 
     rgb: np.ndarray
     depth: np.ndarray
     object_id: np.ndarray
+    stats: dict[str, int] = dataclasses.field(default_factory=dict)
 
 
 def zbuffer(
@@ -135,6 +149,11 @@ def zbuffer(
     colors = columns[3] if len(columns) > 3 else np.empty((0, 6))
     triangles = np.concatenate([geometry.triangles[inside], new_triangles])
     source = np.concatenate([inside, new_source])
+    culled = len(keep) - int(np.count_nonzero(keep))
+    counts = (
+        len(keep), culled, len(keep) - culled - len(inside) - len(crossing), len(inside),
+        len(crossing), len(new_triangles), len(triangles),
+    )
     polygon = geometry.triangle_polygon[source]
     info = np.empty((len(source), 2), dtype=np.intp)
     info[:, 0] = geometry.polygon_object[polygon]
@@ -168,7 +187,8 @@ def zbuffer(
             object_id,
         )
         advance(RENDER_SLICES // slices)
-    return Frame(rgb=rgb, depth=depth, object_id=object_id)
+    stats = dict(zip(STAT_NAMES, counts, strict=True))
+    return Frame(rgb=rgb, depth=depth, object_id=object_id, stats=stats)
 
 
 _SCRATCH = threading.local()

@@ -2,10 +2,10 @@
 
 * Spheres become icospheres (``SPHERE_SUBDIVISIONS``: 5120 triangles, silhouette within 0.06 %
   of the radius) with exact normals;
-* infinite planes become a square of half-size ``camera.far`` centred under the eye, so it
-  covers every visible point of the plane; frustum clipping cuts it to the view. The square is a
-  grid whose cells grow quadratically away from the eye (small near the camera, where flat and
-  Gouraud shading need vertices, large far away);
+* infinite planes become a square centred under the eye, large enough to cover every point
+  of the plane in the view frustum (:func:`view_reach`); frustum clipping cuts it to the view.
+  The square is a grid whose cells grow quadratically away from the eye (small near the
+  camera, where flat and Gouraud shading need vertices, large far away);
 * boxes and meshes are used as they are (meshes keep their polygons: a triangle remembers the
   polygon it was fanned from, for flat shading and back-face culling).
 """
@@ -15,6 +15,7 @@ from __future__ import annotations
 import collections
 import dataclasses
 import functools
+import math
 from collections.abc import Callable
 
 import numpy as np
@@ -126,8 +127,8 @@ def _sphere_mesh(sphere: Sphere) -> Mesh:
 
 
 def _plane_grid(plane: Plane, camera: Camera) -> Mesh:
-    """Return a square grid on the plane, half-size ``camera.far``, centred below the eye."""
-    quad = plane.to_mesh(center=camera.eye, half_size=camera.far)
+    """Return a square grid on the plane, centred below the eye, covering all it can see."""
+    quad = plane.to_mesh(center=camera.eye, half_size=view_reach(camera))
     corner, across, up = quad.vertices[0], quad.vertices[1], quad.vertices[3]
     # Cell borders at s = ±(k / half)^2 of the way out, k = 0..half: fine near the centre.
     half = PLANE_GRID // 2
@@ -141,6 +142,26 @@ def _plane_grid(plane: Plane, camera: Camera) -> Mesh:
     quads = np.stack([first, first + 1, first + n + 1, first + n], axis=1)
     normals = np.broadcast_to(plane.normal, points.shape)
     return Mesh(points, quads, plane.material, normals=normals, name="plane")
+
+
+def view_reach(camera: Camera) -> float:
+    """Return the largest distance from the eye of a point the camera can see.
+
+    That is the distance to the far plane's corners: ``far · sqrt(1 + tan²(h/2) + tan²(v/2))``
+    for the horizontal and vertical fields of view h and v. A square of this half-size centred
+    under the eye contains every visible point of a plane.
+
+    Examples
+    --------
+    >>> from pixelpath.scene import Camera
+    >>> from pixelpath.raster.tessellate import view_reach
+    >>> round(view_reach(Camera(eye=(0, 0, 1), target=(0, 0, 0), fov=90, far=10,
+    ...                         width=1, height=1)), 6)  # sqrt(1 + 1 + 1) * 10
+    17.320508
+    """
+    tan_v = math.tan(math.radians(camera.fov) / 2)
+    tan_h = tan_v * camera.width / camera.height
+    return camera.far * math.sqrt(1.0 + tan_h * tan_h + tan_v * tan_v)
 
 
 def scene_geometry(scene: Scene, camera: Camera | None = None) -> SceneGeometry:
