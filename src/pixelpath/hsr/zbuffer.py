@@ -178,10 +178,11 @@ def zbuffer(
     background = kernel_array(scene.background)
     # Large frames go in slices of bands so that a progress bar can move.
     slices = RENDER_SLICES if height * width >= SLICED_PIXELS else 1
+    interleaved = np.concatenate([np.arange(0, n_bands, 2), np.arange(1, n_bands, 2)])
     bounds = np.linspace(0, n_bands, slices + 1).astype(int).tolist()
     for start, stop in itertools.pairwise(bounds):
         _kernels.render_bands(
-            start, stop, setup, rows, offsets, items, _kernels.BAND_ROWS, inv_depth,
+            interleaved[start:stop], setup, rows, offsets, items, _kernels.BAND_ROWS, inv_depth,
             triangle_id, triangles, positions, normals, colors, info, flat_colors,
             geometry.materials, lights, ambient, eye, mode, bool(blinn), background, rgb, depth,
             object_id,

@@ -404,8 +404,7 @@ def _clamp01(value):
 
 @njit(parallel=True)
 def render_bands(
-    band_start,
-    band_stop,
+    bands,
     setup,
     rows,
     offsets,
@@ -430,16 +429,20 @@ def render_bands(
     depth,
     object_id,
 ):
-    """Rasterize bands [band_start, band_stop) of rows, then shade their visible pixels once.
+    """Rasterize the listed bands of rows, then shade their visible pixels once.
 
     One parallel pass: a band's depth and triangle buffers are still in cache when it is
-    shaded. Writes clamped RGB (H, W, 3) (``background`` where nothing was drawn), the
-    view-axis depth (H, W) (``inf`` there) and the object id (H, W) (-1 there).
+    shaded. Threads take contiguous runs of ``bands``; listing the bands interleaved (even
+    ones, then odd ones) gives each thread rows from all over the image, so the work is even.
+
+    Writes clamped RGB (H, W, 3) (``background`` where nothing was drawn), the view-axis depth
+    (H, W) (``inf`` there) and the object id (H, W) (-1 there).
     ``triangle_info`` (T, 2) int: the object index (into ``materials``) and a flip flag (1 when
     the face is seen from behind, so its normals are turned towards the viewer).
     """
     height = inv_depth.shape[0]
-    for band in prange(band_start, band_stop):
+    for k in prange(bands.shape[0]):
+        band = bands[k]
         _rasterize_band(setup, rows, offsets, items, band, band_rows, inv_depth, triangle_id)
         out = np.empty(3)
         for j in range(band * band_rows, min((band + 1) * band_rows, height)):
@@ -565,7 +568,7 @@ def warmup() -> None:
     object_id = np.empty((8, 8), dtype=np.int32)
     for mode in (FLAT, GOURAUD, PHONG):
         render_bands(
-            0, len(offsets) - 1, setup, rows, offsets, items, BAND_ROWS, inv_depth,
+            np.arange(len(offsets) - 1), setup, rows, offsets, items, BAND_ROWS, inv_depth,
             triangle_id, triangles, positions, normals, np.zeros((3, 6)), info, np.ones((1, 3)),
             material, lights, np.full(3, 0.1), np.array([0.0, 0.0, 5.0]), mode, False,
             np.zeros(3), rgb, depth, object_id,
