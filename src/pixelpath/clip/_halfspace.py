@@ -40,8 +40,9 @@ def _emit_crossing(inner, d_in, outer, d_out, dst, row):
 def clip_polygon_halfspace(src, n, plane, dst):
     """Clip the polygon ``src[:n]`` (rows of k numbers) against ``plane``; return the count.
 
-    The result goes to ``dst``, which needs room for ``n + 1`` rows (a convex polygon crosses a
-    half-space boundary at most twice).
+    The result goes to ``dst``, which needs room for ``n + n // 2`` rows in general (at most
+    one output per edge plus one per edge re-entering the half-space; ``n + 1`` for a convex
+    polygon, which crosses the boundary at most twice).
     """
     if n == 0:
         return 0

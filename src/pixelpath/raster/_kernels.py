@@ -73,8 +73,11 @@ FRUSTUM_PLANES = np.array(
 # Triangles within GUARD_BAND times the view's half-width are rasterized without x/y clipping
 # (the scan converter clamps spans to the image); only larger ones are clipped exactly.
 GUARD_BAND = 8.0
-# A clipped triangle is a convex polygon of at most 3 + 6 vertices.
-MAX_CLIPPED = 9
+# Room for a triangle clipped by the six planes. In exact arithmetic it stays convex and gains
+# at most one vertex per plane (9); rounding on nearly degenerate input could break convexity,
+# so the buffers follow the general bound of a stage, n + n // 2 vertices: 3, 4, 6, 9, 13, 19,
+# 28.
+MAX_CLIPPED = 28
 
 
 @njit(inline="always")
@@ -143,9 +146,10 @@ def clip_triangles(attributes, triangles, crossing):
     """
     k = attributes.shape[1]
     offset = attributes.shape[0]
-    vertices = np.empty((crossing.shape[0] * MAX_CLIPPED, k))
-    new_triangles = np.empty((crossing.shape[0] * (MAX_CLIPPED - 2), 3), dtype=np.intp)
-    source = np.empty(crossing.shape[0] * (MAX_CLIPPED - 2), dtype=np.intp)
+    # Sized for the usual case (a convex piece of at most 9 vertices), grown when exceeded.
+    vertices = np.empty((crossing.shape[0] * 9, k))
+    new_triangles = np.empty((crossing.shape[0] * 7, 3), dtype=np.intp)
+    source = np.empty(crossing.shape[0] * 7, dtype=np.intp)
     polygon = np.empty((MAX_CLIPPED + 1, k))
     scratch = np.empty((MAX_CLIPPED + 1, k))
     n_vertices = 0
@@ -160,6 +164,11 @@ def clip_triangles(attributes, triangles, crossing):
             src, dst = dst, src
         if n < 3:
             continue
+        if n_vertices + n > vertices.shape[0]:
+            vertices = _grown(vertices, n_vertices + n)
+        if n_triangles + n - 2 > source.shape[0]:
+            new_triangles = _grown(new_triangles, n_triangles + n - 2)
+            source = _grown(source, n_triangles + n - 2)
         vertices[n_vertices : n_vertices + n] = src[:n]
         for fan in range(1, n - 1):
             new_triangles[n_triangles, 0] = offset + n_vertices
@@ -169,6 +178,14 @@ def clip_triangles(attributes, triangles, crossing):
             n_triangles += 1
         n_vertices += n
     return vertices[:n_vertices], new_triangles[:n_triangles], source[:n_triangles]
+
+
+@njit
+def _grown(array, needed):
+    """Return a copy of ``array`` with at least ``needed`` rows (twice as many as before)."""
+    bigger = np.empty((max(needed, 2 * array.shape[0]), *array.shape[1:]), dtype=array.dtype)
+    bigger[: array.shape[0]] = array
+    return bigger
 
 
 @njit
