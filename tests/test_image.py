@@ -87,3 +87,14 @@ def test_saved_file_gets_the_usual_permissions(tmp_path):
     mask = os.umask(0o022)
     os.umask(mask)
     assert path.stat().st_mode & 0o777 == 0o666 & ~mask
+
+
+def test_array_protocol_copies_only_when_asked():
+    img = Image(gradient())
+    assert np.asarray(img) is np.asarray(img)  # the read-only buffer itself
+    copied = np.array(img)
+    copied[0, 0, 0] = 0.5  # a copy is writeable and independent
+    assert np.asarray(img)[0, 0, 0] == 0.0
+    assert np.asarray(img, dtype=np.float64).dtype == np.float64
+    with pytest.raises(ValueError, match="copy"):
+        np.asarray(img, dtype=np.float64, copy=False)

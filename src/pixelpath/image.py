@@ -107,9 +107,11 @@ class Image:
         return self._rgb.shape
 
     def __array__(self, dtype=None, copy=None) -> np.ndarray:
-        if copy:
-            return self._rgb.astype(dtype or self._rgb.dtype, copy=True)
-        return self._rgb if dtype is None else self._rgb.astype(dtype)
+        if dtype is not None and np.dtype(dtype) != self._rgb.dtype:
+            if copy is False:
+                raise ValueError(f"converting the float32 image to {np.dtype(dtype)} needs a copy")
+            return self._rgb.astype(dtype)
+        return self._rgb.copy() if copy else self._rgb
 
     def __repr__(self) -> str:
         drawn = int(np.count_nonzero(self._object_id >= 0))
