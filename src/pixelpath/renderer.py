@@ -18,7 +18,8 @@ __all__ = ["MAX_SAMPLES", "METHOD_NAMES", "render"]
 
 METHOD_NAMES = ("zbuffer", "scanline", "painter", "bsp", "warnock", "octree", "raytrace")
 
-# Samples (width × height × ssaa²) a frame may hold: about 1.5 GB of buffers at the limit.
+# Samples (width × height × ssaa²) a frame may hold: 32 bytes of buffers per sample (colour,
+# depth, object id, and the rasterizer's 1/w and triangle), about 2 GB at the limit.
 MAX_SAMPLES = 1 << 26
 
 
@@ -156,8 +157,8 @@ def _scaled_camera(camera, factor: int):
 def _downsample(frame, factor: int) -> Image:
     """Average each factor × factor block of samples; keep the nearest sample's depth and id."""
     height, width = frame.rgb.shape[0] // factor, frame.rgb.shape[1] // factor
-    blocks = frame.rgb.reshape(height, factor, width, factor, 3).astype(np.float64)
-    rgb = blocks.mean(axis=(1, 3))
+    blocks = frame.rgb.reshape(height, factor, width, factor, 3)
+    rgb = blocks.mean(axis=(1, 3), dtype=np.float64)  # sums in float64, no float64 copy
     depth = frame.depth.reshape(height, factor, width, factor).transpose(0, 2, 1, 3)
     depth = depth.reshape(height, width, factor * factor)
     nearest = np.argmin(depth, axis=2)
