@@ -199,12 +199,13 @@ def _scratch_buffers(height: int, width: int) -> tuple[np.ndarray, np.ndarray]:
     """Return the calling thread's 1/w and triangle buffers of this size, kept between frames.
 
     The rasterizer clears them itself; reusing them spares allocating and page-faulting
-    12 bytes per pixel each frame. One pair per thread keeps concurrent renders apart.
+    12 bytes per pixel each frame. One pair per thread keeps concurrent renders apart; frames
+    over ``SLICED_PIXELS`` get fresh buffers, so a huge render leaves no memory held.
     """
     buffers = getattr(_SCRATCH, "buffers", None)
     if buffers is None or buffers[0].shape != (height, width):
         buffers = (np.empty((height, width)), np.empty((height, width), dtype=np.int32))
-        _SCRATCH.buffers = buffers
+        _SCRATCH.buffers = buffers if height * width <= SLICED_PIXELS else None
     return buffers
 
 
