@@ -6,6 +6,15 @@ boundary in clipping order: ``[kind, p0, p1, p2, p3]``. Kinds ``LEFT``, ``RIGHT`
 edge from ``(p0, p1)`` to ``(p2, p3)`` directed so that the inside is on its left. One array
 argument keeps the call from Python cheap (the single-clip latency is mostly dispatch).
 
+The same stage generalizes beyond the plane: kind ``PLANE`` is the half-space
+``p0·v0 + p1·v1 + p2·v2 + p3·v3 >= 0`` over the first four numbers of each vertex row, and the
+rest of a row are attributes carried along. The raster pipeline clips triangles against the view
+frustum this way, in homogeneous clip space (x, y, z, w), where the near plane is ``z + w >= 0``:
+nothing in the notes' walk — S starting as the last vertex, the four in/out cases — depends on
+the boundary being a line. For ``PLANE`` the crossing is computed from the inside end of the edge
+towards the outside end, so two triangles sharing an edge get bit-identical points (clipped
+meshes stay watertight); the 2-D kinds use the notes' formulas of section 6, from S to E.
+
 Polygons travel as contiguous ``(n, 2)`` float64 arrays; many polygons as one flat coordinate
 buffer plus an ``offsets`` array (polygon ``i`` is ``coords[offsets[i]:offsets[i + 1]]``).
 """
@@ -16,7 +25,7 @@ import numpy as np
 
 from pixelpath._jit import njit, prange, register_warmup
 
-LEFT, RIGHT, BOTTOM, TOP, EDGE = 0, 1, 2, 3, 4
+LEFT, RIGHT, BOTTOM, TOP, EDGE, PLANE = 0, 1, 2, 3, 4, 5
 
 OK, NON_FINITE, TOO_FEW_VERTICES = 0, 1, 2
 
@@ -67,40 +76,68 @@ def intersection(row, x1, y1, x2, y2):
 
 
 @njit(inline="always")
-def _emit(dst, m, x, y):
-    """Append (x, y) unless it repeats the last vertex; return the new count."""
-    if m > 0 and dst[m - 1, 0] == x and dst[m - 1, 1] == y:
-        return m
-    dst[m, 0] = x
-    dst[m, 1] = y
-    return m + 1
+def plane_value(row, v):
+    """Signed value of a ``PLANE`` boundary at vertex row ``v``; inside when >= 0."""
+    return row[1] * v[0] + row[2] * v[1] + row[3] * v[2] + row[4] * v[3]
+
+
+@njit(inline="always")
+def vertex_inside(row, v):
+    if row[0] == PLANE:
+        return plane_value(row, v) >= 0.0
+    return inside(row, v[0], v[1])
+
+
+@njit(inline="always")
+def _same_rows(a, i, b, j):
+    for c in range(a.shape[1]):
+        if a[i, c] != b[j, c]:
+            return False
+    return True
+
+
+@njit(inline="always")
+def _crossing(row, s, e, out):
+    """Write where edge S -> E crosses the boundary into the row ``out``."""
+    if row[0] == PLANE:
+        d_s, d_e = plane_value(row, s), plane_value(row, e)
+        inner, outer, d_in, d_out = (s, e, d_s, d_e) if d_s >= 0.0 else (e, s, d_e, d_s)
+        t = d_in / (d_in - d_out)
+        for c in range(out.shape[0]):
+            out[c] = inner[c] + t * (outer[c] - inner[c])
+    else:
+        out[0], out[1] = intersection(row, s[0], s[1], e[0], e[1])
 
 
 @njit
 def clip_stage(src, n, row, dst, crossings):
     """Clip ``src[:n]`` against one boundary into ``dst``; return the output count.
 
-    ``dst`` needs room for ``n + n // 2 + 1`` vertices. When ``crossings`` has ``n`` rows it
-    records, per (S, E) pair, the intersection point emitted (NaN when none) for the trace.
+    ``src`` and ``dst`` have rows of the same width (2 for the plane, 4 or more for ``PLANE``
+    boundaries); ``dst`` needs room for ``n + n // 2 + 1`` rows. A vertex that repeats the
+    previous one is not emitted. When ``crossings`` has ``n`` rows it records, per (S, E) pair,
+    the intersection point emitted (NaN when none) for the trace.
     """
     record = crossings.shape[0] == n
     m = 0
-    sx, sy = src[n - 1, 0], src[n - 1, 1]  # S starts as the last vertex
-    s_in = inside(row, sx, sy)
+    s = src[n - 1]  # S starts as the last vertex
+    s_in = vertex_inside(row, s)
     for i in range(n):
-        ex, ey = src[i, 0], src[i, 1]
-        e_in = inside(row, ex, ey)
-        ix, iy = np.nan, np.nan
-        if s_in != e_in:  # the edge crosses: emit the intersection first
-            ix, iy = intersection(row, sx, sy, ex, ey)
-            m = _emit(dst, m, ix, iy)
-        if e_in:
-            m = _emit(dst, m, ex, ey)
+        e = src[i]
+        e_in = vertex_inside(row, e)
         if record:
-            crossings[i, 0] = ix
-            crossings[i, 1] = iy
-        sx, sy, s_in = ex, ey, e_in
-    if m > 1 and dst[m - 1, 0] == dst[0, 0] and dst[m - 1, 1] == dst[0, 1]:
+            crossings[i, 0], crossings[i, 1] = np.nan, np.nan
+        if s_in != e_in:  # the edge crosses: emit the intersection first
+            _crossing(row, s, e, dst[m])
+            if record:
+                crossings[i, 0], crossings[i, 1] = dst[m, 0], dst[m, 1]
+            if m == 0 or not _same_rows(dst, m, dst, m - 1):
+                m += 1
+        if e_in and (m == 0 or not _same_rows(src, i, dst, m - 1)):
+            dst[m] = e
+            m += 1
+        s, s_in = e, e_in
+    if m > 1 and _same_rows(dst, m - 1, dst, 0):
         m -= 1  # the list is cyclic: its last vertex must not repeat the first
     return m
 
