@@ -25,6 +25,7 @@ import dataclasses
 import itertools
 import threading
 from collections.abc import Callable
+from typing import NamedTuple
 
 import numpy as np
 
@@ -113,83 +114,134 @@ def zbuffer(
     """
     from pixelpath.hsr.backface import front_facing
     from pixelpath.lighting import pack_lights
-    from pixelpath.raster import _kernels
     from pixelpath.raster._arrays import kernel_array
-    from pixelpath.raster.frustum import classify, clip_crossing
     from pixelpath.raster.shading import shading_mode
     from pixelpath.raster.tessellate import scene_geometry
-    from pixelpath.raster.transform import world_to_clip
 
     camera = camera or scene.camera
     mode = shading_mode(shading)
     advance = progress or (lambda n: None)
-    height, width = camera.height, camera.width
-    inv_depth, triangle_id = _scratch_buffers(height, width)
+    lighting = _Lighting(
+        pack_lights(scene.lights), kernel_array(scene.ambient), kernel_array(camera.eye), blinn
+    )
 
     # 1. Geometry and object-space back-face culling.
     geometry = scene_geometry(scene, camera)
-    eye = kernel_array(camera.eye)
-    lights = pack_lights(scene.lights)
-    ambient = kernel_array(scene.ambient)
-    front = front_facing(geometry.polygon_normals, geometry.polygon_points, eye)
-    polygon_keep = front if backface_cull else np.ones(len(front), dtype=np.bool_)
-    keep = polygon_keep[geometry.triangle_polygon]
+    front = front_facing(geometry.polygon_normals, geometry.polygon_points, lighting.eye)
+    keep = front[geometry.triangle_polygon]
+    if not backface_cull:
+        keep = np.ones_like(keep)
     advance(1)
 
-    # 2-3. Lighting at vertices or polygons, clip space, frustum clipping.
+    # 2-3. Lighting at vertices (Gouraud) or polygons (flat), clip space, frustum clipping.
+    drawable, counts = _clip_to_view(geometry, camera, keep, front, mode, lighting)
+    advance(1)
+
+    # 4. Viewport and triangle set-up.
+    setup, rows, offsets, items = _set_up(drawable, camera)
+    advance(1)
+
+    # 5. Scan conversion with the depth test, then deferred shading, band by band.
+    frame = _render(drawable, setup, rows, offsets, items, camera, scene, geometry, mode,
+                    lighting, advance)
+    return dataclasses.replace(frame, stats=dict(zip(STAT_NAMES, counts, strict=True)))
+
+
+class _Lighting(NamedTuple):
+    """What the illumination model needs besides the surface: packed lights, Ia, eye, model."""
+
+    lights: np.ndarray
+    ambient: np.ndarray
+    eye: np.ndarray
+    blinn: bool
+
+
+class _Drawable(NamedTuple):
+    """The triangles left after culling and clipping, with their per-vertex data."""
+
+    clip: np.ndarray  # (V, 4) clip coordinates
+    positions: np.ndarray  # (V, 3) world positions
+    normals: np.ndarray  # (V, 3) unit normals
+    colors: np.ndarray  # (V, 6) Gouraud intensities, front then back; (0, 6) otherwise
+    triangles: np.ndarray  # (T, 3) vertex indices
+    info: np.ndarray  # (T, 2) object index, flip flag (seen from behind)
+    flat_colors: np.ndarray  # (T, 3) flat-shading intensity; (T, 3) zeros otherwise
+
+
+def _clip_to_view(geometry, camera, keep, front, mode, lighting) -> tuple[_Drawable, tuple]:
+    """Light what needs lighting before clipping, then clip to the frustum; count each stage."""
+    from pixelpath.raster import _kernels
+    from pixelpath.raster.frustum import classify, clip_crossing
+    from pixelpath.raster.transform import world_to_clip
+
     clip = world_to_clip(geometry.vertices, camera)
     columns = (clip, geometry.vertices, geometry.normals)
     if mode == _kernels.GOURAUD:
-        columns += (_vertex_colors(geometry, lights, ambient, eye, blinn),)
+        columns += (_vertex_colors(geometry, lighting),)
     inside, crossing = classify(clip, geometry.triangles, keep)
     new_columns, new_triangles, new_source = clip_crossing(columns, geometry.triangles, crossing)
     if len(new_triangles):
         columns = tuple(np.concatenate(pair) for pair in zip(columns, new_columns, strict=True))
-    clip, positions, normals = columns[:3]
-    colors = columns[3] if len(columns) > 3 else np.empty((0, 6))
     triangles = np.concatenate([geometry.triangles[inside], new_triangles])
-    source = np.concatenate([inside, new_source])
-    culled = len(keep) - int(np.count_nonzero(keep))
-    counts = (
-        len(keep), culled, len(keep) - culled - len(inside) - len(crossing), len(inside),
-        len(crossing), len(new_triangles), len(triangles),
-    )
-    polygon = geometry.triangle_polygon[source]
-    info = np.empty((len(source), 2), dtype=np.intp)
+    polygon = geometry.triangle_polygon[np.concatenate([inside, new_source])]
+    info = np.empty((len(polygon), 2), dtype=np.intp)
     info[:, 0] = geometry.polygon_object[polygon]
     info[:, 1] = ~front[polygon]
-    flat_colors = _flat_colors(geometry, polygon, ~front, mode, lights, ambient, eye, blinn)
-    advance(1)
+    drawable = _Drawable(
+        *columns[:3],
+        colors=columns[3] if len(columns) > 3 else np.empty((0, 6)),
+        triangles=triangles,
+        info=info,
+        flat_colors=_flat_colors(geometry, polygon, ~front, mode, lighting),
+    )
+    culled = len(keep) - int(np.count_nonzero(keep))
+    outside = len(keep) - culled - len(inside) - len(crossing)
+    counts = (len(keep), culled, outside, len(inside), len(crossing), len(new_triangles),
+              len(triangles))
+    return drawable, counts
 
-    # 4. Viewport and triangle set-up.
-    screen = np.empty((len(clip), 3))
-    _kernels.clip_to_screen(clip, width, height, screen)
-    setup = np.empty((len(triangles), _kernels.SETUP_FIELDS))
-    rows = np.empty((len(triangles), 2), dtype=np.intp)
-    _kernels.setup_triangles(screen, triangles, height, setup, rows)
-    n_bands = -(-height // _kernels.BAND_ROWS)
+
+def _set_up(drawable: _Drawable, camera: Camera):
+    """Divide, map to the viewport, set the triangles up and list them per band of rows."""
+    from pixelpath.raster import _kernels
+
+    screen = np.empty((len(drawable.clip), 3))
+    _kernels.clip_to_screen(drawable.clip, camera.width, camera.height, screen)
+    setup = np.empty((len(drawable.triangles), _kernels.SETUP_FIELDS))
+    rows = np.empty((len(drawable.triangles), 2), dtype=np.intp)
+    _kernels.setup_triangles(screen, drawable.triangles, camera.height, setup, rows)
+    n_bands = -(-camera.height // _kernels.BAND_ROWS)
     offsets, items = _kernels.bin_triangles(rows, n_bands, _kernels.BAND_ROWS)
-    advance(1)
+    return setup, rows, offsets, items
 
-    # 5. Scan conversion with the depth test, then deferred shading, band by band.
+
+def _render(drawable, setup, rows, offsets, items, camera, scene, geometry, mode, lighting,
+            advance) -> Frame:
+    """Rasterize and shade every band into new output buffers (large frames in slices)."""
+    from pixelpath.raster import _kernels
+    from pixelpath.raster._arrays import kernel_array
+
+    height, width = camera.height, camera.width
+    inv_depth, triangle_id = _scratch_buffers(height, width)
     rgb = np.empty((height, width, 3), dtype=np.float32)
     depth = np.empty((height, width), dtype=np.float32)
     object_id = np.empty((height, width), dtype=np.int32)
     background = kernel_array(scene.background)
-    # Large frames go in slices of bands so that a progress bar can move.
-    slices = RENDER_SLICES if height * width >= SLICED_PIXELS else 1
+    n_bands = len(offsets) - 1
+    # Threads take contiguous runs of this list: even bands then odd ones spreads the work.
     interleaved = np.concatenate([np.arange(0, n_bands, 2), np.arange(1, n_bands, 2)])
+    slices = RENDER_SLICES if height * width >= SLICED_PIXELS else 1  # so a progress bar moves
     bounds = np.linspace(0, n_bands, slices + 1).astype(int).tolist()
     for start, stop in itertools.pairwise(bounds):
         _kernels.render_bands(
             interleaved[start:stop], setup, rows, offsets, items, _kernels.BAND_ROWS, inv_depth,
-            triangle_id, triangles, positions, normals, colors, info, flat_colors,
-            geometry.materials, lights, ambient, eye, mode, bool(blinn), background, rgb, depth,
-            object_id,
+            triangle_id, drawable.triangles, drawable.positions, drawable.normals,
+            drawable.colors, drawable.info, drawable.flat_colors, geometry.materials,
+            lighting.lights, lighting.ambient, lighting.eye, mode, bool(lighting.blinn),
+            background, rgb, depth, object_id,
         )
         advance(RENDER_SLICES // slices)
-    stats = dict(zip(STAT_NAMES, counts, strict=True))
-    return Frame(rgb=rgb, depth=depth, object_id=object_id, stats=stats)
+    return Frame(rgb=rgb, depth=depth, object_id=object_id)
 
 
 _SCRATCH = threading.local()
@@ -209,7 +261,7 @@ def _scratch_buffers(height: int, width: int) -> tuple[np.ndarray, np.ndarray]:
     return buffers
 
 
-def _vertex_colors(geometry, lights, ambient, eye, blinn) -> np.ndarray:
+def _vertex_colors(geometry, lighting: _Lighting) -> np.ndarray:
     """(V, 6) Gouraud intensities at the vertices, lit from the front, then from the back."""
     from pixelpath.raster.shading import shade_points
 
@@ -217,12 +269,13 @@ def _vertex_colors(geometry, lights, ambient, eye, blinn) -> np.ndarray:
     for start, flipped in ((0, False), (3, True)):
         colors[:, start : start + 3] = shade_points(
             geometry.vertices, geometry.normals, np.full(len(geometry.vertices), flipped),
-            geometry.vertex_object, geometry.materials, lights, ambient, eye, blinn=blinn,
+            geometry.vertex_object, geometry.materials, lighting.lights, lighting.ambient,
+            lighting.eye, blinn=lighting.blinn,
         )
     return colors
 
 
-def _flat_colors(geometry, polygon, back, mode, lights, ambient, eye, blinn) -> np.ndarray:
+def _flat_colors(geometry, polygon, back, mode, lighting: _Lighting) -> np.ndarray:
     """(T, 3) intensity of each drawn triangle's polygon at its centroid (flat shading only)."""
     from pixelpath.raster import _kernels
     from pixelpath.raster.shading import shade_points
@@ -232,6 +285,7 @@ def _flat_colors(geometry, polygon, back, mode, lights, ambient, eye, blinn) -> 
     used, inverse = np.unique(polygon, return_inverse=True)
     colors = shade_points(
         geometry.polygon_centroids[used], geometry.polygon_normals[used], back[used],
-        geometry.polygon_object[used], geometry.materials, lights, ambient, eye, blinn=blinn,
+        geometry.polygon_object[used], geometry.materials, lighting.lights, lighting.ambient,
+        lighting.eye, blinn=lighting.blinn,
     )
     return colors[inverse]
