@@ -28,7 +28,7 @@ __all__ = ["coverage", "interpolate", "scan_convert"]
 
 
 def _setup(points: np.ndarray, triangles: np.ndarray, width: int, height: int):
-    """Validate, then return (screen (N, 3), triangles, set-up records, rows)."""
+    """Validate, then return (width, height, triangles, set-up records, covered rows)."""
     from pixelpath.raster import _kernels
     from pixelpath.raster.frustum import _triangle_indices
 
