@@ -86,9 +86,14 @@ def scan_convert(
     >>> scan_convert([[0, 0], [3, 0], [3, 2], [0, 2]], [[0, 1, 2], [0, 2, 3]], 3, 2).tolist()
     [[1, 0, 0], [1, 1, 0]]
     """
+    width, height, _, setup, rows = _setup(points, triangles, width, height)
+    return _nearest(setup, rows, width, height)
+
+
+def _nearest(setup: np.ndarray, rows: np.ndarray, width: int, height: int) -> np.ndarray:
+    """Run the depth-tested scan conversion; return the triangle seen at each pixel."""
     from pixelpath.raster import _kernels
 
-    width, height, triangles, setup, rows = _setup(points, triangles, width, height)
     inv_depth = np.empty((height, width))
     triangle_id = np.empty((height, width), dtype=np.int32)
     n_bands = -(-height // _kernels.BAND_ROWS)
@@ -163,7 +168,7 @@ def interpolate(
     """
     from pixelpath.raster import _kernels
 
-    triangle_id = scan_convert(points, triangles, width, height)
+    width, height, triangles, setup, rows = _setup(points, triangles, width, height)
     values = np.asarray(values, dtype=np.float64)
     single = values.ndim == 1
     table = values.reshape(len(values), -1) if values.ndim in (1, 2) else values
@@ -172,7 +177,7 @@ def interpolate(
             f"values must have shape (N,) or (N, C) with N = {len(np.asarray(points))} points, "
             f"got {values.shape}"
         )
-    width, height, triangles, setup, _ = _setup(points, triangles, width, height)
+    triangle_id = _nearest(setup, rows, width, height)
     out = np.full((height, width, table.shape[1]), np.nan)
     _kernels.interpolate_values(setup, triangles, kernel_array(table), triangle_id, out)
     return out[..., 0] if single else out
