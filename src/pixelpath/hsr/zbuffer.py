@@ -218,14 +218,14 @@ def _set_up(drawable: _Drawable, camera: Camera):
 def _render(drawable, setup, rows, offsets, items, camera, scene, geometry, mode, lighting,
             advance) -> Frame:
     """Rasterize and shade every band into new output buffers (large frames in slices)."""
-    from pixelpath.raster import _kernels
+    from pixelpath.raster import _kernels, _pool
     from pixelpath.raster._arrays import kernel_array
 
     height, width = camera.height, camera.width
     inv_depth, triangle_id = _scratch_buffers(height, width)
-    rgb = np.empty((height, width, 3), dtype=np.float32)
-    depth = np.empty((height, width), dtype=np.float32)
-    object_id = np.empty((height, width), dtype=np.int32)
+    rgb = _pool.empty((height, width, 3), np.float32)
+    depth = _pool.empty((height, width), np.float32)
+    object_id = _pool.empty((height, width), np.int32)
     background = kernel_array(scene.background)
     n_bands = len(offsets) - 1
     # Threads take contiguous runs of this list: even bands then odd ones spreads the work.

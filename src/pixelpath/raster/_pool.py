@@ -1,0 +1,56 @@
+"""Output buffers recycled between frames.
+
+A frame's colour, depth and object-id buffers (20 bytes a pixel) are new arrays each time,
+because the :class:`~pixelpath.Image` owns them. Memory fresh from the system costs a page
+fault per 4 KiB page on first touch: at 1024×1024 that took 5-8 ms here, as long as shading the
+frame. So the buffers come from a small pool instead. Each is a view of a flat array over a
+pooled ``bytearray``; when the last view of it is gone (the image and every array taken from
+it), a finalizer gives the ``bytearray`` back for the next frame. Memory still in use is never
+handed out again, and only a couple of spare buffers per size are kept.
+"""
+
+from __future__ import annotations
+
+import math
+import weakref
+
+import numpy as np
+
+SPARES_PER_SIZE = 2
+LARGEST_KEPT = 1 << 27  # bytes; bigger buffers go back to the system
+
+_spares: dict[int, list[bytearray]] = {}
+
+
+def empty(shape: tuple[int, ...], dtype: type) -> np.ndarray:
+    """Return an uninitialized C-contiguous array, reusing memory no array refers to any more.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from pixelpath.raster import _pool
+    >>> a = _pool.empty((2, 3), np.float32)
+    >>> a.shape, a.dtype.name, a.flags.writeable
+    ((2, 3), 'float32', True)
+    """
+    dtype = np.dtype(dtype)
+    nbytes = math.prod(shape) * dtype.itemsize
+    raw = _take(nbytes)
+    flat = np.frombuffer(raw, dtype=dtype)
+    if nbytes <= LARGEST_KEPT:
+        # Every view of flat keeps it alive, so this runs only when no array uses raw.
+        weakref.finalize(flat, _give_back, raw).atexit = False
+    return flat.reshape(shape)
+
+
+def _take(nbytes: int) -> bytearray:
+    try:
+        return _spares.get(nbytes, []).pop()
+    except IndexError:
+        return bytearray(nbytes)
+
+
+def _give_back(raw: bytearray) -> None:
+    spares = _spares.setdefault(len(raw), [])
+    if len(spares) < SPARES_PER_SIZE:
+        spares.append(raw)

@@ -1,0 +1,40 @@
+"""Recycled output buffers: memory comes back only when no array uses it."""
+
+from __future__ import annotations
+
+import numpy as np
+
+import pixelpath as pp
+from pixelpath.raster import _pool
+
+
+def test_memory_in_use_is_never_handed_out_again():
+    first = _pool.empty((64, 64), np.float32)
+    view = first[3:, ::2]  # a view keeps the buffer in use after the array is gone
+    del first
+    second = _pool.empty((64, 64), np.float32)
+    assert not np.shares_memory(second, view)
+
+
+def test_memory_is_reused_once_every_view_is_gone():
+    first = _pool.empty((64, 32), np.int32)
+    address = first.__array_interface__["data"][0]
+    view = first.T
+    del first, view
+    again = _pool.empty((64, 32), np.int32)
+    assert again.__array_interface__["data"][0] == address
+
+
+def test_images_held_by_the_caller_keep_their_own_pixels():
+    camera = pp.Camera(eye=(0, 0, 4), target=(0, 0, 0), width=24, height=16)
+    red = pp.Scene(camera, objects=[pp.Sphere((0, 0, 0), 1.0, pp.Material(color=(1, 0, 0)))],
+                   lights=[pp.PointLight((2, 2, 4))])
+    blue = pp.Scene(camera, objects=[pp.Sphere((0, 0, 0), 1.0, pp.Material(color=(0, 0, 1)))],
+                    lights=[pp.PointLight((2, 2, 4))])
+    kept = pp.render(red)
+    pixels = np.asarray(kept).copy()
+    for _ in range(3):
+        other = pp.render(blue)
+        assert not np.shares_memory(np.asarray(other), np.asarray(kept))
+        del other
+    assert np.array_equal(np.asarray(kept), pixels)
