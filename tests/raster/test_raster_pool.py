@@ -38,3 +38,13 @@ def test_images_held_by_the_caller_keep_their_own_pixels():
         assert not np.shares_memory(np.asarray(other), np.asarray(kept))
         del other
     assert np.array_equal(np.asarray(kept), pixels)
+
+
+def test_every_pixel_of_a_recycled_buffer_is_rewritten():
+    camera = pp.Camera(eye=(0, 0, 4), target=(0, 0, 0), width=40, height=70)
+    busy = pp.Scene(camera, objects=[pp.Plane((0, 0, 0), (0, 0, 1))], background=(1, 1, 1))
+    for _ in range(2):
+        pp.render(busy)  # fills buffers, which go back to the pool
+    empty = pp.render(pp.Scene(camera, background=(0.25, 0.5, 0.75)))
+    assert np.all(np.asarray(empty) == np.float32([0.25, 0.5, 0.75]))
+    assert np.all(np.isinf(empty.depth)) and np.all(empty.object_id == -1)
