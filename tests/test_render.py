@@ -142,3 +142,14 @@ def test_stats_count_the_pipeline():
     both = pp.render(small_scene(objects=[box]), backface_cull=False).stats
     assert both["back faces culled"] == 0 and both["triangles scan-converted"] == 12
     assert pp.Image(np.zeros((1, 1, 3))).stats == {}
+
+
+def test_renders_from_several_threads_at_once_agree():
+    from concurrent.futures import ThreadPoolExecutor
+
+    scenes = [small_scene(objects=[pp.Sphere((0, 0, 0), 0.5 + 0.1 * k)]) for k in range(6)]
+    alone = [np.asarray(pp.render(scene)).copy() for scene in scenes]
+    with ThreadPoolExecutor(max_workers=3) as pool:
+        together = list(pool.map(lambda scene: np.asarray(pp.render(scene)), scenes * 2))
+    for k, image in enumerate(together):
+        assert np.array_equal(image, alone[k % len(scenes)])

@@ -16,6 +16,7 @@ import collections
 import dataclasses
 import functools
 import math
+import threading
 from collections.abc import Callable
 
 import numpy as np
@@ -104,16 +105,19 @@ class _IdentityCache:
             collections.OrderedDict()
         )
         self._size = size
+        self._lock = threading.Lock()  # renders may run in several threads at once
 
     def get(self, obj: object, compute: Callable[[object], object]) -> object:
-        hit = self._entries.get(id(obj))
-        if hit is not None and hit[0] is obj:
-            self._entries.move_to_end(id(obj))
-            return hit[1]
+        with self._lock:
+            hit = self._entries.get(id(obj))
+            if hit is not None and hit[0] is obj:
+                self._entries.move_to_end(id(obj))
+                return hit[1]
         value = compute(obj)
-        self._entries[id(obj)] = (obj, value)
-        if len(self._entries) > self._size:
-            self._entries.popitem(last=False)
+        with self._lock:
+            self._entries[id(obj)] = (obj, value)
+            if len(self._entries) > self._size:
+                self._entries.popitem(last=False)
         return value
 
 
@@ -191,10 +195,12 @@ def scene_geometry(scene: Scene, camera: Camera | None = None) -> SceneGeometry:
     camera = camera or scene.camera
     key = (*camera.eye.tolist(), camera.far)
     cached = _GEOMETRIES.get(scene, lambda _: {})
-    if key not in cached:
-        cached.clear()
-        cached[key] = _build_geometry(scene, camera)
-    return cached[key]
+    geometry = cached.get(key)
+    if geometry is None:
+        geometry = _build_geometry(scene, camera)
+        cached.clear()  # keep only the latest camera position's planes
+        cached[key] = geometry
+    return geometry
 
 
 def _build_geometry(scene: Scene, camera: Camera) -> SceneGeometry:
