@@ -54,7 +54,8 @@ def test_camera_inside_a_closed_mesh_sees_nothing_when_culling():
     assert np.all(np.asarray(walls) > 0)
 
 
-def test_back_of_a_quad_is_lit_like_its_front_when_two_sided():
+@pytest.mark.parametrize("shading", ["flat", "gouraud", "phong"])
+def test_back_of_a_quad_is_lit_like_its_front_when_two_sided(shading):
     # A quad in z = 0 facing +z, seen from -z with the light mirrored: the same picture as
     # seen from +z (mirrored left-right), because the back face's normal is turned around.
     quad = pp.Mesh([[-1, -1, 0], [1, -1, 0], [1, 1, 0], [-1, 1, 0]], [[0, 1, 2, 3]])
@@ -63,9 +64,9 @@ def test_back_of_a_quad_is_lit_like_its_front_when_two_sided():
         light = pp.PointLight((0.5, 1.0, z / 2))
         return pp.Scene(camera, objects=[quad], lights=[light])
 
-    front = pp.render(view(3.0), shading="phong")
-    back_culled = pp.render(view(-3.0), shading="phong")
-    back = pp.render(view(-3.0), shading="phong", backface_cull=False)
+    front = pp.render(view(3.0), shading=shading)
+    back_culled = pp.render(view(-3.0), shading=shading)
+    back = pp.render(view(-3.0), shading=shading, backface_cull=False)
     assert np.all(back_culled.object_id == -1)
     assert np.array_equal(back.object_id >= 0, (front.object_id >= 0)[:, ::-1])
     drawn = front.object_id >= 0

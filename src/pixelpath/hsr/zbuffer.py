@@ -177,7 +177,8 @@ def _clip_to_view(geometry, camera, keep, front, mode, lighting) -> tuple[_Drawa
     clip = world_to_clip(geometry.vertices, camera)
     columns = (clip, geometry.vertices, geometry.normals)
     if mode == _kernels.GOURAUD:
-        columns += (_vertex_colors(geometry, lighting),)
+        back_drawn = bool(np.any(keep & ~front[geometry.triangle_polygon]))
+        columns += (_vertex_colors(geometry, lighting, two_sided=back_drawn),)
     inside, crossing = classify(clip, geometry.triangles, keep)
     new_columns, new_triangles, new_source = clip_crossing(columns, geometry.triangles, crossing)
     if len(new_triangles):
@@ -261,12 +262,15 @@ def _scratch_buffers(height: int, width: int) -> tuple[np.ndarray, np.ndarray]:
     return buffers
 
 
-def _vertex_colors(geometry, lighting: _Lighting) -> np.ndarray:
-    """(V, 6) Gouraud intensities at the vertices, lit from the front, then from the back."""
+def _vertex_colors(geometry, lighting: _Lighting, two_sided: bool) -> np.ndarray:
+    """(V, 6) Gouraud intensities at the vertices, lit from the front, then from the back.
+
+    The back half is only computed when a face seen from behind is drawn (culling off).
+    """
     from pixelpath.raster.shading import shade_points
 
-    colors = np.empty((len(geometry.vertices), 6))
-    for start, flipped in ((0, False), (3, True)):
+    colors = np.zeros((len(geometry.vertices), 6))
+    for start, flipped in ((0, False), (3, True))[: 2 if two_sided else 1]:
         colors[:, start : start + 3] = shade_points(
             geometry.vertices, geometry.normals, np.full(len(geometry.vertices), flipped),
             geometry.vertex_object, geometry.materials, lighting.lights, lighting.ambient,
