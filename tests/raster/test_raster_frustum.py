@@ -42,9 +42,7 @@ def test_clip_to_screen_refuses_points_behind_the_eye():
 def inside(vertices, tolerance=1e-12):
     x, y, z, w = vertices[:, :4].T
     slack = tolerance * np.maximum(1.0, np.abs(w))
-    return np.all(
-        (np.abs(x) <= w + slack) & (np.abs(y) <= w + slack) & (np.abs(z) <= w + slack)
-    )
+    return np.all((np.abs(x) <= w + slack) & (np.abs(y) <= w + slack) & (np.abs(z) <= w + slack))
 
 
 def test_triangle_inside_is_kept_unchanged():
@@ -116,3 +114,11 @@ def test_bad_input():
         clip_to_frustum(np.ones((3, 4)), [[0, 1, 5]])
     with pytest.raises(ValueError, match="keep"):
         clip_to_frustum(np.ones((3, 4)), [[0, 1, 2]], keep=[True, False])
+
+
+def test_growing_a_buffer_keeps_its_rows():
+    from pixelpath.raster._kernels import _grown
+
+    rows = np.arange(6.0).reshape(3, 2)
+    bigger = _grown(rows, 5)
+    assert bigger.shape == (6, 2) and np.array_equal(bigger[:3], rows)

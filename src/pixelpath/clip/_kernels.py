@@ -118,6 +118,8 @@ def clip_stage(src, n, row, dst, crossings):
     previous one is not emitted. When ``crossings`` has ``n`` rows it records, per (S, E) pair,
     the intersection point emitted (NaN when none) for the trace.
     """
+    if n == 0:
+        return 0
     record = crossings.shape[0] == n
     m = 0
     s = src[n - 1]  # S starts as the last vertex

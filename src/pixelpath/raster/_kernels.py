@@ -31,7 +31,7 @@ import math
 import numpy as np
 
 from pixelpath._jit import njit, prange, register_warmup
-from pixelpath.clip._halfspace import clip_polygon_halfspace
+from pixelpath.clip._kernels import PLANE, clip_stage
 from pixelpath.lighting._kernels import shade_point
 
 FLAT = 0
@@ -59,15 +59,16 @@ OUTSIDE = 0  # every vertex outside one frustum plane: dropped
 INSIDE = 1  # in front of the near plane, behind the far plane, inside the guard band: drawn as is
 CROSSING = 2  # clipped against the six planes
 
-# The six frustum planes in clip space, as half-spaces c · (x, y, z, w) + c_4 >= 0.
+# The six frustum planes in clip space as boundary rows of the clipping kernel:
+# [PLANE, c0, c1, c2, c3], the half-space c · (x, y, z, w) >= 0.
 FRUSTUM_PLANES = np.array(
     [
-        [0.0, 0.0, 1.0, 1.0, 0.0],  # near: z >= -w
-        [0.0, 0.0, -1.0, 1.0, 0.0],  # far: z <= w
-        [1.0, 0.0, 0.0, 1.0, 0.0],  # left: x >= -w
-        [-1.0, 0.0, 0.0, 1.0, 0.0],  # right: x <= w
-        [0.0, 1.0, 0.0, 1.0, 0.0],  # bottom: y >= -w
-        [0.0, -1.0, 0.0, 1.0, 0.0],  # top: y <= w
+        [PLANE, 0.0, 0.0, 1.0, 1.0],  # near: z >= -w
+        [PLANE, 0.0, 0.0, -1.0, 1.0],  # far: z <= w
+        [PLANE, 1.0, 0.0, 0.0, 1.0],  # left: x >= -w
+        [PLANE, -1.0, 0.0, 0.0, 1.0],  # right: x <= w
+        [PLANE, 0.0, 1.0, 0.0, 1.0],  # bottom: y >= -w
+        [PLANE, 0.0, -1.0, 0.0, 1.0],  # top: y <= w
     ]
 )
 # Triangles within GUARD_BAND times the view's half-width are rasterized without x/y clipping
@@ -152,6 +153,7 @@ def clip_triangles(attributes, triangles, crossing):
     source = np.empty(crossing.shape[0] * 7, dtype=np.intp)
     polygon = np.empty((MAX_CLIPPED + 1, k))
     scratch = np.empty((MAX_CLIPPED + 1, k))
+    untraced = np.empty((0, 2))  # no room to record crossings: the stages keep no trace
     n_vertices = 0
     n_triangles = 0
     for t in crossing:
@@ -160,7 +162,7 @@ def clip_triangles(attributes, triangles, crossing):
         n = 3
         src, dst = polygon, scratch
         for p in range(6):
-            n = clip_polygon_halfspace(src, n, FRUSTUM_PLANES[p], dst)
+            n = clip_stage(src, n, FRUSTUM_PLANES[p], dst, untraced)
             src, dst = dst, src
         if n < 3:
             continue

@@ -4,9 +4,9 @@ Inside the frustum ``−w ≤ x ≤ w``, ``−w ≤ y ≤ w`` and ``−w ≤ z �
 linear inequality in (x, y, z, w). Clipping *before* the perspective divide is what makes a
 triangle crossing the near plane come out right: its part behind the eye (w < 0) would wrap
 around through infinity after the divide. Each crossing triangle goes through the project's
-Sutherland-Hodgman stage, generalized to half-spaces
-(:func:`pixelpath.clip._halfspace.clip_polygon_halfspace`), once per plane; vertex attributes
-(world position, normal, colours) are interpolated with the same parameter. The clipped convex
+Sutherland-Hodgman stage (:func:`pixelpath.clip._kernels.clip_stage`, with its homogeneous
+``PLANE`` boundaries) once per plane; vertex attributes (world position, normal, colours) are
+interpolated with the same parameter. The clipped convex
 polygon is fanned back into triangles.
 
 Only triangles that need it are clipped: one with all vertices outside one plane is dropped;

@@ -1,4 +1,8 @@
-"""The Sutherland-Hodgman stage generalized to half-spaces (used by the raster's frustum clip)."""
+"""The Sutherland-Hodgman stage against homogeneous PLANE boundaries (the raster's frustum clip).
+
+A 2-D point (x, y) travels as the homogeneous row (x, y, 0, 1), so the half-plane
+a x + b y + c >= 0 is the PLANE boundary (a, b, 0, c); further columns are attributes.
+"""
 
 from __future__ import annotations
 
@@ -8,15 +12,23 @@ import shapely
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from pixelpath.clip._halfspace import clip_polygon_halfspace
+from pixelpath.clip._kernels import PLANE, clip_stage
+
+NO_TRACE = np.empty((0, 2))
 
 
 def clip(polygon, plane):
-    polygon = np.ascontiguousarray(polygon, dtype=np.float64)
+    """Clip 2-D ``polygon`` (rows x, y, attributes...) against a x + b y + c >= 0."""
+    polygon = np.asarray(polygon, dtype=np.float64)
     n = len(polygon)
-    out = np.empty((n + n // 2 + 1, polygon.shape[1]))
-    m = clip_polygon_halfspace(polygon, n, np.asarray(plane, dtype=np.float64), out)
-    return out[:m]
+    rows = np.zeros((n, polygon.shape[1] + 2))
+    rows[:, :2] = polygon[:, :2]
+    rows[:, 3] = 1.0
+    rows[:, 4:] = polygon[:, 2:]
+    a, b, c = plane
+    out = np.empty((n + n // 2 + 1, rows.shape[1]))
+    m = clip_stage(rows, n, np.array([PLANE, a, b, 0.0, c]), out, NO_TRACE)
+    return np.hstack([out[:m, :2], out[:m, 4:]])
 
 
 def test_notes_walk_starting_from_the_last_vertex():
@@ -65,8 +77,12 @@ def test_area_matches_shapely_for_any_polygon(seed, n, angle, offset):
     tangent = np.array([-normal[1], normal[0]])
     base = offset * normal
     half_plane = shapely.Polygon(
-        [base + far * tangent, base - far * tangent,
-         base - far * tangent + far * normal, base + far * tangent + far * normal]
+        [
+            base + far * tangent,
+            base - far * tangent,
+            base - far * tangent + far * normal,
+            base + far * tangent + far * normal,
+        ]
     )
     subject = shapely.Polygon(polygon)
     assert subject.is_valid
@@ -77,13 +93,13 @@ def test_area_matches_shapely_for_any_polygon(seed, n, angle, offset):
 
 def test_everything_outside_or_empty_input():
     assert len(clip([[0, 0], [1, 0], [0, 1]], [1, 0, -5])) == 0
-    out = np.empty((1, 2))
-    assert clip_polygon_halfspace(np.empty((0, 2)), 0, np.array([1.0, 0.0, 0.0]), out) == 0
+    out = np.empty((1, 4))
+    row = np.array([PLANE, 1.0, 0.0, 0.0, 0.0])
+    assert clip_stage(np.empty((0, 4)), 0, row, out, NO_TRACE) == 0
 
 
-def test_growing_a_buffer_keeps_its_rows():
-    from pixelpath.raster._kernels import _grown
-
-    rows = np.arange(6.0).reshape(3, 2)
-    bigger = _grown(rows, 5)
-    assert bigger.shape == (6, 2) and np.array_equal(bigger[:3], rows)
+def test_a_crossing_exactly_at_a_vertex_is_not_emitted_twice():
+    # x >= 0 with the vertex (0, 0) on the boundary. S starts at (1, 1): edge to (-1, 1) leaves,
+    # emitting the cut (0, 1); edge to (0, 0) enters, and its cut is (0, 0) itself, emitted once;
+    # edge to (1, 1) stays inside.
+    assert clip([[-1, 1], [0, 0], [1, 1]], [1, 0, 0]).tolist() == [[0, 1], [0, 0], [1, 1]]
