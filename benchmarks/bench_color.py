@@ -81,35 +81,18 @@ def bench_dtype(dtype, repeat, cv2, skcolor):
 
     if cv2 is not None:
         cv_dst = np.empty_like(image)
-        rows.append(
-            (
-                "OpenCV cvtColor RGB2HSV",
-                "dst=",
-                best_ms(lambda: cv2.cvtColor(image, cv2.COLOR_RGB2HSV, dst=cv_dst), repeat),
-            )
-        )
-        rows.append(
-            (
-                "OpenCV cvtColor RGB2HLS",
-                "dst=",
-                best_ms(lambda: cv2.cvtColor(image, cv2.COLOR_RGB2HLS, dst=cv_dst), repeat),
-            )
-        )
-        cv_hsv = cv2.cvtColor(image, cv2.COLOR_RGB2HSV)
-        rows.append(
-            (
-                "OpenCV cvtColor HSV2RGB",
-                "dst=",
-                best_ms(lambda: cv2.cvtColor(cv_hsv, cv2.COLOR_HSV2RGB, dst=cv_dst), repeat),
-            )
-        )
-        rows.append(
-            (
-                "OpenCV cvtColor RGB2YCrCb",
-                "dst=",
-                best_ms(lambda: cv2.cvtColor(image, cv2.COLOR_RGB2YCrCb, dst=cv_dst), repeat),
-            )
-        )
+        hsv_cv = cv2.cvtColor(image, cv2.COLOR_RGB2HSV)
+        hls_cv = cv2.cvtColor(image, cv2.COLOR_RGB2HLS)
+        for code, source in (
+            ("RGB2HSV", image),
+            ("RGB2HLS", image),
+            ("HSV2RGB", hsv_cv),
+            ("HLS2RGB", hls_cv),
+            ("RGB2YCrCb", image),
+        ):
+            flag = getattr(cv2, f"COLOR_{code}")
+            ms = best_ms(lambda f=flag, src=source: cv2.cvtColor(src, f, dst=cv_dst), repeat)
+            rows.append((f"OpenCV cvtColor {code}", "dst=", ms))
     if skcolor is not None:
         few = max(1, repeat // 3)
         rows.append(

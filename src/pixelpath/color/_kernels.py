@@ -3,8 +3,10 @@
 :func:`convert_pixels` takes the pixels as flat 1-D arrays (``r0 g0 b0 r1 g1 b1 ...``), cuts them
 into chunks and runs one conversion loop per chunk, in parallel. Each loop reads a pixel, scales
 it (1/255 for uint8, 1/65535 for uint16, 1 for floats), counts it if a component is not finite,
-converts it in float64 and writes it in the output's dtype. A pixel is read whole before it is
-written, so the output may be the input's own buffer.
+converts it and writes it. The arithmetic runs in the output's precision — the type of ``scale``,
+from which every constant is derived (:func:`numbers`) — so a float32 image is converted with
+16-lane float32 vectors, as OpenCV does, and a float64 one to full double precision. A pixel is
+read whole before it is written, so the output may be the input's own buffer.
 
 Written this way — flat arrays indexed ``3*i + k`` from zero, no data-dependent branches
 (conditional expressions on cheap values become selects) — LLVM vectorizes the loops; indexing
@@ -55,6 +57,21 @@ def smaller(a, b):
 
 
 @njit(inline="always")
+def numbers(scale):
+    """0, 1, 2, 4, 6, 1/6, 1/60 and 60 in the precision of ``scale`` (float32 or float64).
+
+    Derived by exact arithmetic from ``scale / scale`` = 1: a float literal would be float64 and
+    promote a float32 computation to float64.
+    """
+    one = scale / scale
+    two = one + one
+    four = two + two
+    six = four + two
+    sixty = six * (four + six)
+    return one - one, one, two, four, six, one / six, one / sixty, sixty
+
+
+@njit(inline="always")
 def not_finite(magnitude):
     """1 if a sum of magnitudes |a| + |b| + ... is NaN or inf (some term is), else 0."""
     return np.int64(not magnitude <= _LARGEST)
@@ -80,6 +97,7 @@ def affine_span(src, dst, scale, matrix, offset):
 
 @njit(error_model="numpy")
 def rgb_to_hsx_span(src, dst, scale, lightness):
+    zero, one, two, four, six, _, _, sixty = numbers(scale)
     bad = 0
     for i in range(src.shape[0] // 3):
         r = src[3 * i] * scale
@@ -93,66 +111,69 @@ def rgb_to_hsx_span(src, dst, scale, lightness):
         is_r = cmax == r
         is_g = cmax == g
         numerator = (g - b) if is_r else ((b - r) if is_g else (r - g))
-        base = 0.0 if is_r else (2.0 if is_g else 4.0)
-        sextant = base + numerator / (delta if delta > 0.0 else 1.0)  # greys: 0
-        sextant = sextant + 6.0 if sextant < 0.0 else sextant
-        # Round-off can land exactly on 6 sextants (360°): H stays strictly below 360.
-        sextant = sextant - 6.0 if sextant >= 6.0 else sextant
-        dst[3 * i] = 60.0 * sextant
+        base = zero if is_r else (two if is_g else four)
+        sextant = base + numerator / (delta if delta > zero else one)  # greys: 0
+        sextant = sextant + six if sextant < zero else sextant
+        hue = sixty * sextant
+        # Round-off can land exactly on 360°: H stays strictly below 360.
+        dst[3 * i] = hue - sixty * six if hue >= sixty * six else hue
         if lightness:
             # 1 − |2L − 1| written as min(Cmax + Cmin, 2 − Cmax − Cmin): no cancellation for
             # dark colours, so S stays within [0, 1] to the last bit.
-            spread = smaller(cmax + cmin, 2.0 - cmax - cmin)
-            dst[3 * i + 1] = delta / spread if spread > 0.0 else 0.0
-            dst[3 * i + 2] = 0.5 * (cmax + cmin)
+            spread = smaller(cmax + cmin, two - cmax - cmin)
+            dst[3 * i + 1] = delta / spread if spread > zero else zero
+            dst[3 * i + 2] = (cmax + cmin) / two
         else:
-            dst[3 * i + 1] = delta / cmax if cmax > 0.0 else 0.0
+            dst[3 * i + 1] = delta / cmax if cmax > zero else zero
             dst[3 * i + 2] = cmax
     return bad
 
 
 @njit(inline="always")
-def sector_weight(n, sextant):
+def sector_weight(n, sextant, scale):
     """f(k) = 1 − clamp(min(k, 4 − k), 0, 1), k = (n + sextant) mod 6: the table entry over C."""
+    zero, one, _, four, six, _, _, _ = numbers(scale)
     k = n + sextant
-    k = k - 6.0 if k >= 6.0 else k
-    return 1.0 - smaller(larger(smaller(k, 4.0 - k), 0.0), 1.0)
+    k = k - six if k >= six else k
+    return one - smaller(larger(smaller(k, four - k), zero), one)
 
 
 @njit(error_model="numpy")
 def hsx_to_rgb_span(src, dst, scale, lightness):
+    zero, one, two, four, six, sixth, per_degree, _ = numbers(scale)
     bad = 0
     for i in range(src.shape[0] // 3):
         h = src[3 * i] * scale
         s = src[3 * i + 1] * scale
         v = src[3 * i + 2] * scale
         bad += not_finite(abs(h) + abs(s) + abs(v))
-        sextant = h * (1.0 / 60.0)
-        sextant = sextant - 6.0 * np.floor(sextant * (1.0 / 6.0))  # H mod 360: 360, −60 wrap
-        sextant = 0.0 if sextant >= 6.0 else sextant
+        sextant = h * per_degree
+        sextant = sextant - six * np.floor(sextant * sixth)  # H mod 360: 360 and −60 wrap
+        sextant = zero if sextant >= six else sextant
         if lightness:
-            chroma = smaller(2.0 * v, 2.0 - 2.0 * v) * s  # (1 − |2L − 1|)·S, no cancellation
-            low = v - 0.5 * chroma
+            chroma = smaller(two * v, two - two * v) * s  # (1 − |2L − 1|)·S, no cancellation
+            low = v - chroma / two
         else:
             chroma = v * s
             low = v - chroma
-        dst[3 * i] = low + chroma * sector_weight(5.0, sextant)
-        dst[3 * i + 1] = low + chroma * sector_weight(3.0, sextant)
-        dst[3 * i + 2] = low + chroma * sector_weight(1.0, sextant)
+        dst[3 * i] = low + chroma * sector_weight(four + one, sextant, scale)
+        dst[3 * i + 1] = low + chroma * sector_weight(two + one, sextant, scale)
+        dst[3 * i + 2] = low + chroma * sector_weight(one, sextant, scale)
     return bad
 
 
 @njit(error_model="numpy")
 def rgb_to_cmyk_span(src, dst, scale):
+    zero, one, _, _, _, _, _, _ = numbers(scale)
     bad = 0
     for i in range(src.shape[0] // 3):
-        cyan = 1.0 - src[3 * i] * scale
-        magenta = 1.0 - src[3 * i + 1] * scale
-        yellow = 1.0 - src[3 * i + 2] * scale
+        cyan = one - src[3 * i] * scale
+        magenta = one - src[3 * i + 1] * scale
+        yellow = one - src[3 * i + 2] * scale
         bad += not_finite(abs(cyan) + abs(magenta) + abs(yellow))
         black = smaller(smaller(cyan, magenta), yellow)
-        ink = 1.0 - black
-        inv = 1.0 / (ink if ink > 0.0 else 1.0)  # pure black: K = 1 and C' = M' = Y' = 0
+        ink = one - black
+        inv = one / (ink if ink > zero else one)  # pure black: K = 1 and C' = M' = Y' = 0
         dst[4 * i] = (cyan - black) * inv
         dst[4 * i + 1] = (magenta - black) * inv
         dst[4 * i + 2] = (yellow - black) * inv
@@ -162,6 +183,7 @@ def rgb_to_cmyk_span(src, dst, scale):
 
 @njit(error_model="numpy")
 def cmyk_to_rgb_span(src, dst, scale):
+    _, one, _, _, _, _, _, _ = numbers(scale)
     bad = 0
     for i in range(src.shape[0] // 4):
         c = src[4 * i] * scale
@@ -169,10 +191,10 @@ def cmyk_to_rgb_span(src, dst, scale):
         y = src[4 * i + 2] * scale
         k = src[4 * i + 3] * scale
         bad += not_finite(abs(c) + abs(m) + abs(y) + abs(k))
-        white = 1.0 - k
-        dst[3 * i] = (1.0 - c) * white
-        dst[3 * i + 1] = (1.0 - m) * white
-        dst[3 * i + 2] = (1.0 - y) * white
+        white = one - k
+        dst[3 * i] = (one - c) * white
+        dst[3 * i + 1] = (one - m) * white
+        dst[3 * i + 2] = (one - y) * white
     return bad
 
 
@@ -223,5 +245,8 @@ def warmup() -> None:
     ):
         src = np.zeros(3, dtype=dtype)
         dst = np.zeros(3, dtype=out_dtype)
-        convert_span(src, dst, 1.0, AFFINE, matrix, offset)
-        convert_pixels(src, dst, 3, 3, 1.0, AFFINE, matrix, offset)
+        one = out_dtype(1.0)
+        convert_span(src, dst, one, AFFINE, matrix.astype(out_dtype), offset.astype(out_dtype))
+        convert_pixels(
+            src, dst, 3, 3, one, AFFINE, matrix.astype(out_dtype), offset.astype(out_dtype)
+        )

@@ -155,28 +155,26 @@ def _apply(conversion: _Conversion, values: ArrayLike, name: str, out: np.ndarra
     from pixelpath.color import _kernels
 
     src, scale = _prepare(values, name, conversion.src)
+    dtype = _result_dtype(src)
     dst_channels = MODELS[conversion.dst]
-    result = _prepare_out(out, (*src.shape[:-1], dst_channels), _result_dtype(src))
+    result = _prepare_out(out, (*src.shape[:-1], dst_channels), dtype)
+    # The kernels compute in the precision of scale, matrix and offset: the result's.
+    args = (
+        dtype(scale),
+        getattr(_kernels, conversion.op),
+        conversion.matrix.astype(dtype, copy=False),
+        conversion.offset.astype(dtype, copy=False),
+    )
+    flat_src, flat_dst = src.reshape(-1), result.reshape(-1)
     # Non-finite input is counted by the kernel and raised below; errstate keeps the pure-Python
     # run (NUMBA_DISABLE_JIT=1) from warning on the way, as the compiled run never does.
-    flat_src, flat_dst = src.reshape(-1), result.reshape(-1)
-    op = getattr(_kernels, conversion.op)
     with np.errstate(invalid="ignore", over="ignore"):
         if flat_src.size <= _kernels.CHUNK * src.shape[-1]:
             # One chunk's worth: waking the thread pool would cost more than the work.
-            bad = _kernels.convert_span(
-                flat_src, flat_dst, scale, op, conversion.matrix, conversion.offset
-            )
+            bad = _kernels.convert_span(flat_src, flat_dst, *args)
         else:
             bad = _kernels.convert_pixels(
-                flat_src,
-                flat_dst,
-                src.shape[-1],
-                dst_channels,
-                scale,
-                op,
-                conversion.matrix,
-                conversion.offset,
+                flat_src, flat_dst, src.shape[-1], dst_channels, *args
             )
     if bad:
         raise ValueError(
