@@ -44,9 +44,10 @@ def shade_point(px, py, pz, nx, ny, nz, ex, ey, ez, material, lights, ambient, b
     vz = ez - pz
     v_len = math.sqrt(vx * vx + vy * vy + vz * vz)
     if v_len > 0.0:
-        vx /= v_len
-        vy /= v_len
-        vz /= v_len
+        inv = 1.0 / v_len
+        vx *= inv
+        vy *= inv
+        vz *= inv
 
     for k in range(lights.shape[0]):
         # L: unit vector from the point towards the light.
@@ -57,9 +58,10 @@ def shade_point(px, py, pz, nx, ny, nz, ex, ey, ez, material, lights, ambient, b
             l_len = math.sqrt(lx * lx + ly * ly + lz * lz)
             if l_len == 0.0:
                 continue
-            lx /= l_len
-            ly /= l_len
-            lz /= l_len
+            inv = 1.0 / l_len
+            lx *= inv
+            ly *= inv
+            lz *= inv
         else:
             lx = -lights[k, 1]
             ly = -lights[k, 2]
@@ -96,7 +98,27 @@ def _specular(nx, ny, nz, lx, ly, lz, vx, vy, vz, n_dot_l, shininess, blinn):
         cosine = rx * vx + ry * vy + rz * vz
     if cosine <= 0.0:
         return 0.0
-    return cosine**shininess
+    return power(cosine, shininess)
+
+
+@njit(inline="always")
+def power(base, exponent):
+    """``base ** exponent``, by repeated squaring when the exponent is a whole number.
+
+    Shininess is almost always a whole number (the notes use 1 to 100s); squaring takes a few
+    multiplications where ``pow`` takes a logarithm and an exponential, a large share of the
+    per-pixel cost of Phong shading.
+    """
+    whole = int(exponent)
+    if whole != exponent or whole > 4096:
+        return base**exponent
+    result = 1.0
+    while whole > 0:
+        if whole & 1:
+            result *= base
+        base *= base
+        whole >>= 1
+    return result
 
 
 @njit(parallel=True)
