@@ -103,7 +103,7 @@ def _specular(nx, ny, nz, lx, ly, lz, vx, vy, vz, n_dot_l, shininess, blinn):
 
 @njit(inline="always")
 def power(base, exponent):
-    """``base ** exponent``, by repeated squaring when the exponent is a whole number.
+    """Return ``base ** exponent``, by repeated squaring when the exponent is a whole number.
 
     Shininess is almost always a whole number (the notes use 1 to 100s); squaring takes a few
     multiplications where ``pow`` takes a logarithm and an exponential, a large share of the
