@@ -116,9 +116,5 @@ def warmup() -> int:
     from pixelpath._jit import run_warmups
 
     for module in _KERNEL_MODULES:
-        try:
-            importlib.import_module(module)
-        except ModuleNotFoundError as exc:  # a stage not built yet in this checkout
-            if exc.name != module:
-                raise
+        importlib.import_module(module)
     return run_warmups()

@@ -31,13 +31,7 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--version", action="version", version=f"pixelpath {__version__}")
     subparsers = parser.add_subparsers(dest="command", metavar="COMMAND")
     for name in COMMANDS:
-        try:
-            module = importlib.import_module(f"pixelpath.cli.{name}")
-        except ModuleNotFoundError as exc:  # a command whose stage is not in this checkout yet
-            if exc.name != f"pixelpath.cli.{name}":
-                raise
-            continue
-        module.register(subparsers)
+        importlib.import_module(f"pixelpath.cli.{name}").register(subparsers)
     return parser
 
 
