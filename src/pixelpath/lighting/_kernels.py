@@ -1,8 +1,12 @@
 """Compiled kernels of the illumination model (see :mod:`pixelpath.lighting.phong`).
 
-``shade_point`` is the scalar kernel that every renderer calls once per shaded sample; it
-allocates nothing and writes its answer into ``out``, so it can sit inside another kernel's
-per-pixel loop. Packed layouts (built by :mod:`pixelpath.lighting.packing`):
+``shade_point`` is the scalar kernel that renderers call once per shaded sample; it allocates
+nothing and writes its answer into ``out``, so it can sit inside another kernel's per-pixel
+loop. ``shade_planar`` computes the same over a batch of points held planar (x, y, z in rows),
+light by light in loops that LLVM vectorizes; the rasterizer's per-pixel Phong shading uses it.
+Both are built from the same inline pieces (``unit_to_eye``, ``light_direction``,
+``light_cosines``, ``power``/``power_planar``), so the formula is written once and the two
+agree bit for bit. Packed layouts (built by :mod:`pixelpath.lighting.packing`):
 
 * ``material`` (8,) float64: ``[r, g, b, ka, kd, ks, shininess, 0]`` (``Material.packed()``);
 * ``lights`` (L, 7) float64: ``[kind, x, y, z, r*I, g*I, b*I]`` with kind 0 = point light at
@@ -22,6 +26,55 @@ POINT_LIGHT = 0.0
 DIRECTIONAL_LIGHT = 1.0
 
 
+@njit(inline="always")
+def unit_to_eye(px, py, pz, ex, ey, ez):
+    """Return V, the unit vector from point p to the eye (zero when the eye is on p)."""
+    vx = ex - px
+    vy = ey - py
+    vz = ez - pz
+    v_len = math.sqrt(vx * vx + vy * vy + vz * vz)
+    # Conditional expressions on cheap values, not branches: the planar loops stay vectorizable.
+    inv = 1.0 / v_len if v_len > 0.0 else 1.0
+    return vx * inv, vy * inv, vz * inv
+
+
+@njit(inline="always")
+def light_direction(lights, k, px, py, pz):
+    """Return L, the unit vector from point p towards light k (zero for a point light on p)."""
+    if lights[k, 0] == POINT_LIGHT:
+        lx = lights[k, 1] - px
+        ly = lights[k, 2] - py
+        lz = lights[k, 3] - pz
+        l_len = math.sqrt(lx * lx + ly * ly + lz * lz)
+        inv = 1.0 / l_len if l_len > 0.0 else 0.0
+        return lx * inv, ly * inv, lz * inv
+    return -lights[k, 1], -lights[k, 2], -lights[k, 3]
+
+
+@njit(inline="always")
+def light_cosines(nx, ny, nz, lx, ly, lz, vx, vy, vz, blinn):
+    """Return (max(0, N.L), the model's cosine R.V or N.H), the cosine 0 where N.L <= 0.
+
+    A zero L (a point light on the point) gives N.L = 0: no diffuse term and no highlight.
+    """
+    n_dot_l = nx * lx + ny * ly + nz * lz
+    if blinn:
+        hx = lx + vx
+        hy = ly + vy
+        hz = lz + vz
+        h_len = math.sqrt(hx * hx + hy * hy + hz * hz)
+        n_dot_h = nx * hx + ny * hy + nz * hz
+        cosine = n_dot_h / h_len if h_len > 0.0 else 0.0
+    else:
+        # R = 2(N.L)N - L, the mirror direction of the light about the normal.
+        rx = 2.0 * n_dot_l * nx - lx
+        ry = 2.0 * n_dot_l * ny - ly
+        rz = 2.0 * n_dot_l * nz - lz
+        cosine = rx * vx + ry * vy + rz * vz
+    lit = n_dot_l > 0.0  # light behind the surface: no diffuse, no highlight
+    return (n_dot_l if lit else 0.0), (cosine if lit else 0.0)
+
+
 @njit
 def shade_point(px, py, pz, nx, ny, nz, ex, ey, ez, material, lights, ambient, blinn, out):
     """Write the unclamped intensity (r, g, b) at surface point p with unit normal n into out.
@@ -29,76 +82,97 @@ def shade_point(px, py, pz, nx, ny, nz, ex, ey, ez, material, lights, ambient, b
     I_c = ka Ia_c C_c + sum over lights of [kd IL_c C_c max(0, N.L) + ks IL_c spec], where C is
     the object colour and spec = (R.V)^n (Phong) or (N.H)^n (Blinn-Phong). spec is 0 whenever
     N.L <= 0 or the model's cosine (R.V, or N.H) is <= 0, so 0^0 never arises. A point light
-    sitting exactly on p has no direction and contributes nothing.
+    sitting exactly on p has no direction and contributes nothing. :func:`shade_planar` is the
+    same computation over many points at once.
     """
-    ka = material[3]
     kd = material[4]
     ks = material[5]
-    shininess = material[6]
     for c in range(3):
-        out[c] = ka * ambient[c] * material[c]
-
-    # V: unit vector from the point to the eye (zero when the eye is on the point).
-    vx = ex - px
-    vy = ey - py
-    vz = ez - pz
-    v_len = math.sqrt(vx * vx + vy * vy + vz * vz)
-    if v_len > 0.0:
-        inv = 1.0 / v_len
-        vx *= inv
-        vy *= inv
-        vz *= inv
-
+        out[c] = material[3] * ambient[c] * material[c]
+    vx, vy, vz = unit_to_eye(px, py, pz, ex, ey, ez)
     for k in range(lights.shape[0]):
-        # L: unit vector from the point towards the light.
-        if lights[k, 0] == POINT_LIGHT:
-            lx = lights[k, 1] - px
-            ly = lights[k, 2] - py
-            lz = lights[k, 3] - pz
-            l_len = math.sqrt(lx * lx + ly * ly + lz * lz)
-            if l_len == 0.0:
-                continue
-            inv = 1.0 / l_len
-            lx *= inv
-            ly *= inv
-            lz *= inv
-        else:
-            lx = -lights[k, 1]
-            ly = -lights[k, 2]
-            lz = -lights[k, 3]
-
-        n_dot_l = nx * lx + ny * ly + nz * lz
-        if n_dot_l <= 0.0:  # light behind the surface: no diffuse, no highlight
-            continue
+        lx, ly, lz = light_direction(lights, k, px, py, pz)
+        diffuse, cosine = light_cosines(nx, ny, nz, lx, ly, lz, vx, vy, vz, blinn)
         for c in range(3):
-            out[c] += kd * lights[k, 4 + c] * material[c] * n_dot_l
-
-        spec = _specular(nx, ny, nz, lx, ly, lz, vx, vy, vz, n_dot_l, shininess, blinn)
-        if spec > 0.0:
+            out[c] += kd * lights[k, 4 + c] * material[c] * diffuse
+        if cosine > 0.0:
+            spec = power(cosine, material[6])
             for c in range(3):
                 out[c] += ks * lights[k, 4 + c] * spec
 
 
-@njit
-def _specular(nx, ny, nz, lx, ly, lz, vx, vy, vz, n_dot_l, shininess, blinn):
-    """Return (R.V)^n or, for Blinn-Phong, (N.H)^n; 0 when that cosine is not positive."""
-    if blinn:
-        hx = lx + vx
-        hy = ly + vy
-        hz = lz + vz
-        h_len = math.sqrt(hx * hx + hy * hy + hz * hz)
-        if h_len == 0.0:
-            return 0.0
-        cosine = (nx * hx + ny * hy + nz * hz) / h_len
-    else:
-        # R = 2(N.L)N - L, the mirror direction of the light about the normal.
-        rx = 2.0 * n_dot_l * nx - lx
-        ry = 2.0 * n_dot_l * ny - ly
-        rz = 2.0 * n_dot_l * nz - lz
-        cosine = rx * vx + ry * vy + rz * vz
-    if cosine <= 0.0:
-        return 0.0
-    return power(cosine, shininess)
+@njit(error_model="numpy")
+def shade_planar(count, points, normals, eye, material, lights, ambient, blinn, out, scratch):
+    """Shade the first ``count`` points like :func:`shade_point`, in planar layout.
+
+    ``points`` and ``normals`` (3, N) hold x, y and z in rows, ``out`` (3, N) receives r, g and
+    b, ``scratch`` (5, N) is work space. Every loop runs over unit-stride rows from index 0
+    without calls or branches that depend on the point, so LLVM vectorizes it (several points
+    per instruction); the divisions are guarded, so ``error_model="numpy"`` (no zero-division
+    check, which would block vectorizing) changes no result.
+    """
+    x, y, z = points[0], points[1], points[2]
+    nx, ny, nz = normals[0], normals[1], normals[2]
+    vx, vy, vz = scratch[0], scratch[1], scratch[2]
+    cosine, spec = scratch[3], scratch[4]
+    red, green, blue = out[0], out[1], out[2]
+    kd = material[4]
+    ks = material[5]
+    ambient_r = material[3] * ambient[0] * material[0]
+    ambient_g = material[3] * ambient[1] * material[1]
+    ambient_b = material[3] * ambient[2] * material[2]
+    ex, ey, ez = eye[0], eye[1], eye[2]
+    for i in range(count):
+        red[i] = ambient_r
+        green[i] = ambient_g
+        blue[i] = ambient_b
+        vx[i], vy[i], vz[i] = unit_to_eye(x[i], y[i], z[i], ex, ey, ez)
+    for k in range(lights.shape[0]):
+        diffuse_r = kd * lights[k, 4] * material[0]
+        diffuse_g = kd * lights[k, 5] * material[1]
+        diffuse_b = kd * lights[k, 6] * material[2]
+        for i in range(count):
+            lx, ly, lz = light_direction(lights, k, x[i], y[i], z[i])
+            diffuse, cosine_i = light_cosines(
+                nx[i], ny[i], nz[i], lx, ly, lz, vx[i], vy[i], vz[i], blinn
+            )
+            cosine[i] = cosine_i
+            red[i] += diffuse_r * diffuse
+            green[i] += diffuse_g * diffuse
+            blue[i] += diffuse_b * diffuse
+        power_planar(cosine, count, material[6], spec)
+        specular_r = ks * lights[k, 4]
+        specular_g = ks * lights[k, 5]
+        specular_b = ks * lights[k, 6]
+        for i in range(count):
+            red[i] += specular_r * spec[i]
+            green[i] += specular_g * spec[i]
+            blue[i] += specular_b * spec[i]
+
+
+@njit(inline="always")
+def power_planar(base, count, exponent, out):
+    """Write :func:`power` of the first ``count`` bases into out, 0 where a base is <= 0.
+
+    The squarings run in the same order as in :func:`power` (bit-identical results), one pass
+    over the points per bit of the exponent. ``base`` is overwritten.
+    """
+    whole = int(exponent)
+    if whole != exponent or whole > 4096:
+        for i in range(count):
+            positive = base[i] if base[i] > 0.0 else 1.0
+            out[i] = positive**exponent if base[i] > 0.0 else 0.0
+        return
+    for i in range(count):
+        out[i] = 1.0 if base[i] > 0.0 else 0.0
+    while whole > 0:
+        if whole & 1:
+            for i in range(count):
+                out[i] *= base[i]
+        whole >>= 1
+        if whole > 0:
+            for i in range(count):
+                base[i] *= base[i]
 
 
 @njit(inline="always")

@@ -21,18 +21,21 @@ The pipeline these kernels implement (driven by :mod:`pixelpath.hsr.zbuffer`):
 4. ``render_bands``: the same, then, while the band is still in cache, shading once per visible
    pixel (deferred): the depth test stored only (1/w, triangle) per pixel; shading uses the
    perspective-correct barycentric weights ``b_i = (s_i / w_i) / sum_k (s_k / w_k)`` of the
-   screen weights ``s_i``.
+   screen weights ``s_i``. Phong shading gathers a row's interpolated points and normals into
+   planar batches (one object's pixels each) and shades a batch at once with the lighting
+   stage's vectorized ``shade_planar``.
 """
 
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 
 from pixelpath._jit import njit, prange, register_warmup
 from pixelpath.clip._kernels import PLANE, clip_stage
-from pixelpath.lighting._kernels import shade_point
+from pixelpath.lighting._kernels import shade_planar, shade_point
 
 FLAT = 0
 GOURAUD = 1
@@ -53,6 +56,9 @@ COLOR = 0
 BACK_COLOR = 3
 
 BAND_ROWS = 32
+# Phong pixels gathered per call of the planar shading kernel: its work arrays (14 rows of this
+# many float64) stay in the L1 cache.
+SHADE_BATCH = 256
 
 # Frustum triangle classes.
 OUTSIDE = 0  # every vertex outside one frustum plane: dropped
@@ -79,6 +85,16 @@ GUARD_BAND = 8.0
 # so the buffers follow the general bound of a stage, n + n // 2 vertices: 3, 4, 6, 9, 13, 19,
 # 28.
 MAX_CLIPPED = 28
+
+
+class PhongBatch(NamedTuple):
+    """Work arrays of one band's Phong pixels, planar: x, y, z (or r, g, b) in rows."""
+
+    points: np.ndarray  # (3, SHADE_BATCH) interpolated surface points
+    normals: np.ndarray  # (3, SHADE_BATCH) unit normals, turned towards the viewer
+    shaded: np.ndarray  # (3, SHADE_BATCH) unclamped intensities
+    scratch: np.ndarray  # (5, SHADE_BATCH) work space of shade_planar
+    columns: np.ndarray  # (SHADE_BATCH,) intp: the pixel column of each gathered pixel
 
 
 @njit(inline="always")
@@ -463,12 +479,18 @@ def render_bands(
     for k in prange(bands.shape[0]):
         band = bands[k]
         _rasterize_band(setup, rows, offsets, items, band, band_rows, inv_depth, triangle_id)
-        out = np.empty(3)
+        batch = PhongBatch(
+            np.empty((3, SHADE_BATCH)),
+            np.empty((3, SHADE_BATCH)),
+            np.empty((3, SHADE_BATCH)),
+            np.empty((5, SHADE_BATCH)),
+            np.empty(SHADE_BATCH, dtype=np.intp),
+        )
         for j in range(band * band_rows, min((band + 1) * band_rows, height)):
             _shade_row(
                 j, triangle_id, inv_depth, setup, triangles, positions, normals, colors,
                 triangle_info, flat_colors, materials, lights, ambient, eye, mode, blinn,
-                background, rgb, depth, object_id, out,
+                background, rgb, depth, object_id, batch,
             )
 
 
@@ -494,9 +516,16 @@ def _shade_row(
     rgb,
     depth,
     object_id,
-    out,
+    batch,
 ):
-    """Fill row j of the output buffers from the triangle seen at each of its pixels."""
+    """Fill row j of the output buffers from the triangle seen at each of its pixels.
+
+    Phong pixels are gathered (interpolated point and unit normal, planar) into ``batch`` and
+    shaded together by :func:`_shade_batch` when it is full, when the object changes, and at
+    the end of the row.
+    """
+    count = 0
+    batch_object = -1
     for i in range(triangle_id.shape[1]):
         t = triangle_id[j, i]
         if t < 0:
@@ -519,36 +548,39 @@ def _shade_row(
                 value = _mix(colors, a, b, c, b0, b1, b2, first + channel)
                 rgb[j, i, channel] = _clamp01(value)
             continue
-        px = _mix(positions, a, b, c, b0, b1, b2, 0)
-        py = _mix(positions, a, b, c, b0, b1, b2, 1)
-        pz = _mix(positions, a, b, c, b0, b1, b2, 2)
+        if count == SHADE_BATCH or (count > 0 and triangle_info[t, 0] != batch_object):
+            _shade_batch(j, count, batch, materials[batch_object], lights, ambient, eye, blinn, rgb)
+            count = 0
+        batch_object = triangle_info[t, 0]
         nx = _mix(normals, a, b, c, b0, b1, b2, 0)
         ny = _mix(normals, a, b, c, b0, b1, b2, 1)
         nz = _mix(normals, a, b, c, b0, b1, b2, 2)
         length = math.sqrt(nx * nx + ny * ny + nz * nz)
+        scale = 1.0
         if length > 0.0:
             scale = (-1.0 if triangle_info[t, 1] else 1.0) / length
-            nx *= scale
-            ny *= scale
-            nz *= scale
-        shade_point(
-            px,
-            py,
-            pz,
-            nx,
-            ny,
-            nz,
-            eye[0],
-            eye[1],
-            eye[2],
-            materials[triangle_info[t, 0]],
-            lights,
-            ambient,
-            blinn,
-            out,
-        )
+        for axis in range(3):
+            batch.points[axis, count] = _mix(positions, a, b, c, b0, b1, b2, axis)
+        batch.normals[0, count] = nx * scale
+        batch.normals[1, count] = ny * scale
+        batch.normals[2, count] = nz * scale
+        batch.columns[count] = i
+        count += 1
+    if count > 0:
+        _shade_batch(j, count, batch, materials[batch_object], lights, ambient, eye, blinn, rgb)
+
+
+@njit
+def _shade_batch(j, count, batch, material, lights, ambient, eye, blinn, rgb):
+    """Shade the gathered pixels of row j (one object's) and write their clamped colours."""
+    shade_planar(
+        count, batch.points, batch.normals, eye, material, lights, ambient, blinn, batch.shaded,
+        batch.scratch,
+    )
+    for q in range(count):
+        i = batch.columns[q]
         for channel in range(3):
-            rgb[j, i, channel] = _clamp01(out[channel])
+            rgb[j, i, channel] = _clamp01(batch.shaded[channel, q])
 
 
 @register_warmup
