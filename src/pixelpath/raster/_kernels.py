@@ -94,6 +94,7 @@ class PhongBatch(NamedTuple):
     normals: np.ndarray  # (3, SHADE_BATCH) unit normals, turned towards the viewer
     shaded: np.ndarray  # (3, SHADE_BATCH) unclamped intensities
     scratch: np.ndarray  # (5, SHADE_BATCH) work space of shade_planar
+    denominators: np.ndarray  # (SHADE_BATCH,) interpolated 1/w: points are numerators first
     columns: np.ndarray  # (SHADE_BATCH,) intp: the pixel column of each gathered pixel
 
 
@@ -484,6 +485,7 @@ def render_bands(
             np.empty((3, SHADE_BATCH)),
             np.empty((3, SHADE_BATCH)),
             np.empty((5, SHADE_BATCH)),
+            np.empty(SHADE_BATCH),
             np.empty(SHADE_BATCH, dtype=np.intp),
         )
         for j in range(band * band_rows, min((band + 1) * band_rows, height)):
@@ -526,6 +528,8 @@ def _shade_row(
     """
     count = 0
     batch_object = -1
+    line_triangle = -1
+    line = (0.0,) * 14
     for i in range(triangle_id.shape[1]):
         t = triangle_id[j, i]
         if t < 0:
@@ -540,9 +544,9 @@ def _shade_row(
             for channel in range(3):
                 rgb[j, i, channel] = _clamp01(flat_colors[t, channel])
             continue
-        b0, b1, b2 = perspective_weights(setup[t], i + 0.5, j + 0.5)
-        a, b, c = triangles[t, 0], triangles[t, 1], triangles[t, 2]
         if mode == GOURAUD:
+            b0, b1, b2 = perspective_weights(setup[t], i + 0.5, j + 0.5)
+            a, b, c = triangles[t, 0], triangles[t, 1], triangles[t, 2]
             first = BACK_COLOR if triangle_info[t, 1] else COLOR
             for channel in range(3):
                 value = _mix(colors, a, b, c, b0, b1, b2, first + channel)
@@ -552,27 +556,83 @@ def _shade_row(
             _shade_batch(j, count, batch, materials[batch_object], lights, ambient, eye, blinn, rgb)
             count = 0
         batch_object = triangle_info[t, 0]
-        nx = _mix(normals, a, b, c, b0, b1, b2, 0)
-        ny = _mix(normals, a, b, c, b0, b1, b2, 1)
-        nz = _mix(normals, a, b, c, b0, b1, b2, 2)
-        length = math.sqrt(nx * nx + ny * ny + nz * nz)
-        scale = 1.0
-        if length > 0.0:
-            scale = (-1.0 if triangle_info[t, 1] else 1.0) / length
-        for axis in range(3):
-            batch.points[axis, count] = _mix(positions, a, b, c, b0, b1, b2, axis)
-        batch.normals[0, count] = nx * scale
-        batch.normals[1, count] = ny * scale
-        batch.normals[2, count] = nz * scale
+        if t != line_triangle:
+            line_triangle = t
+            sign = -1.0 if triangle_info[t, 1] else 1.0
+            line = _scanline_surface(setup[t], j + 0.5, triangles[t], positions, normals, sign)
+        # Numerators and denominator only; _shade_batch divides, normalizes, all at once.
+        x = i + 0.5
+        batch.denominators[count] = line[0] * x + line[1]
+        batch.points[0, count] = line[2] * x + line[3]
+        batch.points[1, count] = line[4] * x + line[5]
+        batch.points[2, count] = line[6] * x + line[7]
+        batch.normals[0, count] = line[8] * x + line[9]
+        batch.normals[1, count] = line[10] * x + line[11]
+        batch.normals[2, count] = line[12] * x + line[13]
         batch.columns[count] = i
         count += 1
     if count > 0:
         _shade_batch(j, count, batch, materials[batch_object], lights, ambient, eye, blinn, rgb)
 
 
-@njit
+@njit(inline="always")
+def _scanline_surface(record, y, corners, positions, normals, sign):
+    """Surface point and normal of a set-up triangle along scan line y, as functions of x.
+
+    The perspective weights are ``b_k = t_k / sum t`` with ``t_k = s_k / w_k`` affine in x on
+    the line, so an interpolated attribute is (u x + v) / (d x + e). Returns (d, e), then
+    (u, v) for the point's x, y, z and for the normal's (times ``sign``), 14 numbers. The
+    normal's denominator (the interpolated 1/w > 0) is left out: normalizing removes it.
+    """
+    r1 = record[S1_PLANE + 1] * y + record[S1_PLANE + 2]
+    r2 = record[S2_PLANE + 1] * y + record[S2_PLANE + 2]
+    w0, w1, w2 = record[VERTEX_INVW], record[VERTEX_INVW + 1], record[VERTEX_INVW + 2]
+    slope0 = -w0 * (record[S1_PLANE] + record[S2_PLANE])
+    slope1 = w1 * record[S1_PLANE]
+    slope2 = w2 * record[S2_PLANE]
+    base0 = w0 * (1.0 - r1 - r2)
+    base1 = w1 * r1
+    base2 = w2 * r2
+    a, b, c = corners[0], corners[1], corners[2]
+    return (
+        slope0 + slope1 + slope2,
+        base0 + base1 + base2,
+        slope0 * positions[a, 0] + slope1 * positions[b, 0] + slope2 * positions[c, 0],
+        base0 * positions[a, 0] + base1 * positions[b, 0] + base2 * positions[c, 0],
+        slope0 * positions[a, 1] + slope1 * positions[b, 1] + slope2 * positions[c, 1],
+        base0 * positions[a, 1] + base1 * positions[b, 1] + base2 * positions[c, 1],
+        slope0 * positions[a, 2] + slope1 * positions[b, 2] + slope2 * positions[c, 2],
+        base0 * positions[a, 2] + base1 * positions[b, 2] + base2 * positions[c, 2],
+        sign * (slope0 * normals[a, 0] + slope1 * normals[b, 0] + slope2 * normals[c, 0]),
+        sign * (base0 * normals[a, 0] + base1 * normals[b, 0] + base2 * normals[c, 0]),
+        sign * (slope0 * normals[a, 1] + slope1 * normals[b, 1] + slope2 * normals[c, 1]),
+        sign * (base0 * normals[a, 1] + base1 * normals[b, 1] + base2 * normals[c, 1]),
+        sign * (slope0 * normals[a, 2] + slope1 * normals[b, 2] + slope2 * normals[c, 2]),
+        sign * (base0 * normals[a, 2] + base1 * normals[b, 2] + base2 * normals[c, 2]),
+    )
+
+
+@njit(error_model="numpy")
 def _shade_batch(j, count, batch, material, lights, ambient, eye, blinn, rgb):
-    """Shade the gathered pixels of row j (one object's) and write their clamped colours."""
+    """Shade the gathered pixels of row j (one object's) and write their clamped colours.
+
+    First the perspective division of the points and the normalization of the normals, in a
+    loop LLVM vectorizes (``error_model="numpy"``: no zero-division check; the denominator is
+    the interpolated 1/w, positive on a drawn pixel, and a zero normal's length is guarded).
+    """
+    x, y, z = batch.points[0], batch.points[1], batch.points[2]
+    nx, ny, nz = batch.normals[0], batch.normals[1], batch.normals[2]
+    denominators = batch.denominators
+    for q in range(count):
+        inv = 1.0 / denominators[q]
+        x[q] *= inv
+        y[q] *= inv
+        z[q] *= inv
+        length = math.sqrt(nx[q] * nx[q] + ny[q] * ny[q] + nz[q] * nz[q])
+        scale = 1.0 / length if length > 0.0 else 1.0
+        nx[q] *= scale
+        ny[q] *= scale
+        nz[q] *= scale
     shade_planar(
         count, batch.points, batch.normals, eye, material, lights, ambient, blinn, batch.shaded,
         batch.scratch,
