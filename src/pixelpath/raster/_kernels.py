@@ -530,15 +530,11 @@ def _shade_row(
     batch_object = -1
     line_triangle = -1
     line = (0.0,) * 14
+    _fill_row(inv_depth[j], background, rgb[j], depth[j], object_id[j])
     for i in range(triangle_id.shape[1]):
         t = triangle_id[j, i]
         if t < 0:
-            for channel in range(3):
-                rgb[j, i, channel] = background[channel]
-            depth[j, i] = np.inf
-            object_id[j, i] = -1
             continue
-        depth[j, i] = 1.0 / inv_depth[j, i]
         object_id[j, i] = triangle_info[t, 0]
         if mode == FLAT:
             for channel in range(3):
@@ -610,6 +606,25 @@ def _scanline_surface(record, y, corners, positions, normals, sign):
         sign * (slope0 * normals[a, 2] + slope1 * normals[b, 2] + slope2 * normals[c, 2]),
         sign * (base0 * normals[a, 2] + base1 * normals[b, 2] + base2 * normals[c, 2]),
     )
+
+
+@njit(error_model="numpy")
+def _fill_row(inv_depth_row, background, rgb_row, depth_row, id_row):
+    """Write a row as if nothing were drawn, but with every drawn pixel's depth 1/(1/w).
+
+    A pixel is drawn exactly where its 1/w is positive (the buffer starts at 0). One loop
+    without branches over the whole row, so LLVM vectorizes it; the drawn pixels' colour and
+    object id are written afterwards.
+    """
+    red, green, blue = background[0], background[1], background[2]
+    rgb_flat = rgb_row.reshape(-1)  # r g b r g b ...: indexed 3 i + c, which vectorizes
+    for i in range(inv_depth_row.shape[0]):
+        inv_w = inv_depth_row[i]
+        depth_row[i] = 1.0 / inv_w if inv_w > 0.0 else np.inf
+        id_row[i] = -1
+        rgb_flat[3 * i] = red
+        rgb_flat[3 * i + 1] = green
+        rgb_flat[3 * i + 2] = blue
 
 
 @njit(error_model="numpy")
