@@ -56,9 +56,10 @@ COLOR = 0
 BACK_COLOR = 3
 
 BAND_ROWS = 32
-# Phong pixels gathered per call of the planar shading kernel: its work arrays (14 rows of this
-# many float64) stay in the L1 cache.
-SHADE_BATCH = 256
+# Phong pixels gathered per call of the planar shading kernel: a whole row of a 1024-wide frame.
+# Fewer, longer calls were measured faster than work arrays small enough for the L1 cache
+# (batches of 128 and 256 pixels).
+SHADE_BATCH = 1024
 
 # Frustum triangle classes.
 OUTSIDE = 0  # every vertex outside one frustum plane: dropped
