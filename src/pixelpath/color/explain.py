@@ -70,7 +70,7 @@ def _rgb_to_hsx(rgb: Sequence[float], model: str) -> tuple[list[str], list[float
         )
         return steps, [hue, sat, cmax]
     light = (cmax + cmin) / 2.0
-    spread = 1.0 - abs(2.0 * light - 1.0)
+    spread = min(cmax + cmin, 2.0 - cmax - cmin)  # = 1 − |2L − 1|, without cancellation
     sat = delta / spread if delta > 0 and spread > 0 else 0.0
     steps.append(f"L = (Cmax + Cmin)/2 = {fmt(light)}")
     steps.append(
@@ -89,7 +89,7 @@ def _hsx_to_rgb(values: Sequence[float], model: str) -> tuple[list[str], list[fl
         chroma = third * sat
         steps.append(f"C = V × S = {fmt(third)} × {fmt(sat)} = {fmt(chroma)}")
     else:
-        chroma = (1.0 - abs(2.0 * third - 1.0)) * sat
+        chroma = min(2.0 * third, 2.0 - 2.0 * third) * sat  # (1 − |2L − 1|)·S, no cancellation
         steps.append(f"C = (1 − |2L − 1|) × S = {fmt(chroma)}")
     x = chroma * (1.0 - abs((wrapped / 60.0) % 2.0 - 1.0))
     low = third - chroma if model == "hsv" else third - chroma / 2.0
