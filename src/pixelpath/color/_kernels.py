@@ -77,6 +77,15 @@ def not_finite(magnitude):
     return np.int64(not magnitude <= _LARGEST)
 
 
+@njit(inline="always")
+def load3(src, i, scale):
+    """Return pixel ``i``'s three components, scaled, and 1 if one of them is not finite."""
+    a = src[3 * i] * scale
+    b = src[3 * i + 1] * scale
+    c = src[3 * i + 2] * scale
+    return a, b, c, not_finite(abs(a) + abs(b) + abs(c))
+
+
 @njit(error_model="numpy")
 def affine_span(src, dst, scale, matrix, offset):
     m00, m01, m02 = matrix[0, 0], matrix[0, 1], matrix[0, 2]
@@ -85,10 +94,8 @@ def affine_span(src, dst, scale, matrix, offset):
     o0, o1, o2 = offset[0], offset[1], offset[2]
     bad = 0
     for i in range(src.shape[0] // 3):
-        a = src[3 * i] * scale
-        b = src[3 * i + 1] * scale
-        c = src[3 * i + 2] * scale
-        bad += not_finite(abs(a) + abs(b) + abs(c))
+        a, b, c, flag = load3(src, i, scale)
+        bad += flag
         dst[3 * i] = m00 * a + m01 * b + m02 * c + o0
         dst[3 * i + 1] = m10 * a + m11 * b + m12 * c + o1
         dst[3 * i + 2] = m20 * a + m21 * b + m22 * c + o2
@@ -100,10 +107,8 @@ def rgb_to_hsx_span(src, dst, scale, lightness):
     zero, one, two, four, six, _, _, sixty = numbers(scale)
     bad = 0
     for i in range(src.shape[0] // 3):
-        r = src[3 * i] * scale
-        g = src[3 * i + 1] * scale
-        b = src[3 * i + 2] * scale
-        bad += not_finite(abs(r) + abs(g) + abs(b))
+        r, g, b, flag = load3(src, i, scale)
+        bad += flag
         cmax = larger(larger(r, g), b)
         cmin = smaller(smaller(r, g), b)
         delta = cmax - cmin
@@ -143,10 +148,8 @@ def hsx_to_rgb_span(src, dst, scale, lightness):
     zero, one, two, four, six, sixth, per_degree, _ = numbers(scale)
     bad = 0
     for i in range(src.shape[0] // 3):
-        h = src[3 * i] * scale
-        s = src[3 * i + 1] * scale
-        v = src[3 * i + 2] * scale
-        bad += not_finite(abs(h) + abs(s) + abs(v))
+        h, s, v, flag = load3(src, i, scale)
+        bad += flag
         sextant = h * per_degree
         sextant = sextant - six * np.floor(sextant * sixth)  # H mod 360: 360 and −60 wrap
         sextant = zero if sextant >= six else sextant
@@ -167,10 +170,11 @@ def rgb_to_cmyk_span(src, dst, scale):
     zero, one, _, _, _, _, _, _ = numbers(scale)
     bad = 0
     for i in range(src.shape[0] // 3):
-        cyan = one - src[3 * i] * scale
-        magenta = one - src[3 * i + 1] * scale
-        yellow = one - src[3 * i + 2] * scale
-        bad += not_finite(abs(cyan) + abs(magenta) + abs(yellow))
+        r, g, b, flag = load3(src, i, scale)
+        bad += flag
+        cyan = one - r
+        magenta = one - g
+        yellow = one - b
         black = smaller(smaller(cyan, magenta), yellow)
         ink = one - black
         inv = one / (ink if ink > zero else one)  # pure black: K = 1 and C' = M' = Y' = 0
