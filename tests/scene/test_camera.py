@@ -120,7 +120,7 @@ def test_vectors_are_read_only_float64():
         ({"eye": (0, 0, 0)}, ValueError, "eye and target must differ"),
         ({"up": (0, 0, 2)}, ValueError, "parallel"),
         ({"eye": (0, float("nan"), 5)}, ValueError, "eye must be finite"),
-        ({"eye": (0, 5)}, ValueError, r"eye must have shape \(3\), got shape \(2,\)"),
+        ({"eye": (0, 5)}, ValueError, r"eye must have shape \(3,\), got shape \(2,\)"),
         ({"target": "origin"}, TypeError, "target"),
     ],
 )

@@ -19,53 +19,25 @@ from typing import Any
 
 import numpy as np
 
+from pixelpath import _validate as v
+
 __all__ = ["pack_ambient", "pack_lights", "pack_material"]
 
 LIGHT_FIELDS = 7
 
 
-def _finite_vector(value: Any, name: str, size: int) -> np.ndarray:
-    """Return ``value`` as a finite float64 vector of ``size`` entries, or raise."""
-    try:
-        array = np.asarray(value, dtype=np.float64)
-    except (TypeError, ValueError) as exc:
-        raise TypeError(f"{name} must be {size} numbers, got {value!r}") from exc
-    if array.shape != (size,):
-        raise ValueError(f"{name} must have shape ({size},), got shape {array.shape}")
-    if not np.all(np.isfinite(array)):
-        raise ValueError(f"{name} must be finite, got {array.tolist()}")
-    return array
-
-
-def _channels(value: Any, name: str) -> np.ndarray:
-    """Return a scalar or (r, g, b) ``value`` as a finite float64 (3,) vector, or raise."""
-    try:
-        array = np.asarray(value, dtype=np.float64)
-    except (TypeError, ValueError) as exc:
-        raise TypeError(f"{name} must be a number or (r, g, b), got {value!r}") from exc
-    if array.shape not in ((), (1,), (3,)):
-        raise ValueError(f"{name} must be a number or (r, g, b), got shape {array.shape}")
-    return _finite_vector(np.broadcast_to(array, 3), name, 3)
-
-
 def _pack_one(light: Any, index: int) -> np.ndarray:
     """Return the packed row of one light object."""
     name = f"lights[{index}]"
-    intensity = _channels(getattr(light, "intensity", 1.0), f"{name}.intensity")
-    color = _finite_vector(getattr(light, "color", (1.0, 1.0, 1.0)), f"{name}.color", 3)
-    if np.any(intensity < 0) or np.any(color < 0):
-        raise ValueError(f"{name}: intensity and color must be >= 0")
+    intensity = v.rgb_or_scalar(getattr(light, "intensity", 1.0), f"{name}.intensity")
+    color = v.colour(getattr(light, "color", (1.0, 1.0, 1.0)), f"{name}.color")
     row = np.empty(LIGHT_FIELDS)
     if hasattr(light, "position"):
         row[0] = 0.0
-        row[1:4] = _finite_vector(light.position, f"{name}.position", 3)
+        row[1:4] = v.vector3(light.position, f"{name}.position")
     elif hasattr(light, "direction"):
-        direction = _finite_vector(light.direction, f"{name}.direction", 3)
-        length = np.linalg.norm(direction)
-        if length == 0.0:
-            raise ValueError(f"{name}.direction must not be the zero vector")
         row[0] = 1.0
-        row[1:4] = direction / length
+        row[1:4] = v.unit_vector3(light.direction, f"{name}.direction")
     else:
         raise TypeError(
             f"{name} must be a light with a 'position' (point light) or a 'direction' "
@@ -162,7 +134,7 @@ def pack_material(material: Any) -> np.ndarray:
     [1.0, 0.0, 0.0, 0.1, 0.7, 0.3, 32.0, 0.0]
     """
     values = material.packed() if hasattr(material, "packed") else material
-    packed = _finite_vector(values, "material", 8)
+    packed = v.float_array(values, "material", (8,))
     if np.any(packed[:7] < 0):
         raise ValueError(
             f"material colour, ka, kd, ks and shininess must be >= 0, got {packed.tolist()}"
@@ -188,7 +160,4 @@ def pack_ambient(ambient: Any) -> np.ndarray:
     >>> pack_ambient(0.2).tolist()
     [0.2, 0.2, 0.2]
     """
-    packed = _channels(ambient, "ambient")
-    if np.any(packed < 0):
-        raise ValueError(f"ambient must be >= 0, got {packed.tolist()}")
-    return packed.copy()
+    return v.rgb_or_scalar(ambient, "ambient").copy()

@@ -10,7 +10,7 @@ from __future__ import annotations
 import dataclasses
 from typing import Any
 
-from pixelpath.scene import _validate as v
+from pixelpath import _validate as v
 from pixelpath.scene._record import Record
 
 

@@ -26,7 +26,7 @@ from typing import Any
 
 import numpy as np
 
-from pixelpath.scene import _validate as v
+from pixelpath import _validate as v
 from pixelpath.scene.material import Material
 
 

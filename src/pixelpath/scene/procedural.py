@@ -11,7 +11,7 @@ from typing import Any
 
 import numpy as np
 
-from pixelpath.scene import _validate as v
+from pixelpath import _validate as v
 from pixelpath.scene.material import Material
 from pixelpath.scene.mesh import Mesh
 

@@ -12,7 +12,7 @@ from typing import Any
 
 import numpy as np
 
-from pixelpath.scene import _validate as v
+from pixelpath import _validate as v
 from pixelpath.scene._record import Record
 from pixelpath.scene.camera import Camera
 from pixelpath.scene.lights import DirectionalLight, PointLight

@@ -1,4 +1,7 @@
-"""Input checks shared by the scene records; each message names the argument and what came in."""
+"""Input checks shared across the package: scene records and light packing.
+
+Each message names the argument and shows what came in.
+"""
 
 from __future__ import annotations
 
@@ -54,7 +57,8 @@ def float_array(value: Any, name: str, shape: tuple[int | None, ...]) -> np.ndar
         array = np.array(value, dtype=np.float64)
     except (TypeError, ValueError):
         raise TypeError(f"{name} must be an array of numbers, got {_describe(value)}") from None
-    expected = "(" + ", ".join("n" if n is None else str(n) for n in shape) + ")"
+    sizes = ["n" if n is None else str(n) for n in shape]
+    expected = "(" + ", ".join(sizes) + ("," if len(sizes) == 1 else "") + ")"
     if array.ndim != len(shape) or any(
         n is not None and n != m for n, m in zip(shape, array.shape, strict=True)
     ):
@@ -93,7 +97,7 @@ def colour(value: Any, name: str) -> np.ndarray:
     """Return an (r, g, b) colour; components must be finite and non-negative."""
     rgb = float_array(value, name, (3,))
     if np.any(rgb < 0.0):
-        raise ValueError(f"{name} components must be non-negative, got {rgb.tolist()}")
+        raise ValueError(f"{name} components must be non-negative (>= 0), got {rgb.tolist()}")
     return frozen(rgb)
 
 
