@@ -8,8 +8,7 @@ from pathlib import Path
 from typing import Any
 
 from pixelpath.cli._common import CommandError, add_command, console
-
-SHADINGS = ("flat", "gouraud", "phong")
+from pixelpath.raster.shading import SHADINGS
 
 
 def register(subparsers: Any) -> None:

@@ -8,9 +8,9 @@ from pathlib import Path
 from typing import Any
 
 from pixelpath.cli._common import CommandError, add_command, console, progress
+from pixelpath.raster.shading import SHADINGS
 
 METHODS = ("zbuffer", "scanline", "painter", "bsp", "warnock", "octree", "raytrace")
-SHADINGS = ("flat", "gouraud", "phong")
 
 
 def register(subparsers: Any) -> None:
