@@ -64,8 +64,6 @@ def parse_size(text: str) -> tuple[int, int]:
     if len(parts) != 2 or not all(part.strip().isdigit() for part in parts):
         raise CommandError(f"--size must look like 1024x768 (WIDTHxHEIGHT), got {text!r}")
     width, height = (int(part) for part in parts)
-    if not (1 <= width <= 16384 and 1 <= height <= 16384):
-        raise CommandError(f"--size sides must be in 1..16384 pixels, got {width}x{height}")
     return width, height
 
 
@@ -92,7 +90,11 @@ def load_scene_sized(name: str, size: str | None) -> Any:
     scene = load_scene(scene_path(name))
     if size is not None:
         width, height = parse_size(size)
-        scene = dataclasses.replace(scene, camera=scene.camera.with_size(width, height))
+        try:
+            camera = scene.camera.with_size(width, height)
+        except ValueError as exc:
+            raise CommandError(f"--size {size}: {exc}") from None
+        scene = dataclasses.replace(scene, camera=camera)
     return scene
 
 
