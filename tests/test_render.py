@@ -119,14 +119,16 @@ def test_progress_is_reported():
 def test_large_frames_render_in_slices_with_the_same_result(monkeypatch):
     import importlib
 
+    pipeline = importlib.import_module("pixelpath.hsr.pipeline")
     zbuffer = importlib.import_module("pixelpath.hsr.zbuffer")
     scene = small_scene(objects=[pp.Sphere((0, 0, 0), 1.0), pp.Box((0, 0, 0), (1, 1, 1))],
                         size=(40, 70))
     whole = pp.render(scene)
-    monkeypatch.setattr(zbuffer, "SLICED_PIXELS", 0)
+    monkeypatch.setattr(pipeline, "SLICED_PIXELS", 0)
     steps = []
     sliced = pp.render(scene, progress=steps.append)
-    assert len(steps) == 3 + zbuffer.RENDER_SLICES and sum(steps) == zbuffer.STEPS
+    assert len(steps) == pipeline.FRONT_STEPS + pipeline.SHADE_SLICES
+    assert sum(steps) == zbuffer.STEPS
     assert np.array_equal(np.asarray(sliced), np.asarray(whole))
     assert np.array_equal(sliced.object_id, whole.object_id)
 

@@ -1,26 +1,112 @@
 """``pixelpath.render()``: draw a scene with one of the notes' hidden-surface methods.
 
-Raster methods tessellate spheres and planes, clip to the view frustum, scan-convert and shade
-(flat, Gouraud or Phong); see :mod:`pixelpath.hsr` and :mod:`pixelpath.raster`. The output is
+Every raster method shares one pipeline (:mod:`pixelpath.hsr.pipeline`): the same front end
+(tessellation, back-face culling, frustum clipping, viewport) and the same shading pass, so
+they differ only in how they decide which surface each pixel shows. The ray tracer
+(``method="raytrace"``) intersects the analytic objects exactly instead. The output is
 deterministic: the same scene gives the same bytes whatever the number of threads.
+
+A method is a module with ``STEPS`` (how many progress steps it reports) and
+``render_frame(scene, view, options) -> Frame``.
 """
 
 from __future__ import annotations
 
+import dataclasses
+import importlib
 from collections.abc import Callable
+from typing import Any
 
 import numpy as np
 
 from pixelpath.image import Image
-from pixelpath.scene import Scene
+from pixelpath.scene import Camera, Scene
 
-__all__ = ["MAX_SAMPLES", "METHOD_NAMES", "render"]
+__all__ = ["MAX_SAMPLES", "METHOD_NAMES", "STYLES", "Frame", "RenderOptions", "View", "render"]
 
 METHOD_NAMES = ("zbuffer", "scanline", "painter", "bsp", "warnock", "octree", "raytrace")
+STYLES = ("filled", "wireframe", "hidden-line")
+
+# The module implementing each method.
+_METHOD_MODULES = {
+    "zbuffer": "pixelpath.hsr.zbuffer",
+    "scanline": "pixelpath.hsr.scanline",
+    "painter": "pixelpath.hsr.painter",
+    "bsp": "pixelpath.hsr.bsp",
+    "warnock": "pixelpath.hsr.warnock",
+    "octree": "pixelpath.hsr.octree",
+    "raytrace": "pixelpath.raytrace.tracer",
+}
 
 # Samples (width × height × ssaa²) a frame may hold: 32 bytes of buffers per sample (colour,
 # depth, object id, and the rasterizer's 1/w and triangle), about 2 GB at the limit.
 MAX_SAMPLES = 1 << 26
+
+
+@dataclasses.dataclass(frozen=True)
+class View:
+    """The camera and the rectangle of its image that a method renders.
+
+    Pixel (i, j) of the region is pixel (x0 + i, y0 + j) of the camera's image, computed with
+    exactly the same numbers, so tiles rendered separately stitch into the whole image.
+
+    Examples
+    --------
+    >>> from pixelpath.scene import Camera
+    >>> from pixelpath.renderer import View
+    >>> view = View.whole(Camera(eye=(0, 0, 5), target=(0, 0, 0), width=64, height=48))
+    >>> view.x0, view.y0, view.width, view.height
+    (0, 0, 64, 48)
+    """
+
+    camera: Camera
+    x0: int
+    y0: int
+    width: int
+    height: int
+
+    @classmethod
+    def whole(cls, camera: Camera) -> View:
+        """Return the view of the camera's whole image."""
+        return cls(camera, 0, 0, camera.width, camera.height)
+
+
+@dataclasses.dataclass(frozen=True)
+class RenderOptions:
+    """The choices :func:`render` passes to a method (already validated)."""
+
+    shading: str = "phong"
+    backface_cull: bool = True
+    blinn: bool = False
+    explain: bool = False
+    max_depth: int = 5
+    samples: int = 1
+    progress: Callable[[int], None] = dataclasses.field(default=lambda steps: None)
+
+
+@dataclasses.dataclass(frozen=True)
+class Frame:
+    """The buffers of one rendered frame (or region of one).
+
+    Attributes
+    ----------
+    rgb : (h, w, 3) float32
+        Clamped intensities; the background where nothing was drawn.
+    depth : (h, w) float32
+        Distance along the viewing axis; ``inf`` where nothing was drawn.
+    object_id : (h, w) int32
+        Index of the scene object seen at each pixel; -1 for the background.
+    stats : dict of str to int
+        What the pipeline's stages took in and let through.
+    report : Report or None
+        What the method did, when asked to explain itself.
+    """
+
+    rgb: np.ndarray
+    depth: np.ndarray
+    object_id: np.ndarray
+    stats: dict[str, int] = dataclasses.field(default_factory=dict)
+    report: Any = None
 
 
 def render(
@@ -31,18 +117,22 @@ def render(
     backface_cull: bool = True,
     ssaa: int = 1,
     blinn: bool = False,
+    style: str = "filled",
+    explain: bool = False,
+    max_depth: int = 5,
+    samples: int = 1,
+    region: tuple[int, int, int, int] | None = None,
     progress: Callable[[int], None] | None = None,
-) -> Image:
+) -> Image | tuple[Image, Any]:
     """Render ``scene`` to an :class:`~pixelpath.Image` of the camera's size.
 
     Parameters
     ----------
     scene : Scene
         Camera, objects, lights, ambient light and background.
-    method : str
-        Hidden-surface method: ``"zbuffer"``. (``"scanline"``, ``"painter"``, ``"bsp"``,
-        ``"warnock"``, ``"octree"`` and ``"raytrace"`` are named by the SPEC and not built yet:
-        they raise ``NotImplementedError``.)
+    method : {"zbuffer", "scanline", "painter", "bsp", "warnock", "octree", "raytrace"}
+        How visibility is decided: one of the notes' hidden-surface methods (they agree up to
+        pixels on silhouette edges), or ray tracing.
     shading : {"flat", "gouraud", "phong"}
         Flat (one intensity per face), Gouraud (intensities at the vertices, interpolated) or
         Phong (normals interpolated, the model evaluated per pixel).
@@ -54,21 +144,33 @@ def render(
         Depth and object id come from the nearest sample of each pixel.
     blinn : bool
         Blinn-Phong highlights instead of Phong's.
+    style : {"filled", "wireframe", "hidden-line"}
+        Filled surfaces; every polygon edge as a one-pixel line (the notes' picture "without
+        hidden-surface elimination"); or only the visible parts of the edges, as decided by
+        ``method`` (the picture "with HSE").
+    explain : bool
+        Also return a :class:`~pixelpath.report.Report` of what the method did.
+    max_depth : int
+        Ray tracing only: reflection and refraction bounces followed (0 = local light only).
+    samples : int
+        Ray tracing only: stratified samples per pixel.
+    region : (x0, y0, x1, y1), optional
+        Render only the pixels ``x0 <= x < x1``, ``y0 <= y < y1`` of the camera's image; they
+        equal the same pixels of the whole image exactly (tiles stitch without seams).
     progress : callable, optional
         Called with a number of steps done (out of :func:`render_steps`) as work advances.
 
     Returns
     -------
-    Image
+    Image or (Image, Report)
         RGB in [0, 1] (float32), ``.depth``, ``.object_id``, and ``.stats``: how many
-        triangles were culled, clipped and scan-converted.
+        triangles were culled, clipped and drawn; with ``explain=True`` also the report.
 
     Raises
     ------
     ValueError
-        Unknown method or shading, ``ssaa`` < 1, or a frame too large for memory.
-    NotImplementedError
-        A method of the SPEC that this version does not implement yet.
+        Unknown method, shading or style, ``ssaa`` < 1, a bad region, or a frame too large
+        for memory.
 
     Examples
     --------
@@ -83,32 +185,43 @@ def render(
     >>> np.asarray(img).shape, int(img.object_id[16, 24]), float(img.depth[0, 0])
     ((32, 48, 3), 0, inf)
     """
-    from pixelpath.hsr import METHODS
-
     if not isinstance(scene, Scene):
         raise TypeError(f"scene must be a pixelpath Scene, got {type(scene).__name__}")
-    renderer = _method(method, METHODS)
-    factor = _ssaa(ssaa)
-    camera = scene.camera
-    samples = camera.width * camera.height * factor * factor
-    if samples > MAX_SAMPLES:
-        raise ValueError(
-            f"{camera.width}x{camera.height} with ssaa={factor} is {samples:,} samples, more "
-            f"than the {MAX_SAMPLES:,} one frame may hold; lower the size or ssaa"
-        )
-    if factor > 1:
-        camera = _scaled_camera(camera, factor)
-    frame = renderer(
-        scene,
-        camera,
+    module = _method_module(method)
+    _choice(shading, "shading", ("flat", "gouraud", "phong"))
+    _choice(style, "style", STYLES)
+    factor = _int_in(ssaa, "ssaa", 1, 16, "samples per pixel side; 1 means no supersampling")
+    options = RenderOptions(
         shading=shading,
         backface_cull=bool(backface_cull),
         blinn=bool(blinn),
-        progress=progress,
+        explain=bool(explain),
+        max_depth=_int_in(max_depth, "max_depth", 0, 64, "reflection/refraction bounces"),
+        samples=_int_in(samples, "samples", 1, 1024, "samples per pixel"),
+        progress=progress or (lambda steps: None),
     )
-    if factor == 1:
-        return Image._from_buffers(frame.rgb, frame.depth, frame.object_id, frame.stats)
-    return _downsample(frame, factor)
+    if method != "raytrace" and (options.max_depth, options.samples) != (5, 1):
+        raise ValueError(
+            f"max_depth and samples apply to method='raytrace' only (got method={method!r}); "
+            f"use ssaa= to supersample a raster method"
+        )
+    view = _view(scene.camera, region, factor)
+    frame = _draw(module, scene, view, style, options)
+    image = Image._from_buffers(frame.rgb, frame.depth, frame.object_id, frame.stats)
+    if factor > 1:
+        image = _downsample(frame, factor)
+    return (image, frame.report) if explain else image
+
+
+def _draw(module, scene: Scene, view: View, style: str, options: RenderOptions) -> Frame:
+    """Run the method, then draw edges for the line styles."""
+    if style == "filled":
+        return module.render_frame(scene, view, options)
+    from pixelpath.hsr import hidden_line
+
+    if style == "wireframe":
+        return hidden_line.wireframe(scene, view, options)
+    return hidden_line.hidden_lines(scene, view, options, module.render_frame(scene, view, options))
 
 
 def render_steps(method: str = "zbuffer") -> int:
@@ -120,41 +233,75 @@ def render_steps(method: str = "zbuffer") -> int:
     >>> render_steps("zbuffer")
     11
     """
-    from pixelpath.hsr import METHODS
-    from pixelpath.hsr.zbuffer import STEPS
-
-    _method(method, METHODS)
-    return STEPS
+    return _method_module(method).STEPS
 
 
-def _method(method: str, registry: dict) -> Callable:
+def _method_module(method: str):
     if not isinstance(method, str) or method not in METHOD_NAMES:
         raise ValueError(f"method must be one of {', '.join(METHOD_NAMES)}; got {method!r}")
-    renderer = registry.get(method)
-    if renderer is None:
+    name = _METHOD_MODULES[method]
+    try:
+        return importlib.import_module(name)
+    except ModuleNotFoundError as exc:
+        if exc.name is None or not name.startswith(exc.name):
+            raise
         raise NotImplementedError(
             f"method {method!r} is part of the specification but not implemented in this "
             f"version; use method='zbuffer'"
+        ) from None
+
+
+def _choice(value: Any, name: str, choices: tuple[str, ...]) -> None:
+    if not isinstance(value, str) or value not in choices:
+        raise ValueError(f"{name} must be one of {', '.join(choices)}; got {value!r}")
+
+
+def _int_in(value: Any, name: str, low: int, high: int, meaning: str) -> int:
+    if not isinstance(value, int | np.integer) or isinstance(value, bool):
+        raise TypeError(f"{name} must be an int ({meaning}), got {type(value).__name__}")
+    if not low <= value <= high:
+        raise ValueError(f"{name} must be in {low}..{high} ({meaning}), got {value}")
+    return int(value)
+
+
+def _view(camera: Camera, region: Any, factor: int) -> View:
+    """Return the (supersampled) camera and region to render, after checking their size."""
+    x0, y0, x1, y1 = _region(region, camera)
+    samples = (x1 - x0) * (y1 - y0) * factor * factor
+    if samples > MAX_SAMPLES:
+        raise ValueError(
+            f"{x1 - x0}x{y1 - y0} pixels with ssaa={factor} is {samples:,} samples, more "
+            f"than the {MAX_SAMPLES:,} one frame may hold; lower the size or ssaa"
         )
-    return renderer
+    if factor > 1:
+        try:
+            camera = camera.with_size(camera.width * factor, camera.height * factor)
+        except ValueError as exc:
+            raise ValueError(f"ssaa={factor} makes the sample grid too large: {exc}") from None
+    return View(camera, x0 * factor, y0 * factor, (x1 - x0) * factor, (y1 - y0) * factor)
 
 
-def _ssaa(ssaa: int) -> int:
-    if not isinstance(ssaa, int | np.integer) or isinstance(ssaa, bool):
-        raise TypeError(f"ssaa must be an int (samples per pixel side), got {type(ssaa).__name__}")
-    if not 1 <= ssaa <= 16:
-        raise ValueError(f"ssaa must be in 1..16 (1 means no supersampling), got {ssaa}")
-    return int(ssaa)
-
-
-def _scaled_camera(camera, factor: int):
+def _region(region: Any, camera: Camera) -> tuple[int, int, int, int]:
+    """Return a checked (x0, y0, x1, y1) inside the image; the whole image by default."""
+    if region is None:
+        return 0, 0, camera.width, camera.height
     try:
-        return camera.with_size(camera.width * factor, camera.height * factor)
-    except ValueError as exc:
-        raise ValueError(f"ssaa={factor} makes the sample grid too large: {exc}") from None
+        values = [int(v) for v in region]
+        exact = all(isinstance(v, int | np.integer) and not isinstance(v, bool) for v in region)
+    except TypeError:
+        raise TypeError(f"region must be four ints (x0, y0, x1, y1), got {region!r}") from None
+    if len(values) != 4 or not exact:
+        raise TypeError(f"region must be four ints (x0, y0, x1, y1), got {region!r}")
+    x0, y0, x1, y1 = values
+    if not (0 <= x0 < x1 <= camera.width and 0 <= y0 < y1 <= camera.height):
+        raise ValueError(
+            f"region must satisfy 0 <= x0 < x1 <= {camera.width} and 0 <= y0 < y1 <= "
+            f"{camera.height} (the camera's image), got {tuple(values)}"
+        )
+    return x0, y0, x1, y1
 
 
-def _downsample(frame, factor: int) -> Image:
+def _downsample(frame: Frame, factor: int) -> Image:
     """Average each factor × factor block of samples; keep the nearest sample's depth and id."""
     height, width = frame.rgb.shape[0] // factor, frame.rgb.shape[1] // factor
     blocks = frame.rgb.reshape(height, factor, width, factor, 3)

@@ -117,8 +117,11 @@ def test_bad_input():
 
 
 def test_growing_a_buffer_keeps_its_rows():
-    from pixelpath.raster._kernels import _grown
+    from pixelpath.raster._kernels import _grown, _grown_rows
 
     rows = np.arange(6.0).reshape(3, 2)
-    bigger = _grown(rows, 5)
+    bigger = _grown_rows(rows, 5)
     assert bigger.shape == (6, 2) and np.array_equal(bigger[:3], rows)
+    items = np.arange(3)
+    longer = _grown(items, 7)
+    assert longer.shape == (7,) and np.array_equal(longer[:3], items)

@@ -99,6 +99,33 @@ class PhongBatch(NamedTuple):
     columns: np.ndarray  # (SHADE_BATCH,) intp: the pixel column of each gathered pixel
 
 
+class Surfaces(NamedTuple):
+    """What the shading pass reads about the drawn triangles, the materials and the lights."""
+
+    setup: np.ndarray  # (T, SETUP_FIELDS) set-up records
+    triangles: np.ndarray  # (T, 3) vertex indices
+    positions: np.ndarray  # (V, 3) world positions
+    normals: np.ndarray  # (V, 3) unit normals
+    colors: np.ndarray  # (V, 6) Gouraud intensities, front then back; (0, 6) otherwise
+    info: np.ndarray  # (T, 2) object index, flip flag (seen from behind)
+    flat_colors: np.ndarray  # (T, 3) flat-shading intensity (zeros in the other modes)
+    materials: np.ndarray  # (O, 8) packed materials
+    lights: np.ndarray  # (L, 7) packed lights
+    ambient: np.ndarray  # (3,) ambient intensity
+    eye: np.ndarray  # (3,) eye position
+    background: np.ndarray  # (3,) colour where nothing is drawn
+    mode: int  # FLAT, GOURAUD or PHONG
+    blinn: bool  # Blinn-Phong highlights
+
+
+class Buffers(NamedTuple):
+    """The output buffers of a frame (or of a region of one)."""
+
+    rgb: np.ndarray  # (h, w, 3) float32 clamped intensities
+    depth: np.ndarray  # (h, w) float32 view-axis depth, inf where nothing is drawn
+    object_id: np.ndarray  # (h, w) int32 object index, -1 where nothing is drawn
+
+
 @njit(inline="always")
 def faces_away(normal, point, eye):
     """Return the object-space back-face test N · (P − eye) >= 0 (V from the eye inwards)."""
@@ -176,7 +203,7 @@ def clip_triangles(attributes, triangles, crossing):
     n_triangles = 0
     for t in crossing:
         for corner in range(3):
-            polygon[corner, :] = attributes[triangles[t, corner]]
+            _copy_row(attributes, triangles[t, corner], polygon, corner)
         n = 3
         src, dst = polygon, scratch
         for p in range(6):
@@ -185,11 +212,12 @@ def clip_triangles(attributes, triangles, crossing):
         if n < 3:
             continue
         if n_vertices + n > vertices.shape[0]:
-            vertices = _grown(vertices, n_vertices + n)
+            vertices = _grown_rows(vertices, n_vertices + n)
         if n_triangles + n - 2 > source.shape[0]:
-            new_triangles = _grown(new_triangles, n_triangles + n - 2)
+            new_triangles = _grown_rows(new_triangles, n_triangles + n - 2)
             source = _grown(source, n_triangles + n - 2)
-        vertices[n_vertices : n_vertices + n] = src[:n]
+        for corner in range(n):
+            _copy_row(src, corner, vertices, n_vertices + corner)
         for fan in range(1, n - 1):
             new_triangles[n_triangles, 0] = offset + n_vertices
             new_triangles[n_triangles, 1] = offset + n_vertices + fan
@@ -200,11 +228,29 @@ def clip_triangles(attributes, triangles, crossing):
     return vertices[:n_vertices], new_triangles[:n_triangles], source[:n_triangles]
 
 
+# Element-by-element copies: slice assignment would make Numba compile its shape-mismatch error
+# messages (string formatting), seconds of first-run compile time for code that never runs.
+@njit(inline="always")
+def _copy_row(source, source_row, target, target_row):
+    for column in range(source.shape[1]):
+        target[target_row, column] = source[source_row, column]
+
+
+@njit
+def _grown_rows(array, needed):
+    """Return a copy of the 2-D ``array`` with room for at least ``needed`` rows (doubling)."""
+    bigger = np.empty((max(needed, 2 * array.shape[0]), array.shape[1]), dtype=array.dtype)
+    for row in range(array.shape[0]):
+        _copy_row(array, row, bigger, row)
+    return bigger
+
+
 @njit
 def _grown(array, needed):
-    """Return a copy of ``array`` with at least ``needed`` rows (twice as many as before)."""
-    bigger = np.empty((max(needed, 2 * array.shape[0]), *array.shape[1:]), dtype=array.dtype)
-    bigger[: array.shape[0]] = array
+    """Return a copy of the 1-D ``array`` with room for at least ``needed`` items (doubling)."""
+    bigger = np.empty(max(needed, 2 * array.shape[0]), dtype=array.dtype)
+    for k in range(array.shape[0]):
+        bigger[k] = array[k]
     return bigger
 
 
@@ -240,8 +286,10 @@ def _above(xa, ya, xb, yb):
 
 
 @njit
-def setup_triangles(screen, triangles, height, setup, rows):
+def setup_triangles(screen, triangles, row_first, row_stop, setup, rows):
     """Fill the set-up record (T, SETUP_FIELDS) and the covered rows [first, stop) (T, 2).
+
+    Rows are image rows, clipped to the rendered region's rows [row_first, row_stop).
 
     Serial on purpose: it costs well under a millisecond for 70k triangles, less than waking
     the worker threads for a parallel loop (only ``render_bands`` is worth that).
@@ -274,8 +322,8 @@ def setup_triangles(screen, triangles, height, setup, rows):
         long_edge = _slope(xa, ya, xc, yc)
         _store3(record, SLOPES, (long_edge, _slope(xa, ya, xb, yb), _slope(xb, yb, xc, yc)))
         # Rows whose centre j + 0.5 lies in [y_top, y_bottom).
-        first = max(math.ceil(ya - 0.5), 0.0)
-        stop = min(math.ceil(yc - 0.5), float(height))
+        first = max(math.ceil(ya - 0.5), float(row_first))
+        stop = min(math.ceil(yc - 0.5), float(row_stop))
         if first < stop:
             rows[t, 0] = int(first)
             rows[t, 1] = int(stop)
@@ -290,11 +338,12 @@ def _slope(x_top, y_top, x_bottom, y_bottom):
 
 
 @njit(inline="always")
-def scanline_span(record, y, width):
+def scanline_span(record, y, col_first, col_stop):
     """Pixel columns [first, stop) drawn by a set-up triangle on the scan line at height y.
 
     The active edge list on scan line y is the long edge (v0, v2) and whichever of (v0, v1),
-    (v1, v2) spans y; a horizontal edge is never active.
+    (v1, v2) spans y; a horizontal edge is never active. Columns are clipped to the rendered
+    region's [col_first, col_stop).
     """
     x0, y0 = record[SORTED_XY], record[SORTED_XY + 1]
     x_long = x0 + (y - y0) * record[SLOPES]
@@ -305,72 +354,140 @@ def scanline_span(record, y, width):
         x_short = x1 + (y - y1) * record[SLOPES + 2]
     x_left = min(x_long, x_short)
     x_right = max(x_long, x_short)
-    first = max(math.ceil(x_left - 0.5), 0.0)
-    stop = min(math.ceil(x_right - 0.5), float(width))
+    first = max(math.ceil(x_left - 0.5), float(col_first))
+    stop = min(math.ceil(x_right - 0.5), float(col_stop))
     return int(first), int(stop)
 
 
 @njit
-def bin_triangles(rows, n_bands, band_rows):
-    """Return the triangles of each band of rows as CSR: offsets (n_bands + 1,), items."""
+def bin_triangles(rows, n_bands, band_rows, row_first):
+    """Return the triangles of each band of rows as CSR: offsets (n_bands + 1,), items.
+
+    Band b holds the image rows ``row_first + b * band_rows`` onwards; items keep the order of
+    ``rows`` within each band.
+    """
     counts = np.zeros(n_bands + 1, dtype=np.intp)
     for t in range(rows.shape[0]):
         if rows[t, 0] < rows[t, 1]:
-            for band in range(rows[t, 0] // band_rows, (rows[t, 1] - 1) // band_rows + 1):
+            first = (rows[t, 0] - row_first) // band_rows
+            last = (rows[t, 1] - 1 - row_first) // band_rows
+            for band in range(first, last + 1):
                 counts[band + 1] += 1
-    offsets = np.cumsum(counts)
-    items = np.empty(offsets[-1], dtype=np.intp)
-    fill = offsets[:-1].copy()
+    for band in range(n_bands):
+        counts[band + 1] += counts[band]
+    items = np.empty(counts[n_bands], dtype=np.intp)
+    fill = np.empty(n_bands, dtype=np.intp)
+    for band in range(n_bands):
+        fill[band] = counts[band]
     for t in range(rows.shape[0]):
         if rows[t, 0] < rows[t, 1]:
-            for band in range(rows[t, 0] // band_rows, (rows[t, 1] - 1) // band_rows + 1):
+            first = (rows[t, 0] - row_first) // band_rows
+            last = (rows[t, 1] - 1 - row_first) // band_rows
+            for band in range(first, last + 1):
                 items[fill[band]] = t
                 fill[band] += 1
-    return offsets, items
+    return counts, items
+
+
+@njit(inline="always")
+def _band_rows(band, band_rows, y0, height):
+    """Image rows [first, stop) of band ``band`` of a region starting at row y0, height rows."""
+    first = y0 + band * band_rows
+    return first, min(first + band_rows, y0 + height)
 
 
 @njit
-def _rasterize_band(setup, rows, offsets, items, band, band_rows, inv_depth, triangle_id):
-    """Clear one band of rows, then depth-test its triangles' pixels (nearest 1/w wins)."""
+def _clear_band(first, stop, y0, inv_depth, triangle_id):
+    """Mark rows [first, stop) of the region as empty: 1/w = 0 (infinitely far), no triangle."""
+    for j in range(first - y0, stop - y0):
+        for i in range(inv_depth.shape[1]):
+            inv_depth[j, i] = 0.0
+            triangle_id[j, i] = -1
+
+
+@njit
+def _rasterize_band(setup, rows, offsets, items, band, band_rows, x0, y0, inv_depth, triangle_id):
+    """Clear one band of rows, then depth-test its triangles' pixels (nearest 1/w wins).
+
+    The buffers (h, w) cover image columns [x0, x0 + w) and rows [y0, y0 + h); pixel centres
+    are computed in image coordinates, so a region gets exactly the pixels of the whole image.
+    """
     height, width = inv_depth.shape
-    band_first = band * band_rows
-    band_stop = min(band_first + band_rows, height)
-    inv_depth[band_first:band_stop] = 0.0
-    triangle_id[band_first:band_stop] = -1
+    band_first, band_stop = _band_rows(band, band_rows, y0, height)
+    _clear_band(band_first, band_stop, y0, inv_depth, triangle_id)
     for k in range(offsets[band], offsets[band + 1]):
         t = items[k]
         record = setup[t]
         pa, pb, pc = record[INVW_PLANE], record[INVW_PLANE + 1], record[INVW_PLANE + 2]
         for j in range(max(rows[t, 0], band_first), min(rows[t, 1], band_stop)):
             y = j + 0.5
-            first, stop = scanline_span(record, y, width)
+            first, stop = scanline_span(record, y, x0, x0 + width)
             row_value = pb * y + pc
             for i in range(first, stop):
                 inv_w = pa * (i + 0.5) + row_value
-                if inv_w > inv_depth[j, i]:
-                    inv_depth[j, i] = inv_w
-                    triangle_id[j, i] = t
+                if inv_w > inv_depth[j - y0, i - x0]:
+                    inv_depth[j - y0, i - x0] = inv_w
+                    triangle_id[j - y0, i - x0] = t
 
 
 @njit(parallel=True)
-def rasterize_bands(setup, rows, offsets, items, band_rows, inv_depth, triangle_id):
+def rasterize_bands(setup, rows, offsets, items, band_rows, x0, y0, inv_depth, triangle_id):
     """Depth-test every triangle's pixels, keeping the nearest (largest 1/w) per pixel.
 
-    Each band first clears its rows of ``inv_depth`` (H, W) to 0 (infinitely far) and of
-    ``triangle_id`` (H, W) to -1 (nothing), so the buffers may hold anything on entry.
+    Each band first clears its rows of ``inv_depth`` (h, w) to 0 (infinitely far) and of
+    ``triangle_id`` (h, w) to -1 (nothing), so the buffers may hold anything on entry.
     """
     for band in prange(offsets.shape[0] - 1):
-        _rasterize_band(setup, rows, offsets, items, band, band_rows, inv_depth, triangle_id)
+        _rasterize_band(
+            setup, rows, offsets, items, band, band_rows, x0, y0, inv_depth, triangle_id
+        )
 
 
 @njit
-def count_coverage(setup, rows, width, counts):
-    """Add 1 to counts (H, W) for every pixel each triangle draws (a fill-rule check)."""
+def _paint_band(setup, rows, offsets, items, order, band, band_rows, x0, y0, inv_depth,
+                triangle_id):
+    """Clear one band, then draw ``order``'s triangles over each other, later ones on top.
+
+    No depth test: the painter's and BSP methods list the triangles back to front. The 1/w of
+    the triangle drawn last is kept, so the visible surface's depth is known.
+    """
+    height, width = inv_depth.shape
+    band_first, band_stop = _band_rows(band, band_rows, y0, height)
+    _clear_band(band_first, band_stop, y0, inv_depth, triangle_id)
+    for k in range(offsets[band], offsets[band + 1]):
+        t = order[items[k]]
+        record = setup[t]
+        pa, pb, pc = record[INVW_PLANE], record[INVW_PLANE + 1], record[INVW_PLANE + 2]
+        for j in range(max(rows[t, 0], band_first), min(rows[t, 1], band_stop)):
+            y = j + 0.5
+            first, stop = scanline_span(record, y, x0, x0 + width)
+            row_value = pb * y + pc
+            for i in range(first, stop):
+                inv_depth[j - y0, i - x0] = pa * (i + 0.5) + row_value
+                triangle_id[j - y0, i - x0] = t
+
+
+@njit(parallel=True)
+def paint_bands(setup, rows, offsets, items, order, band_rows, x0, y0, inv_depth, triangle_id):
+    """Draw the triangles ``order[items[...]]`` of each band in list order (painter's drawing).
+
+    ``offsets``/``items`` bin the positions of ``order`` (not triangle indices) per band.
+    """
+    for band in prange(offsets.shape[0] - 1):
+        _paint_band(
+            setup, rows, offsets, items, order, band, band_rows, x0, y0, inv_depth, triangle_id
+        )
+
+
+@njit
+def count_coverage(setup, rows, x0, y0, counts):
+    """Add 1 to counts (h, w) for every pixel each triangle draws (fill-rule and overdraw)."""
+    width = counts.shape[1]
     for t in range(rows.shape[0]):
         for j in range(rows[t, 0], rows[t, 1]):
-            first, stop = scanline_span(setup[t], j + 0.5, width)
+            first, stop = scanline_span(setup[t], j + 0.5, x0, x0 + width)
             for i in range(first, stop):
-                counts[j, i] += 1
+                counts[j - y0, i - x0] += 1
 
 
 @njit(inline="always")
@@ -439,126 +556,102 @@ def _clamp01(value):
     return min(max(value, 0.0), 1.0)
 
 
+@njit
+def _new_batch():
+    return PhongBatch(
+        np.empty((3, SHADE_BATCH)),
+        np.empty((3, SHADE_BATCH)),
+        np.empty((3, SHADE_BATCH)),
+        np.empty((5, SHADE_BATCH)),
+        np.empty(SHADE_BATCH),
+        np.empty(SHADE_BATCH, dtype=np.intp),
+    )
+
+
 @njit(parallel=True)
-def render_bands(
-    bands,
-    setup,
-    rows,
-    offsets,
-    items,
-    band_rows,
-    inv_depth,
-    triangle_id,
-    triangles,
-    positions,
-    normals,
-    colors,
-    triangle_info,
-    flat_colors,
-    materials,
-    lights,
-    ambient,
-    eye,
-    mode,
-    blinn,
-    background,
-    rgb,
-    depth,
-    object_id,
-):
-    """Rasterize the listed bands of rows, then shade their visible pixels once.
+def render_bands(bands, setup, rows, offsets, items, band_rows, x0, y0, inv_depth, triangle_id,
+                 surfaces, out):
+    """Rasterize the listed bands of rows with the depth test, then shade them (the z-buffer).
 
     One parallel pass: a band's depth and triangle buffers are still in cache when it is
     shaded. Threads take contiguous runs of ``bands``; listing the bands interleaved (even
     ones, then odd ones) gives each thread rows from all over the image, so the work is even.
-
-    Writes clamped RGB (H, W, 3) (``background`` where nothing was drawn), the view-axis depth
-    (H, W) (``inf`` there) and the object id (H, W) (-1 there).
-    ``triangle_info`` (T, 2) int: the object index (into ``materials``) and a flip flag (1 when
-    the face is seen from behind, so its normals are turned towards the viewer).
     """
     height = inv_depth.shape[0]
     for k in prange(bands.shape[0]):
         band = bands[k]
-        _rasterize_band(setup, rows, offsets, items, band, band_rows, inv_depth, triangle_id)
-        batch = PhongBatch(
-            np.empty((3, SHADE_BATCH)),
-            np.empty((3, SHADE_BATCH)),
-            np.empty((3, SHADE_BATCH)),
-            np.empty((5, SHADE_BATCH)),
-            np.empty(SHADE_BATCH),
-            np.empty(SHADE_BATCH, dtype=np.intp),
+        _rasterize_band(
+            setup, rows, offsets, items, band, band_rows, x0, y0, inv_depth, triangle_id
         )
-        for j in range(band * band_rows, min((band + 1) * band_rows, height)):
-            _shade_row(
-                j, triangle_id, inv_depth, setup, triangles, positions, normals, colors,
-                triangle_info, flat_colors, materials, lights, ambient, eye, mode, blinn,
-                background, rgb, depth, object_id, batch,
-            )
+        batch = _new_batch()
+        first, stop = _band_rows(band, band_rows, y0, height)
+        for j in range(first, stop):
+            _shade_row(j, x0, y0, triangle_id, inv_depth, surfaces, out, batch)
+
+
+@njit(parallel=True)
+def shade_bands(bands, band_rows, x0, y0, inv_depth, triangle_id, surfaces, out):
+    """Shade the listed bands from visibility buffers a hidden-surface method filled.
+
+    ``inv_depth`` (h, w) holds 1/w of the visible surface (0 where nothing is drawn) and
+    ``triangle_id`` (h, w) its triangle (-1 there), for the region whose top-left pixel is
+    (x0, y0). Writes clamped RGB (h, w, 3) (``surfaces.background`` where nothing was drawn),
+    the view-axis depth (h, w) (``inf`` there) and the object id (h, w) (-1 there) into
+    ``out``.
+    """
+    height = inv_depth.shape[0]
+    for k in prange(bands.shape[0]):
+        batch = _new_batch()
+        first, stop = _band_rows(bands[k], band_rows, y0, height)
+        for j in range(first, stop):
+            _shade_row(j, x0, y0, triangle_id, inv_depth, surfaces, out, batch)
 
 
 @njit
-def _shade_row(
-    j,
-    triangle_id,
-    inv_depth,
-    setup,
-    triangles,
-    positions,
-    normals,
-    colors,
-    triangle_info,
-    flat_colors,
-    materials,
-    lights,
-    ambient,
-    eye,
-    mode,
-    blinn,
-    background,
-    rgb,
-    depth,
-    object_id,
-    batch,
-):
-    """Fill row j of the output buffers from the triangle seen at each of its pixels.
+def _shade_row(j, x0, y0, triangle_id, inv_depth, surfaces, out, batch):
+    """Fill image row j of the output buffers from the triangle seen at each of its pixels.
 
-    Phong pixels are gathered (interpolated point and unit normal, planar) into ``batch`` and
-    shaded together by :func:`_shade_batch` when it is full, when the object changes, and at
-    the end of the row.
+    This is the one shading pass of every raster method. Phong pixels are gathered
+    (interpolated point and unit normal, planar) into ``batch`` and shaded together by
+    :func:`_shade_batch` when it is full, when the object changes, and at the end of the row.
     """
+    s = surfaces
+    row = j - y0
+    rgb = out.rgb[row]
     count = 0
     batch_object = -1
     line_triangle = -1
     line = (0.0,) * 14
-    _fill_row(inv_depth[j], background, rgb[j], depth[j], object_id[j])
-    for i in range(triangle_id.shape[1]):
-        t = triangle_id[j, i]
+    y = j + 0.5
+    _fill_row(inv_depth[row], s.background, rgb, out.depth[row], out.object_id[row])
+    ids = triangle_id[row]
+    for i in range(ids.shape[0]):
+        t = ids[i]
         if t < 0:
             continue
-        object_id[j, i] = triangle_info[t, 0]
-        if mode == FLAT:
+        out.object_id[row, i] = s.info[t, 0]
+        x = (x0 + i) + 0.5
+        if s.mode == FLAT:
             for channel in range(3):
-                rgb[j, i, channel] = _clamp01(flat_colors[t, channel])
+                rgb[i, channel] = _clamp01(s.flat_colors[t, channel])
             continue
-        if mode == GOURAUD:
-            b0, b1, b2 = perspective_weights(setup[t], i + 0.5, j + 0.5)
-            a, b, c = triangles[t, 0], triangles[t, 1], triangles[t, 2]
-            first = BACK_COLOR if triangle_info[t, 1] else COLOR
+        if s.mode == GOURAUD:
+            b0, b1, b2 = perspective_weights(s.setup[t], x, y)
+            a, b, c = s.triangles[t, 0], s.triangles[t, 1], s.triangles[t, 2]
+            first = BACK_COLOR if s.info[t, 1] else COLOR
             for channel in range(3):
-                value = _mix(colors, a, b, c, b0, b1, b2, first + channel)
-                rgb[j, i, channel] = _clamp01(value)
+                value = _mix(s.colors, a, b, c, b0, b1, b2, first + channel)
+                rgb[i, channel] = _clamp01(value)
             continue
-        if count == SHADE_BATCH or (count > 0 and triangle_info[t, 0] != batch_object):
-            _shade_batch(j, count, batch, materials[batch_object], lights, ambient, eye, blinn, rgb)
+        if count == SHADE_BATCH or (count > 0 and s.info[t, 0] != batch_object):
+            _shade_batch(count, batch, s.materials[batch_object], s, rgb)
             count = 0
-        batch_object = triangle_info[t, 0]
+        batch_object = s.info[t, 0]
         if t != line_triangle:
             line_triangle = t
-            sign = -1.0 if triangle_info[t, 1] else 1.0
-            line = _scanline_surface(setup[t], j + 0.5, triangles[t], positions, normals, sign)
+            sign = -1.0 if s.info[t, 1] else 1.0
+            line = _scanline_surface(s.setup[t], y, s.triangles[t], s.positions, s.normals, sign)
         # Numerators and denominator only; _shade_batch divides, normalizes, all at once.
-        x = i + 0.5
         batch.denominators[count] = line[0] * x + line[1]
         batch.points[0, count] = line[2] * x + line[3]
         batch.points[1, count] = line[4] * x + line[5]
@@ -569,7 +662,7 @@ def _shade_row(
         batch.columns[count] = i
         count += 1
     if count > 0:
-        _shade_batch(j, count, batch, materials[batch_object], lights, ambient, eye, blinn, rgb)
+        _shade_batch(count, batch, s.materials[batch_object], s, rgb)
 
 
 @njit(inline="always")
@@ -629,8 +722,8 @@ def _fill_row(inv_depth_row, background, rgb_row, depth_row, id_row):
 
 
 @njit(error_model="numpy")
-def _shade_batch(j, count, batch, material, lights, ambient, eye, blinn, rgb):
-    """Shade the gathered pixels of row j (one object's) and write their clamped colours.
+def _shade_batch(count, batch, material, surfaces, rgb_row):
+    """Shade the gathered pixels of one row (one object's) and write their clamped colours.
 
     First the perspective division of the points and the normalization of the normals, in a
     loop LLVM vectorizes (``error_model="numpy"``: no zero-division check; the denominator is
@@ -650,18 +743,18 @@ def _shade_batch(j, count, batch, material, lights, ambient, eye, blinn, rgb):
         ny[q] *= scale
         nz[q] *= scale
     shade_planar(
-        count, batch.points, batch.normals, eye, material, lights, ambient, blinn, batch.shaded,
-        batch.scratch,
+        count, batch.points, batch.normals, surfaces.eye, material, surfaces.lights,
+        surfaces.ambient, surfaces.blinn, batch.shaded, batch.scratch,
     )
     for q in range(count):
         i = batch.columns[q]
         for channel in range(3):
-            rgb[j, i, channel] = _clamp01(batch.shaded[channel, q])
+            rgb_row[i, channel] = _clamp01(batch.shaded[channel, q])
 
 
 @register_warmup
 def warmup() -> None:
-    """Compile every raster kernel on one small triangle, in each shading mode."""
+    """Compile every raster kernel on one small triangle."""
     clip = np.array([[-0.5, -0.5, 0.0, 1.0], [0.5, -0.5, 0.0, 1.0], [0.0, 0.5, 0.0, 1.0]])
     triangles = np.array([[0, 1, 2]], dtype=np.intp)
     status = np.empty(1, dtype=np.int8)
@@ -673,30 +766,35 @@ def warmup() -> None:
     clip_to_screen(clip, 8, 8, screen)
     setup = np.zeros((1, SETUP_FIELDS))
     rows = np.zeros((1, 2), dtype=np.intp)
-    setup_triangles(screen, triangles, 8, setup, rows)
-    offsets, items = bin_triangles(rows, 1, BAND_ROWS)
+    setup_triangles(screen, triangles, 0, 8, setup, rows)
+    offsets, items = bin_triangles(rows, 1, BAND_ROWS, 0)
     inv_depth = np.empty((8, 8))
     triangle_id = np.empty((8, 8), dtype=np.int32)
-    rasterize_bands(setup, rows, offsets, items, BAND_ROWS, inv_depth, triangle_id)
-    count_coverage(setup, rows, 8, np.zeros((8, 8), dtype=np.int32))
+    rasterize_bands(setup, rows, offsets, items, BAND_ROWS, 0, 0, inv_depth, triangle_id)
+    order = np.zeros(1, dtype=np.intp)
+    paint_bands(setup, rows, offsets, items, order, BAND_ROWS, 0, 0, inv_depth, triangle_id)
+    count_coverage(setup, rows, 0, 0, np.zeros((8, 8), dtype=np.int32))
     interpolate_values(setup, triangles, np.ones((3, 1)), triangle_id, np.zeros((8, 8, 1)))
     normals = np.zeros((3, 3))
     normals[:, 2] = 1.0
-    info = np.zeros((1, 2), dtype=np.intp)
     material = np.array([[1.0, 1.0, 1.0, 0.1, 0.7, 0.3, 32.0, 0.0]])
     lights = np.array([[0.0, 0.0, 0.0, 5.0, 1.0, 1.0, 1.0]])
-    rgb = np.zeros((8, 8, 3), dtype=np.float32)
     positions = clip[:, :3].copy()
     shade_points(
         positions, normals, np.zeros(3, np.bool_), np.zeros(3, np.intp), material, lights,
         np.full(3, 0.1), np.zeros(3), False, np.empty((3, 3)),
     )
-    depth = np.empty((8, 8), dtype=np.float32)
-    object_id = np.empty((8, 8), dtype=np.int32)
-    for mode in (FLAT, GOURAUD, PHONG):
-        render_bands(
-            np.arange(len(offsets) - 1), setup, rows, offsets, items, BAND_ROWS, inv_depth,
-            triangle_id, triangles, positions, normals, np.zeros((3, 6)), info, np.ones((1, 3)),
-            material, lights, np.full(3, 0.1), np.array([0.0, 0.0, 5.0]), mode, False,
-            np.zeros(3), rgb, depth, object_id,
-        )
+    surfaces = Surfaces(
+        setup, triangles, positions, normals, np.zeros((3, 6)), np.zeros((1, 2), dtype=np.intp),
+        np.ones((1, 3)), material, lights, np.full(3, 0.1), np.array([0.0, 0.0, 5.0]),
+        np.zeros(3), PHONG, False,
+    )
+    out = Buffers(
+        np.zeros((8, 8, 3), dtype=np.float32),
+        np.empty((8, 8), dtype=np.float32),
+        np.empty((8, 8), dtype=np.int32),
+    )
+    bands = np.arange(len(offsets) - 1)
+    render_bands(bands, setup, rows, offsets, items, BAND_ROWS, 0, 0, inv_depth, triangle_id,
+                 surfaces, out)
+    shade_bands(bands, BAND_ROWS, 0, 0, inv_depth, triangle_id, surfaces, out)

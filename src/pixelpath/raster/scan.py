@@ -47,7 +47,7 @@ def _setup(points: np.ndarray, triangles: np.ndarray, width: int, height: int):
     triangles = _triangle_indices(triangles, len(points))
     setup = np.zeros((len(triangles), _kernels.SETUP_FIELDS))
     rows = np.zeros((len(triangles), 2), dtype=np.intp)
-    _kernels.setup_triangles(screen, triangles, height, setup, rows)
+    _kernels.setup_triangles(screen, triangles, 0, height, setup, rows)
     return width, height, triangles, setup, rows
 
 
@@ -97,9 +97,9 @@ def _nearest(setup: np.ndarray, rows: np.ndarray, width: int, height: int) -> np
     inv_depth = np.empty((height, width))
     triangle_id = np.empty((height, width), dtype=np.int32)
     n_bands = -(-height // _kernels.BAND_ROWS)
-    offsets, items = _kernels.bin_triangles(rows, n_bands, _kernels.BAND_ROWS)
+    offsets, items = _kernels.bin_triangles(rows, n_bands, _kernels.BAND_ROWS, 0)
     _kernels.rasterize_bands(
-        setup, rows, offsets, items, _kernels.BAND_ROWS, inv_depth, triangle_id
+        setup, rows, offsets, items, _kernels.BAND_ROWS, 0, 0, inv_depth, triangle_id
     )
     return triangle_id
 
@@ -131,7 +131,7 @@ def coverage(points: np.ndarray, triangles: np.ndarray, width: int, height: int)
 
     width, height, _, setup, rows = _setup(points, triangles, width, height)
     counts = np.zeros((height, width), dtype=np.int32)
-    _kernels.count_coverage(setup, rows, width, counts)
+    _kernels.count_coverage(setup, rows, 0, 0, counts)
     return counts
 
 

@@ -1,0 +1,395 @@
+"""The stages every raster hidden-surface method shares: one front end, one shading pass.
+
+The methods differ only in how they decide *which surface each pixel shows*; everything before
+and after that is here, once, so the same scene gives the same colours whichever method drew
+it::
+
+    scene ──prepare()──> screen triangles ──method──> visibility ──shade()──> Frame
+                         (culled, clipped,            (1/w and triangle
+                          set up for scanning)          per pixel)
+
+:func:`prepare` (the front end) tessellates the scene, culls back faces in object space
+(:mod:`pixelpath.hsr.backface`), lights the vertices (Gouraud) or polygons (flat), transforms to
+clip space, clips against the view frustum in homogeneous coordinates, divides, maps to the
+viewport and sets each triangle up for scan conversion (edge table, planes of 1/w and of the
+screen weights). Each drawable triangle remembers the triangle of the scene geometry it came
+from (``Prepared.source``), which is how object-space orders (painter's, BSP, octree) find
+their triangles again after clipping.
+
+A method fills a :class:`Visibility`: per pixel of the region, 1/w of the visible surface
+(0 where none; w is the distance along the viewing axis, and 1/w is affine in screen space) and
+the index of its triangle (-1 where none). :func:`shade` (the back end) then evaluates the
+illumination once per visible pixel, in the chosen shading mode (:mod:`pixelpath.raster.shading`).
+:func:`paint` is the drawing step of the methods that produce a back-to-front order (painter's
+and BSP): each triangle over the ones before it, with no depth test.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import itertools
+import threading
+from typing import NamedTuple
+
+import numpy as np
+
+from pixelpath.renderer import Frame, RenderOptions, View
+from pixelpath.scene import Scene
+
+__all__ = [
+    "FRONT_STEPS",
+    "STAT_NAMES",
+    "Lighting",
+    "Prepared",
+    "Visibility",
+    "paint",
+    "prepare",
+    "shade",
+]
+
+FRONT_STEPS = 3  # progress steps of prepare()
+SHADE_SLICES = 8  # progress steps of shade() (and of the z-buffer's fused pass)
+SLICED_PIXELS = 1 << 22  # regions this large report the shading pass slice by slice
+
+# Frame.stats keys, in pipeline order.
+STAT_NAMES = (
+    "triangles",  # after tessellation
+    "back faces culled",
+    "outside the frustum",
+    "inside the frustum",  # drawn as they are
+    "clipped",  # crossing the near or far plane, or far outside the sides
+    "pieces after clipping",
+    "triangles scan-converted",
+)
+
+
+class Lighting(NamedTuple):
+    """What the illumination model needs besides the surface: packed lights, Ia, eye, model."""
+
+    lights: np.ndarray
+    ambient: np.ndarray
+    eye: np.ndarray
+    blinn: bool
+
+
+class Visibility(NamedTuple):
+    """What a method decided: the visible surface at each pixel of the region."""
+
+    inv_depth: np.ndarray  # (h, w) float64 1/w of the visible surface, 0 where none
+    triangle_id: np.ndarray  # (h, w) int32 drawable triangle seen there, -1 where none
+
+
+@dataclasses.dataclass(frozen=True)
+class Prepared:
+    """The front end's output: the triangles to draw, in screen space, with their attributes.
+
+    Attributes
+    ----------
+    geometry : SceneGeometry
+        The tessellated scene the triangles come from.
+    clip : (V, 4) float64
+        Clip coordinates of the drawable vertices.
+    positions, normals : (V, 3) float64
+        World positions and unit normals of the drawable vertices.
+    colors : (V, 6) float64
+        Gouraud intensities lit from the front, then from the back; (0, 6) in other modes.
+    screen : (V, 3) float64
+        (x, y) in pixels (row 0 at the top, pixel centres at half-integers) and 1/w.
+    triangles : (T, 3) intp
+        Vertex indices of the drawable triangles.
+    source : (T,) intp
+        Triangle of ``geometry`` each drawable triangle comes from (itself, or a piece of it
+        after frustum clipping).
+    info : (T, 2) intp
+        Object index and flip flag (1 when the face is seen from behind) of each triangle.
+    flat_colors : (T, 3) float64
+        Flat-shading intensity of each triangle's polygon (zeros in the other modes).
+    setup : (T, SETUP_FIELDS) float64
+        Scan-conversion records (:mod:`pixelpath.raster._kernels`).
+    rows : (T, 2) intp
+        Image rows [first, stop) each triangle covers inside the region.
+    lighting : Lighting
+    mode : int
+        Shading mode code (:func:`pixelpath.raster.shading.shading_mode`).
+    stats : dict of str to int
+        How many triangles each front-end stage took in and let through.
+    """
+
+    geometry: object
+    clip: np.ndarray
+    positions: np.ndarray
+    normals: np.ndarray
+    colors: np.ndarray
+    screen: np.ndarray
+    triangles: np.ndarray
+    source: np.ndarray
+    info: np.ndarray
+    flat_colors: np.ndarray
+    setup: np.ndarray
+    rows: np.ndarray
+    lighting: Lighting
+    mode: int
+    stats: dict[str, int]
+
+
+def prepare(scene: Scene, view: View, options: RenderOptions, geometry=None) -> Prepared:
+    """Run the front end: cull, light, clip, divide, map to the viewport, set up.
+
+    Parameters
+    ----------
+    scene : Scene
+        Lights, ambient light and, unless ``geometry`` is given, the objects.
+    view : View
+        Camera and region.
+    options : RenderOptions
+        Shading mode, culling, Blinn-Phong; ``options.progress`` advances ``FRONT_STEPS``.
+    geometry : SceneGeometry, optional
+        Geometry to draw instead of the scene's own tessellation (the BSP method passes its
+        fragments); its polygon arrays must be the scene's.
+
+    Returns
+    -------
+    Prepared
+
+    Examples
+    --------
+    >>> from pixelpath.scene import Box, Camera, PointLight, Scene
+    >>> from pixelpath.renderer import RenderOptions, View
+    >>> from pixelpath.hsr.pipeline import prepare
+    >>> scene = Scene(Camera(eye=(3, 3, 3), target=(0, 0, 0), width=32, height=24),
+    ...               objects=[Box((-1, -1, -1), (1, 1, 1))], lights=[PointLight((5, 5, 5))])
+    >>> prepared = prepare(scene, View.whole(scene.camera), RenderOptions())
+    >>> len(prepared.triangles), prepared.stats["back faces culled"]
+    (6, 6)
+    """
+    from pixelpath.hsr.backface import front_facing
+    from pixelpath.lighting import pack_lights
+    from pixelpath.raster._arrays import kernel_array
+    from pixelpath.raster.shading import shading_mode
+    from pixelpath.raster.tessellate import scene_geometry
+
+    camera = view.camera
+    mode = shading_mode(options.shading)
+    advance = options.progress
+    lighting = Lighting(
+        pack_lights(scene.lights),
+        kernel_array(scene.ambient),
+        kernel_array(camera.eye),
+        options.blinn,
+    )
+    geometry = geometry if geometry is not None else scene_geometry(scene, camera)
+    front = front_facing(geometry.polygon_normals, geometry.polygon_points, lighting.eye)
+    keep = front[geometry.triangle_polygon]
+    if not options.backface_cull:
+        keep = np.ones_like(keep)
+    advance(1)
+    clipped = _clip_to_view(geometry, camera, keep, front, mode, lighting)
+    advance(1)
+    prepared = _set_up(clipped, view)
+    advance(1)
+    return prepared
+
+
+def _clip_to_view(geometry, camera, keep, front, mode, lighting) -> dict:
+    """Light what needs lighting before clipping, then clip to the frustum; count each stage."""
+    from pixelpath.raster import _kernels
+    from pixelpath.raster.frustum import classify, clip_crossing
+    from pixelpath.raster.transform import world_to_clip
+
+    clip = world_to_clip(geometry.vertices, camera)
+    columns = (clip, geometry.vertices, geometry.normals)
+    if mode == _kernels.GOURAUD:
+        back_drawn = bool(np.any(keep & ~front[geometry.triangle_polygon]))
+        columns += (_vertex_colors(geometry, lighting, two_sided=back_drawn),)
+    inside, crossing = classify(clip, geometry.triangles, keep)
+    new_columns, new_triangles, new_source = clip_crossing(columns, geometry.triangles, crossing)
+    if len(new_triangles):
+        columns = tuple(np.concatenate(pair) for pair in zip(columns, new_columns, strict=True))
+    triangles = np.concatenate([geometry.triangles[inside], new_triangles])
+    source = np.concatenate([inside, new_source])
+    polygon = geometry.triangle_polygon[source]
+    info = np.empty((len(polygon), 2), dtype=np.intp)
+    info[:, 0] = geometry.polygon_object[polygon]
+    info[:, 1] = ~front[polygon]
+    culled = len(keep) - int(np.count_nonzero(keep))
+    outside = len(keep) - culled - len(inside) - len(crossing)
+    counts = (len(keep), culled, outside, len(inside), len(crossing), len(new_triangles),
+              len(triangles))
+    return {
+        "geometry": geometry,
+        "clip": columns[0],
+        "positions": columns[1],
+        "normals": columns[2],
+        "colors": columns[3] if len(columns) > 3 else np.empty((0, 6)),
+        "triangles": triangles,
+        "source": source,
+        "info": info,
+        "flat_colors": _flat_colors(geometry, polygon, ~front, mode, lighting),
+        "lighting": lighting,
+        "mode": mode,
+        "stats": dict(zip(STAT_NAMES, counts, strict=True)),
+    }
+
+
+def _set_up(clipped: dict, view: View) -> Prepared:
+    """Divide, map to the viewport and set the triangles up for the region's rows."""
+    from pixelpath.raster import _kernels
+
+    camera = view.camera
+    screen = np.empty((len(clipped["clip"]), 3))
+    _kernels.clip_to_screen(clipped["clip"], camera.width, camera.height, screen)
+    triangles = clipped["triangles"]
+    setup = np.empty((len(triangles), _kernels.SETUP_FIELDS))
+    rows = np.empty((len(triangles), 2), dtype=np.intp)
+    _kernels.setup_triangles(screen, triangles, view.y0, view.y0 + view.height, setup, rows)
+    return Prepared(screen=screen, setup=setup, rows=rows, **clipped)
+
+
+def bands(view: View) -> tuple[int, np.ndarray]:
+    """Return the number of bands of rows in the region and their interleaved order.
+
+    Parallel kernels hand threads contiguous runs of the list: even bands, then odd ones,
+    gives each thread rows from all over the image, so the work is even.
+    """
+    from pixelpath.raster import _kernels
+
+    count = -(-view.height // _kernels.BAND_ROWS)
+    return count, np.concatenate([np.arange(0, count, 2), np.arange(1, count, 2)])
+
+
+def binned(prepared: Prepared, view: View, order: np.ndarray | None = None):
+    """Bin triangles (or the positions of ``order``) by band: CSR offsets and items."""
+    from pixelpath.raster import _kernels
+
+    count, _ = bands(view)
+    rows = prepared.rows if order is None else prepared.rows[order]
+    return _kernels.bin_triangles(rows, count, _kernels.BAND_ROWS, view.y0)
+
+
+def paint(prepared: Prepared, view: View, order: np.ndarray) -> Visibility:
+    """Draw the triangles listed in ``order`` over each other, first to last (no depth test).
+
+    This is the drawing step of the painter's and BSP methods: given a back-to-front order,
+    the pixel shows the last triangle drawn over it.
+    """
+    from pixelpath.raster import _kernels
+
+    visibility = visibility_buffers(view)
+    order = np.ascontiguousarray(order, dtype=np.intp)
+    offsets, items = binned(prepared, view, order)
+    _kernels.paint_bands(
+        prepared.setup, prepared.rows, offsets, items, order, _kernels.BAND_ROWS, view.x0,
+        view.y0, *visibility,
+    )
+    return visibility
+
+
+_SCRATCH = threading.local()
+
+
+def visibility_buffers(view: View) -> Visibility:
+    """Return the calling thread's 1/w and triangle buffers of the region's size.
+
+    The methods clear them themselves; reusing them spares allocating and page-faulting
+    12 bytes per pixel each frame. One pair per thread keeps concurrent renders apart; regions
+    over ``SLICED_PIXELS`` get fresh buffers, so a huge render leaves no memory held.
+    """
+    shape = (view.height, view.width)
+    buffers = getattr(_SCRATCH, "buffers", None)
+    if buffers is None or buffers.inv_depth.shape != shape:
+        buffers = Visibility(np.empty(shape), np.empty(shape, dtype=np.int32))
+        _SCRATCH.buffers = buffers if view.height * view.width <= SLICED_PIXELS else None
+    return buffers
+
+
+def surfaces(prepared: Prepared, scene: Scene):
+    """Return what the shading kernels read, as their ``Surfaces`` record."""
+    from pixelpath.raster import _kernels
+    from pixelpath.raster._arrays import kernel_array
+
+    lighting = prepared.lighting
+    return _kernels.Surfaces(
+        prepared.setup, prepared.triangles, prepared.positions, prepared.normals,
+        prepared.colors, prepared.info, prepared.flat_colors, prepared.geometry.materials,
+        lighting.lights, lighting.ambient, lighting.eye, kernel_array(scene.background),
+        prepared.mode, bool(lighting.blinn),
+    )
+
+
+def output_buffers(view: View):
+    """Return new (recycled) colour, depth and object-id buffers for the region."""
+    from pixelpath.raster import _kernels, _pool
+
+    shape = (view.height, view.width)
+    return _kernels.Buffers(
+        _pool.empty((*shape, 3), np.float32),
+        _pool.empty(shape, np.float32),
+        _pool.empty(shape, np.int32),
+    )
+
+
+def slices(view: View) -> list[tuple[int, int]]:
+    """Split the band list into runs, one progress step each (several only for big regions)."""
+    count, _ = bands(view)
+    parts = SHADE_SLICES if view.height * view.width >= SLICED_PIXELS else 1
+    return list(itertools.pairwise(np.linspace(0, count, parts + 1).astype(int).tolist()))
+
+
+def shade(
+    prepared: Prepared,
+    scene: Scene,
+    view: View,
+    visibility: Visibility,
+    options: RenderOptions,
+    report=None,
+) -> Frame:
+    """Run the back end: shade every visible pixel once; ``SHADE_SLICES`` progress steps.
+
+    Returns the frame with the front end's counts as its stats and ``report`` attached.
+    """
+    from pixelpath.raster import _kernels
+
+    out = output_buffers(view)
+    kernel_surfaces = surfaces(prepared, scene)
+    _, order = bands(view)
+    runs = slices(view)
+    for start, stop in runs:
+        _kernels.shade_bands(
+            order[start:stop], _kernels.BAND_ROWS, view.x0, view.y0, *visibility,
+            kernel_surfaces, out,
+        )
+        options.progress(SHADE_SLICES // len(runs))
+    return Frame(out.rgb, out.depth, out.object_id, prepared.stats, report)
+
+
+def _vertex_colors(geometry, lighting: Lighting, two_sided: bool) -> np.ndarray:
+    """(V, 6) Gouraud intensities at the vertices, lit from the front, then from the back.
+
+    The back half is only computed when a face seen from behind is drawn (culling off).
+    """
+    from pixelpath.raster.shading import shade_points
+
+    colors = np.zeros((len(geometry.vertices), 6))
+    for start, flipped in ((0, False), (3, True))[: 2 if two_sided else 1]:
+        colors[:, start : start + 3] = shade_points(
+            geometry.vertices, geometry.normals, np.full(len(geometry.vertices), flipped),
+            geometry.vertex_object, geometry.materials, lighting.lights, lighting.ambient,
+            lighting.eye, blinn=lighting.blinn,
+        )
+    return colors
+
+
+def _flat_colors(geometry, polygon, back, mode, lighting: Lighting) -> np.ndarray:
+    """(T, 3) intensity of each drawn triangle's polygon at its centroid (flat shading only)."""
+    from pixelpath.raster import _kernels
+    from pixelpath.raster.shading import shade_points
+
+    if mode != _kernels.FLAT or len(polygon) == 0:
+        return np.zeros((len(polygon), 3))
+    used, inverse = np.unique(polygon, return_inverse=True)
+    colors = shade_points(
+        geometry.polygon_centroids[used], geometry.polygon_normals[used], back[used],
+        geometry.polygon_object[used], geometry.materials, lighting.lights, lighting.ambient,
+        lighting.eye, blinn=lighting.blinn,
+    )
+    return colors[inverse]
