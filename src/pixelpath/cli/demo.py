@@ -57,7 +57,7 @@ def run(args: argparse.Namespace) -> int:
         for shading in shadings:
             options.shading = shading
             output = folder / (f"{name}-{shading}.png" if len(shadings) > 1 else f"{name}.png")
-            _, seconds = render_to_file(scene, output, options, f"{name} ({shading})")
+            _, _, seconds = render_to_file(scene, output, options, f"{name} ({shading})")
             camera = scene.camera
             console().print(
                 f"wrote {output} ({camera.width}x{camera.height}, {shading}) in {seconds:.2f} s"

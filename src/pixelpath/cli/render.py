@@ -9,8 +9,7 @@ from typing import Any
 
 from pixelpath.cli._common import CommandError, add_command, console, progress
 from pixelpath.raster.shading import SHADINGS
-
-METHODS = ("zbuffer", "scanline", "painter", "bsp", "warnock", "octree", "raytrace")
+from pixelpath.renderer import METHOD_NAMES, STYLES
 
 
 def register(subparsers: Any) -> None:
@@ -18,26 +17,34 @@ def register(subparsers: Any) -> None:
     parser = add_command(
         subparsers,
         "render",
-        summary="render a TOML scene file to an image (z-buffer, flat/Gouraud/Phong shading)",
+        summary="render a TOML scene file to an image with any hidden-surface method",
         description=(
             "Render a scene file with a hidden-surface method and a shading mode and write the "
             "image (PNG, JPEG, ... by extension; written atomically). SCENE may also name a "
-            "bundled demo scene. The camera's size comes from the file unless --size is given."
+            "bundled demo scene. The camera's size comes from the file unless --size is given. "
+            "--explain prints what the method did (per scan line, per subdivision level, ...)."
         ),
         examples=[
             "pixelpath render scene.toml -o out.png",
             "pixelpath render scene.toml -o out.png --method zbuffer --shading phong "
             "--size 1024x768",
             "pixelpath render showcase -o flat.png --shading flat --ssaa 2",
+            "pixelpath render showcase -o lines.png --style hidden-line --method bsp --explain",
         ],
         run=run,
     )
     parser.add_argument("scene", help="the .toml scene file (or the name of a bundled scene)")
     parser.add_argument("-o", "--output", required=True, help="image file to write (.png, ...)")
     parser.add_argument(
-        "--method", default="zbuffer", choices=METHODS, help="hidden-surface method"
+        "--method", default="zbuffer", choices=METHOD_NAMES, help="hidden-surface method"
     )
     parser.add_argument("--shading", default="phong", choices=SHADINGS, help="shading mode")
+    parser.add_argument(
+        "--style",
+        default="filled",
+        choices=STYLES,
+        help="filled surfaces, every edge (wireframe) or only the visible edges (hidden-line)",
+    )
     parser.add_argument("--size", help="image size WIDTHxHEIGHT (default: the scene camera's)")
     parser.add_argument("--ssaa", type=int, default=1, help="supersampling per side (1 = none)")
     parser.add_argument("--no-cull", action="store_true", help="draw back faces too (two-sided)")
@@ -46,7 +53,7 @@ def register(subparsers: Any) -> None:
     parser.add_argument(
         "--explain",
         action="store_true",
-        help="print what each pipeline stage did (culled, clipped, drawn, pixels covered)",
+        help="print what the method did: pipeline counts, then the method's own steps",
     )
     parser.add_argument("-q", "--quiet", action="store_true", help="no progress bar or summary")
 
@@ -100,10 +107,11 @@ def load_scene_sized(name: str, size: str | None) -> Any:
 
 def render_to_file(
     scene: Any, output: Path, args: argparse.Namespace, label: str
-) -> tuple[Any, float]:
+) -> tuple[Any, Any, float]:
     """Render with the options in ``args``, showing progress; write ``output``.
 
-    Returns the image and the seconds it took.
+    Returns the image, the method's report (``None`` unless ``args.explain``) and the seconds
+    it took.
     """
     from pixelpath.renderer import render, render_steps
 
@@ -114,27 +122,31 @@ def render_to_file(
         steps = render_steps(args.method)
     except NotImplementedError as exc:
         raise CommandError(str(exc)) from None
+    explain = getattr(args, "explain", False)
     with progress(f"rendering {label}", steps, quiet=args.quiet) as advance:
-        image = render(
+        result = render(
             scene,
             method=args.method,
             shading=args.shading,
             backface_cull=not args.no_cull,
             ssaa=args.ssaa,
             blinn=args.blinn,
+            style=getattr(args, "style", "filled"),
+            explain=explain,
             progress=advance,
         )
+    image, report = result if explain else (result, None)
     image.save(output, gamma=args.gamma)
-    return image, time.perf_counter() - start
+    return image, report, time.perf_counter() - start
 
 
 def run(args: argparse.Namespace) -> int:
     """Render the scene and write the image."""
     scene = load_scene_sized(args.scene, args.size)
     output = Path(args.output)
-    image, elapsed = render_to_file(scene, output, args, Path(args.scene).stem)
-    if args.explain:
-        explain(scene, image, args)
+    image, report, elapsed = render_to_file(scene, output, args, Path(args.scene).stem)
+    if report is not None:
+        explain(scene, image, report, args)
     if not args.quiet:
         camera = scene.camera
         console().print(
@@ -144,19 +156,37 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-def explain(scene: Any, image: Any, args: argparse.Namespace) -> None:
-    """Print the pipeline's counts for this frame, stage by stage."""
+def explain(scene: Any, image: Any, report: Any, args: argparse.Namespace) -> None:
+    """Print the method's report: its counts, then each of its tables."""
     from rich.table import Table
 
-    table = Table(title=f"{args.method}, {args.shading} shading", title_justify="left")
-    table.add_column("stage")
-    table.add_column("count", justify="right")
-    table.add_row("objects", str(len(scene.objects)))
-    for name, count in image.stats.items():
-        table.add_row(name, f"{count:,}")
+    summary = Table(title=f"{report.method}, {args.shading} shading", title_justify="left")
+    summary.add_column("stage")
+    summary.add_column("count", justify="right")
+    summary.add_row("objects", str(len(scene.objects)))
+    for name, value in report.summary.items():
+        summary.add_row(name, _cell(value))
     drawn = int((image.object_id >= 0).sum())
-    table.add_row("pixels covered", f"{drawn:,} of {image.width * image.height:,}")
+    summary.add_row("pixels covered", f"{drawn:,} of {image.width * image.height:,}")
     if drawn:
         finite = image.depth[image.object_id >= 0]
-        table.add_row("depth range", f"{finite.min():.4g} .. {finite.max():.4g}")
-    console().print(table)
+        summary.add_row("depth range", f"{finite.min():.4g} .. {finite.max():.4g}")
+    out = console()
+    out.print(summary)
+    for note in report.notes:
+        out.print(f"[dim]{note}[/]")
+    for steps in report.tables:
+        table = Table(title=steps.title, title_justify="left")
+        for column in steps.columns:
+            table.add_column(column, justify="right")
+        for row in steps.rows:
+            table.add_row(*(_cell(value) for value in row))
+        out.print(table)
+
+
+def _cell(value: Any) -> str:
+    if isinstance(value, float):
+        return f"{value:.4g}"
+    if isinstance(value, int) and not isinstance(value, bool):
+        return f"{value:,}"
+    return str(value)
