@@ -204,7 +204,7 @@ def clip_triangles(attributes, triangles, crossing):
     for t in crossing:
         for corner in range(3):
             _copy_row(attributes, triangles[t, corner], polygon, corner)
-        n = 3
+        n = triangles.shape[1]  # 3, typed int64 rather than literal (one clip_stage build)
         src, dst = polygon, scratch
         for p in range(6):
             n = clip_stage(src, n, FRUSTUM_PLANES[p], dst, untraced)
@@ -618,7 +618,7 @@ def _shade_row(j, x0, y0, triangle_id, inv_depth, surfaces, out, batch):
     s = surfaces
     row = j - y0
     rgb = out.rgb[row]
-    count = 0
+    count = np.intp(0)  # not a literal 0: that would compile a second _shade_batch
     batch_object = -1
     line_triangle = -1
     line = (0.0,) * 14
@@ -645,7 +645,7 @@ def _shade_row(j, x0, y0, triangle_id, inv_depth, surfaces, out, batch):
             continue
         if count == SHADE_BATCH or (count > 0 and s.info[t, 0] != batch_object):
             _shade_batch(count, batch, s.materials[batch_object], s, rgb)
-            count = 0
+            count = np.intp(0)
         batch_object = s.info[t, 0]
         if t != line_triangle:
             line_triangle = t
