@@ -41,6 +41,8 @@ _KERNEL_MODULES = (
     "pixelpath.clip._kernels",
     "pixelpath.lighting._kernels",
     "pixelpath.raster._kernels",
+    "pixelpath.raster._line_kernels",
+    "pixelpath.hsr._kernels.octree",
 )
 
 __all__ = [
