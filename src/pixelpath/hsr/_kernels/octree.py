@@ -26,6 +26,7 @@ from pixelpath.raster._kernels import (
     SETUP_FIELDS,
     _grown,
     _grown_rows,
+    _outcode,
     perspective_weights,
     scanline_span,
 )
@@ -35,6 +36,7 @@ from pixelpath.raster._kernels import (
 FRONT_TO_BACK = np.array([0, 1, 2, 4, 3, 5, 6, 7], dtype=np.intp)
 
 TILE = 8  # side in pixels of the tiles whose undecided pixels are counted
+FOOTPRINT_PAD = 1e-3  # pixels added around a cell's projected box, against rounding
 
 # Columns of the per-level statistics (one row per tree level).
 VISITED = 0  # nodes entered
@@ -215,7 +217,7 @@ def cell_footprints(tree, triangle_rects, matrix, width, height, rects, outside)
     (in clip coordinates, ``matrix`` mapping world to clip). Its rectangle
     (x min, x max, y min, y max, in pixels) is the box of its projected corners (the whole
     image when the cell reaches behind the eye), cut down to the box of the triangles it holds
-    (``triangle_rects`` (T, 4), each triangle's screen box); a little padding keeps it
+    (``triangle_rects`` (T, 4), each triangle's screen box); ``FOOTPRINT_PAD`` keeps it
     conservative under rounding.
     """
     n_nodes = tree.cells.shape[0]
@@ -237,11 +239,10 @@ def cell_footprints(tree, triangle_rects, matrix, width, height, rects, outside)
         outside[node] = all_out != 0
         if behind:
             x_min, x_max, y_min, y_max = 0.0, float(width), 0.0, float(height)
-        pad = 1e-3
-        rects[node, 0] = max(rects[node, 0], x_min - pad)
-        rects[node, 1] = min(rects[node, 1], x_max + pad)
-        rects[node, 2] = max(rects[node, 2], y_min - pad)
-        rects[node, 3] = min(rects[node, 3], y_max + pad)
+        rects[node, 0] = max(rects[node, 0], x_min - FOOTPRINT_PAD)
+        rects[node, 1] = min(rects[node, 1], x_max + FOOTPRINT_PAD)
+        rects[node, 2] = max(rects[node, 2], y_min - FOOTPRINT_PAD)
+        rects[node, 3] = min(rects[node, 3], y_max + FOOTPRINT_PAD)
 
 
 @njit
@@ -285,25 +286,6 @@ def _corner_clip(tree, node, corner, matrix):
         matrix[2, 0] * px + matrix[2, 1] * py + matrix[2, 2] * pz + matrix[2, 3],
         matrix[3, 0] * px + matrix[3, 1] * py + matrix[3, 2] * pz + matrix[3, 3],
     )
-
-
-@njit
-def _outcode(x, y, z, w):
-    """Bit p set when the point is outside frustum plane p (near, far, left, right, bottom, top)."""
-    code = 0
-    if z < -w:
-        code |= 1
-    if z > w:
-        code |= 2
-    if x < -w:
-        code |= 4
-    if x > w:
-        code |= 8
-    if y < -w:
-        code |= 16
-    if y > w:
-        code |= 32
-    return code
 
 
 @njit
@@ -466,7 +448,7 @@ def _draw_leaf(tree, node, scan, c0, c1, r0, r1, x0, y0, inv_depth, triangle_id,
 
     Decided pixels are left alone. A sample replaces the stored one when it is nearer, or as
     near with a lower triangle index (the z-buffer's tie rule, whatever the order of cells).
-    Returns how many pixels were tested, listed (once each) in ``touched``.
+    Returns how many pixels were tested, each listed once in ``touched``.
     """
     width = inv_depth.shape[1]
     n_touched = 0
