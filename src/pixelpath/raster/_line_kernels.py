@@ -25,19 +25,25 @@ SEGMENT_FIELDS = 6
 
 
 @njit
-def clip_segments(starts, ends, screen, kept, width, height):
-    """Clip segments (clip coordinates (E, 4) each end) to the frustum, map them to pixels.
+def clip_segments(starts, ends, matrix, screen, kept, width, height):
+    """Clip world segments (E, 3) to the frustum, ``matrix`` mapping world to clip space.
 
-    Writes each kept segment's ends as (x, y, 1/w) into ``screen`` (E, SEGMENT_FIELDS) and
-    whether anything was left into ``kept`` (E,); returns how many segments were cut.
+    Writes each kept segment's ends as (x, y, 1/w) in pixels into ``screen``
+    (E, SEGMENT_FIELDS) and whether anything was left into ``kept`` (E,); returns how many
+    segments were cut.
     """
     cut = 0
+    a = np.empty(4)
+    b = np.empty(4)
     for e in range(starts.shape[0]):
+        for row in range(4):
+            a[row] = _transform(matrix, row, starts[e])
+            b[row] = _transform(matrix, row, ends[e])
         first, last = 0.0, 1.0
         for p in range(6):
             plane = FRUSTUM_PLANES[p]
-            da = _plane_side(plane, starts[e])
-            db = _plane_side(plane, ends[e])
+            da = _plane_side(plane, a)
+            db = _plane_side(plane, b)
             if da < 0.0 and db < 0.0:
                 first, last = 1.0, 0.0
                 break
@@ -50,19 +56,26 @@ def clip_segments(starts, ends, screen, kept, width, height):
             continue
         if first > 0.0 or last < 1.0:
             cut += 1
-        _to_screen(starts[e], ends[e], first, screen, e, 0, width, height)
-        _to_screen(starts[e], ends[e], last, screen, e, 3, width, height)
+        _to_screen(a, b, first, screen, e, 0, width, height)
+        _to_screen(a, b, last, screen, e, 3, width, height)
     return cut
 
 
-@njit(inline="always")
+@njit
+def _transform(matrix, row, point):
+    """Return row ``row`` of ``matrix`` (4, 4) applied to the point (x, y, z, 1)."""
+    return (matrix[row, 0] * point[0] + matrix[row, 1] * point[1] + matrix[row, 2] * point[2]
+            + matrix[row, 3])
+
+
+@njit
 def _plane_side(plane, point):
     """Return c · (x, y, z, w) for a boundary row [PLANE, c0, c1, c2, c3] of FRUSTUM_PLANES."""
     return (plane[1] * point[0] + plane[2] * point[1] + plane[3] * point[2]
             + plane[4] * point[3])
 
 
-@njit(inline="always")
+@njit
 def _to_screen(a, b, s, screen, e, column, width, height):
     """Write (x, y, 1/w) in pixels of the point a + s (b - a) (clip coordinates)."""
     x = a[0] + s * (b[0] - a[0])
@@ -74,7 +87,7 @@ def _to_screen(a, b, s, screen, e, column, width, height):
     screen[e, column + 2] = inv_w
 
 
-@njit(inline="always")
+@njit
 def _end_pixels(segment, width, height):
     """Pixel indices of both ends, walked from the end earlier in scan order (row, then column).
 
@@ -91,7 +104,7 @@ def _end_pixels(segment, width, height):
     return ia, ja, ib, jb, flipped
 
 
-@njit(inline="always")
+@njit
 def _step(i, j, error, dx, dy, sx, sy):
     """One step of Bresenham's algorithm (all octants): dx = |Δi|, dy = -|Δj|."""
     twice = 2 * error
@@ -168,7 +181,7 @@ def draw_segments(screen, kept, owner, width, height, x0, y0, limit, depth, ids)
     return inside, hidden
 
 
-@njit(inline="always")
+@njit
 def _along(coordinate, start, stop):
     """Position of ``coordinate`` between ``start`` and ``stop`` as a fraction in [0, 1]."""
     if stop == start:
@@ -179,11 +192,13 @@ def _along(coordinate, start, stop):
 @register_warmup
 def warmup() -> None:
     """Compile the line kernels on one segment crossing the near plane."""
-    starts = np.array([[0.0, 0.0, -2.0, 1.0]])
-    ends = np.array([[0.5, 0.5, 0.5, 2.0]])
+    matrix = np.eye(4)
+    matrix[3, 2], matrix[3, 3] = -1.0, 0.0  # w = -z: the eye at the origin looking down -z
+    starts = np.array([[0.0, 0.0, 1.0]])
+    ends = np.array([[0.5, 0.5, -2.0]])
     screen = np.empty((1, SEGMENT_FIELDS))
     kept = np.empty(1, dtype=np.bool_)
-    clip_segments(starts, ends, screen, kept, 8, 8)
+    clip_segments(starts, ends, matrix, screen, kept, 8, 8)
     bresenham_pixels(0, 0, 5, 2)
     draw_segments(screen, kept, np.zeros(1, dtype=np.intp), 8, 8, 0, 0, np.full((8, 8), np.inf),
                   np.full((8, 8), np.inf), np.full((8, 8), -1, dtype=np.int32))

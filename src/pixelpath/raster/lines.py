@@ -112,12 +112,13 @@ def draw_lines(
     5.0
     """
     from pixelpath.raster import _line_kernels
-    from pixelpath.raster.transform import world_to_clip
 
     camera = view.camera
     starts = kernel_array(starts).reshape(-1, 3)
     ends = kernel_array(ends).reshape(-1, 3)
     owners = kernel_array(owners, np.intp).reshape(-1)
+    if not (np.isfinite(starts).all() and np.isfinite(ends).all()):
+        raise ValueError("starts and ends must be finite (no NaN or inf coordinates)")
     if not (len(starts) == len(ends) == len(owners)):
         raise ValueError(
             f"starts, ends and owners must have one row per segment, got {len(starts)}, "
@@ -131,10 +132,9 @@ def draw_lines(
         raise ValueError(f"limit must have the region's shape {shape}, got {limit.shape}")
     screen = np.empty((len(starts), _line_kernels.SEGMENT_FIELDS))
     kept = np.empty(len(starts), dtype=np.bool_)
-    cut = _line_kernels.clip_segments(
-        world_to_clip(starts, camera), world_to_clip(ends, camera), screen, kept, camera.width,
-        camera.height,
-    )
+    matrix = kernel_array(camera.projection_matrix() @ camera.view_matrix())
+    cut = _line_kernels.clip_segments(starts, ends, matrix, screen, kept, camera.width,
+                                      camera.height)
     depth = np.full(shape, np.inf)
     owner = np.full(shape, -1, dtype=np.int32)
     drawn, hidden = _line_kernels.draw_segments(
