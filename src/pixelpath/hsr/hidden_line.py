@@ -33,8 +33,11 @@ the line's depth (``inf`` where none) and its object (-1 where none).
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 
+from pixelpath.raster.tessellate import _IdentityCache, scene_geometry
 from pixelpath.renderer import Frame, RenderOptions, View
 from pixelpath.scene import Plane, Scene
 
@@ -86,29 +89,59 @@ def polygon_edges(scene: Scene, geometry, polygons: np.ndarray | None = None):
         first_polygon += count
         if isinstance(obj, Plane):
             continue
-        points, pairs = _mesh_edges(mesh, chosen)
-        starts.append(points[pairs[:, 0]])
-        ends.append(points[pairs[:, 1]])
+        edges = _EDGES.get(mesh, _MeshEdges.of)
+        pairs = edges.pairs if chosen is None else edges.pairs[edges.used_by(chosen)]
+        starts.append(edges.points[pairs[:, 0]])
+        ends.append(edges.points[pairs[:, 1]])
         owners.append(np.full(len(pairs), index, dtype=np.intp))
     if not owners:
         return np.empty((0, 3)), np.empty((0, 3)), np.empty(0, dtype=np.intp)
     return np.concatenate(starts), np.concatenate(ends), np.concatenate(owners)
 
 
-def _mesh_edges(mesh, chosen: np.ndarray | None) -> tuple[np.ndarray, np.ndarray]:
-    """Distinct vertex positions of a mesh and its distinct polygon edges (K, 2) among them."""
-    points, welded = np.unique(mesh.vertices, axis=0, return_inverse=True)
-    welded = welded.reshape(-1)
-    offsets, indices = mesh.face_offsets, mesh.face_indices
-    following = np.arange(1, len(indices) + 1)
-    following[offsets[1:] - 1] = offsets[:-1]  # a face's last corner joins its first
-    a, b = welded[indices], welded[indices[following]]
-    if chosen is not None:
-        keep = np.repeat(chosen, np.diff(offsets))
-        a, b = a[keep], b[keep]
-    pairs = np.stack([np.minimum(a, b), np.maximum(a, b)], axis=1)
-    pairs = pairs[pairs[:, 0] != pairs[:, 1]]
-    return points, np.unique(pairs, axis=0).reshape(-1, 2)
+@dataclasses.dataclass(frozen=True)
+class _MeshEdges:
+    """A mesh's distinct polygon edges, and which edge each corner of each polygon starts."""
+
+    points: np.ndarray  # (K, 3) distinct vertex positions
+    pairs: np.ndarray  # (E, 2) edges as point indices, lower first, sorted
+    corner_edge: np.ndarray  # (C,) edge from each polygon corner to the next; -1 if degenerate
+    corner_polygon: np.ndarray  # (C,) polygon of each corner
+
+    @classmethod
+    def of(cls, mesh) -> _MeshEdges:
+        """Weld the vertices by position, list each polygon's edges, keep each edge once."""
+        vertices = mesh.vertices
+        order = np.lexsort(vertices.T[::-1])
+        ordered = vertices[order]
+        starts_group = np.ones(len(vertices), dtype=bool)
+        starts_group[1:] = np.any(ordered[1:] != ordered[:-1], axis=1)
+        welded = np.empty(len(vertices), dtype=np.intp)
+        welded[order] = np.cumsum(starts_group) - 1
+        offsets, indices = mesh.face_offsets, mesh.face_indices
+        following = np.arange(1, len(indices) + 1)
+        following[offsets[1:] - 1] = offsets[:-1]  # a face's last corner joins its first
+        a, b = welded[indices], welded[indices[following]]
+        low, high = np.minimum(a, b), np.maximum(a, b)
+        proper = low != high  # a repeated corner makes no edge
+        count = len(ordered)
+        keys, edge = np.unique(low[proper] * count + high[proper], return_inverse=True)
+        corner_edge = np.full(len(indices), -1, dtype=np.intp)
+        corner_edge[proper] = edge.reshape(-1)
+        pairs = np.stack([keys // count, keys % count], axis=1)
+        corner_polygon = np.repeat(np.arange(mesh.face_count), np.diff(offsets))
+        return cls(ordered[starts_group], pairs, corner_edge, corner_polygon)
+
+    def used_by(self, polygons: np.ndarray) -> np.ndarray:
+        """(E,) whether each edge belongs to one of the chosen polygons ((P,) bool)."""
+        used = np.zeros(len(self.pairs), dtype=bool)
+        edges = self.corner_edge[polygons[self.corner_polygon]]
+        used[edges[edges >= 0]] = True
+        return used
+
+
+# Edges of the last meshes drawn (meshes are immutable; a scene's are reused frame to frame).
+_EDGES = _IdentityCache(64)
 
 
 def wireframe(scene: Scene, view: View, options: RenderOptions) -> Frame:
@@ -137,7 +170,6 @@ def wireframe(scene: Scene, view: View, options: RenderOptions) -> Frame:
     (True, 12)
     """
     from pixelpath.raster.lines import draw_lines
-    from pixelpath.raster.tessellate import scene_geometry
 
     geometry = scene_geometry(scene, view.camera)
     starts, ends, owners = polygon_edges(scene, geometry)
@@ -189,7 +221,6 @@ def hidden_lines(
     """
     from pixelpath.hsr.backface import front_facing
     from pixelpath.raster.lines import draw_lines
-    from pixelpath.raster.tessellate import scene_geometry
 
     frame_view = frame_view or view
     if frame.depth.shape != (frame_view.height, frame_view.width):
@@ -253,13 +284,28 @@ def surface_limit(depth: np.ndarray, object_id: np.ndarray) -> np.ndarray:
     [[1.15, 1.3, inf, inf], [1.15, 1.3, inf, inf]]
     """
     depth = np.where(np.asarray(object_id) >= 0, np.asarray(depth, dtype=np.float64), np.inf)
-    padded = np.pad(depth, 1, mode="edge")
-    height, width = depth.shape
-    shifted = [padded[dy : dy + height, dx : dx + width] for dy in range(3) for dx in range(3)]
-    high, low = np.max(shifted, axis=0), np.min(shifted, axis=0)
+    high = _around(depth, np.maximum)
+    low = _around(depth, np.minimum)
     with np.errstate(invalid="ignore"):  # inf - inf where the whole neighbourhood is empty
         limit = high + SLOPE * (high - low) + RELATIVE * high
     return np.where(np.isinf(high), np.inf, limit)
+
+
+def _around(values: np.ndarray, pick) -> np.ndarray:
+    """``pick`` (np.maximum or np.minimum) over each pixel's 3 × 3 neighbourhood.
+
+    Separable: along columns, then along rows; a pixel on the border has fewer neighbours.
+    """
+    out = values.copy()
+    for axis in (0, 1):
+        source = out.copy()
+        lower = [slice(None)] * 2
+        upper = [slice(None)] * 2
+        lower[axis], upper[axis] = slice(None, -1), slice(1, None)
+        lower, upper = tuple(lower), tuple(upper)
+        pick(out[lower], source[upper], out=out[lower])
+        pick(out[upper], source[lower], out=out[upper])
+    return out
 
 
 def _frame(scene: Scene, geometry, lines, stats: dict, report) -> Frame:
