@@ -238,12 +238,14 @@ def convert_pixels(src, dst, src_channels, dst_channels, scale, op, matrix, offs
 
 @register_warmup
 def warmup() -> None:
-    """Compile the kernel for every input dtype the public API passes it."""
+    """Compile the kernel for every pair of input and result dtypes the public API passes it."""
     matrix = np.eye(3)
     offset = np.zeros(3)
     for dtype, out_dtype in (
         (np.uint8, np.float64),
         (np.uint16, np.float64),
+        (np.uint8, np.float32),  # dtype="float32"
+        (np.uint16, np.float32),
         (np.float32, np.float32),
         (np.float64, np.float64),
     ):
