@@ -188,7 +188,7 @@ def _apply(
         conversion.offset.astype(dtype, copy=False),
     )
     flat_src, flat_dst = src.reshape(-1), result.reshape(-1)
-    # Non-finite input is counted by the kernel and raised below; errstate keeps the pure-Python
+    # Non-finite input is flagged by the kernel and counted below; errstate keeps the pure-Python
     # run (NUMBA_DISABLE_JIT=1) from warning on the way, as the compiled run never does.
     with np.errstate(invalid="ignore", over="ignore"):
         if flat_src.size <= _kernels.CHUNK * src.shape[-1]:
@@ -197,8 +197,9 @@ def _apply(
         else:
             bad = _kernels.convert_pixels(flat_src, flat_dst, src.shape[-1], dst_channels, *args)
     if bad:
+        count = np.count_nonzero(~np.isfinite(src).all(axis=-1))
         raise ValueError(
-            f"{name} has {bad} colour(s) with NaN or infinite components; "
+            f"{name} has {count} colour(s) with NaN or infinite components; "
             "mask or replace them before converting"
         )
     return result
