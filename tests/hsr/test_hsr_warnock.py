@@ -26,7 +26,7 @@ def classify(triangle, area):
     view = view_of()
     prepared = set_up([triangle], view)
     boxes = np.zeros((1, 4), dtype=np.intp)
-    kernels.coverage_boxes(prepared.setup, prepared.rows, 0, 16, boxes)
+    kernels.coverage_boxes(prepared.setup, prepared.rows, 0, 16, boxes, 0, 1)
     x0, y0, x1, y1 = area
     return kernels.classify(prepared.setup[0], boxes[0], np.array([y0, y1, x0, x1]))
 

@@ -113,10 +113,14 @@ def _scan(prepared: pipeline.Prepared, view: View) -> tuple[pipeline.Visibility,
     offsets, items = pipeline.binned(prepared, view)
     _, order = pipeline.bands(view)
     counts = np.zeros((view.height, len(LINE_COUNTS)), dtype=np.intp)
-    kernels.scan_bands(
-        order, prepared.setup, prepared.rows, offsets, items, _kernels.BAND_ROWS, view.x0,
-        view.y0, *visibility, counts,
-    )
+
+    def scan(start: int, stop: int) -> None:
+        kernels.scan_bands(
+            order[start:stop], prepared.setup, prepared.rows, offsets, items,
+            _kernels.BAND_ROWS, view.x0, view.y0, *visibility, counts,
+        )
+
+    pipeline.in_threads(scan, len(order))
     return visibility, counts
 
 

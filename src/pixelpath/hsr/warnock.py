@@ -42,6 +42,8 @@ Examples
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 
 from pixelpath.hsr import pipeline
@@ -113,7 +115,11 @@ def _subdivide(prepared: pipeline.Prepared, view: View, explain: bool):
 
     visibility = pipeline.visibility_buffers(view)
     boxes = np.empty((len(prepared.rows), 4), dtype=np.intp)
-    kernels.coverage_boxes(prepared.setup, prepared.rows, view.x0, view.x0 + view.width, boxes)
+    pipeline.in_threads(
+        functools.partial(kernels.coverage_boxes, prepared.setup, prepared.rows, view.x0,
+                          view.x0 + view.width, boxes),
+        len(boxes),
+    )
     candidates = np.flatnonzero(boxes[:, kernels.ROW_FIRST] < boxes[:, kernels.ROW_STOP])
     candidates = candidates.astype(np.intp)
     areas = np.array([[view.y0, view.y0 + view.height, view.x0, view.x0 + view.width]],
@@ -125,8 +131,11 @@ def _subdivide(prepared: pipeline.Prepared, view: View, explain: bool):
     while len(areas):
         kept = np.empty(len(candidates), dtype=np.bool_)
         decisions = np.empty(len(areas), dtype=np.int8)
-        kernels.decide_level(areas, offsets, candidates, prepared.setup, boxes, view.x0,
-                             view.y0, *visibility, kept, decisions)
+        decide = functools.partial(
+            kernels.decide_level, areas, offsets, candidates, prepared.setup, boxes, view.x0,
+            view.y0, *visibility, kept, decisions,
+        )
+        pipeline.in_threads(decide, len(areas))
         tally = np.bincount(decisions, minlength=len(DECISIONS))
         counts.append((len(areas), *tally.tolist(), len(candidates)))
         sizes.append((int((areas[:, 3] - areas[:, 2]).max()),

@@ -1,6 +1,7 @@
 """Compiled kernels of the polygon scan-line method (:mod:`pixelpath.hsr.scanline`).
 
-The region is cut into bands of rows, scanned in parallel; each band runs the whole algorithm:
+The region is cut into bands of rows, scanned in parallel (threads take lists of bands: the
+kernels release the GIL); each band runs the whole algorithm:
 
 1. **Edge table.** Every triangle of the band gives its non-horizontal edges, as its set-up
    record lists them (:mod:`pixelpath.raster._kernels`): the long edge (v0, v2) on every row
@@ -32,7 +33,7 @@ import math
 
 import numpy as np
 
-from pixelpath._jit import njit, prange, register_warmup
+from pixelpath._jit import njit, register_warmup
 from pixelpath.hsr.scanline import LINE_COUNTS
 from pixelpath.raster._kernels import (
     INVW_PLANE,
@@ -52,7 +53,7 @@ EDGE_X, EDGE_Y, EDGE_SLOPE = 0, 1, 2
 EDGE_OWNER, EDGE_FIRST, EDGE_STOP = 0, 1, 2
 
 
-@njit(parallel=True)
+@njit
 def scan_bands(bands, setup, rows, offsets, items, band_rows, x0, y0, inv_depth, triangle_id,
                counts):
     """Decide the visible triangle of every pixel of the listed bands with the scan-line method.
@@ -60,11 +61,11 @@ def scan_bands(bands, setup, rows, offsets, items, band_rows, x0, y0, inv_depth,
     ``offsets``/``items`` bin the triangles per band (ascending); the buffers (h, w) cover image
     columns [x0, x0 + w) and rows [y0, y0 + h); every pixel of the bands is written (1/w 0 and
     triangle -1 where nothing is seen). ``counts`` (h, len(LINE_COUNTS)) receives what
-    happened on each scan line.
+    happened on each scan line. Bands are independent: callers run lists of them in parallel
+    threads (the kernel releases the GIL).
     """
     height = inv_depth.shape[0]
-    for k in prange(bands.shape[0]):
-        band = bands[k]
+    for band in bands:
         first = y0 + band * band_rows
         stop = min(first + band_rows, y0 + height)
         _scan_band(setup, rows, items[offsets[band] : offsets[band + 1]], first, stop, x0, y0,
@@ -91,7 +92,9 @@ def _scan_band(setup, rows, band_items, first_row, stop_row, x0, y0, inv_depth, 
     # where[k] is band triangle k's place (-1 when out).
     held = np.empty((n, 2), dtype=np.intp)
     planes = np.empty((n, 3))
-    where = np.full(n, -1, dtype=np.intp)
+    where = np.empty(n, dtype=np.intp)
+    for k in range(n):
+        where[k] = -1
     stack = np.empty((width + 1, 2), dtype=np.intp)  # spans [first, stop) still to resolve
     active = 0
     for j in range(first_row, stop_row):

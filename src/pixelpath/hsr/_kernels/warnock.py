@@ -13,16 +13,17 @@ The exact bounding box of each triangle's coverage (:func:`coverage_boxes`) sett
 classifications at once; the rest scan the triangle's spans on the area's rows, stopping as
 soon as the answer is known.
 
-:func:`decide_level` takes one level of areas (run in parallel: areas never overlap), each
-with the triangles that were not disjoint from its parent, and decides each area whole where
-the rules allow, writing its pixels; :func:`subdivide` makes the next level from the rest.
+:func:`decide_level` takes one level of areas (threads take ranges of them: areas never
+overlap), each with the triangles that were not disjoint from its parent, and decides each
+area whole where the rules allow, writing its pixels; :func:`subdivide` makes the next level
+from the rest.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from pixelpath._jit import njit, prange, register_warmup
+from pixelpath._jit import njit, register_warmup
 from pixelpath.raster._kernels import INVW_PLANE, clearly_nearer, scanline_span, wins_depth_test
 
 # Classes of a triangle against an area.
@@ -34,14 +35,14 @@ DECISIONS = 5
 ROW_FIRST, ROW_STOP, COL_FIRST, COL_STOP = 0, 1, 2, 3
 
 
-@njit(parallel=True)
-def coverage_boxes(setup, rows, col_first, col_stop, boxes):
-    """Write the bounding box (rows, then columns, [first, stop)) of each triangle's pixels.
+@njit
+def coverage_boxes(setup, rows, col_first, col_stop, boxes, first, stop):
+    """Write the bounding box (rows, then columns, [first, stop)) of triangles first..stop-1.
 
-    Only the pixels inside the region's columns [col_first, col_stop) count; a triangle that
-    covers none gets an empty box (all zeros).
+    The box of the pixels each covers inside the region's columns [col_first, col_stop); a
+    triangle that covers none gets an empty box (all zeros).
     """
-    for t in prange(rows.shape[0]):
+    for t in range(first, stop):
         row_first, row_stop, first, stop = 0, 0, 0, 0
         for j in range(rows[t, 0], rows[t, 1]):
             span_first, span_stop = scanline_span(setup[t], j + 0.5, col_first, col_stop)
@@ -82,17 +83,19 @@ def classify(record, box, area):
     return SURROUNDING if full else DISJOINT
 
 
-@njit(parallel=True)
+@njit
 def decide_level(areas, offsets, candidates, setup, boxes, x0, y0, inv_depth, triangle_id,
-                 kept, decisions):
-    """Decide each area of one level, or mark it for subdivision.
+                 kept, decisions, first, stop):
+    """Decide areas first..stop-1 of one level, or mark them for subdivision.
 
-    Area a's candidates are ``candidates[offsets[a]:offsets[a + 1]]`` (ascending triangle
-    indices); ``kept`` receives, per candidate, whether it is not disjoint from the area (the
-    next level's candidates) and ``decisions`` how each area was decided. Decided areas'
-    pixels are written to the buffers (h, w), whose top-left pixel is image pixel (x0, y0).
+    Areas never overlap, so callers run several ranges of a level in parallel threads (the
+    kernel releases the GIL). Area a's candidates are ``candidates[offsets[a]:offsets[a + 1]]``
+    (ascending triangle indices); ``kept`` receives, per candidate, whether it is not disjoint
+    from the area (the next level's candidates) and ``decisions`` how each area was decided.
+    Decided areas' pixels are written to the buffers (h, w), whose top-left pixel is image
+    pixel (x0, y0).
     """
-    for a in prange(areas.shape[0]):
+    for a in range(first, stop):
         decisions[a] = _decide_area(areas[a], offsets[a], offsets[a + 1], candidates, setup,
                                     boxes, x0, y0, inv_depth, triangle_id, kept)
 
@@ -290,7 +293,7 @@ def warmup() -> None:
     rows = np.zeros((2, 2), dtype=np.intp)
     setup_triangles(screen, triangles, 0, 8, setup, rows)
     boxes = np.zeros((2, 4), dtype=np.intp)
-    coverage_boxes(setup, rows, 0, 8, boxes)
+    coverage_boxes(setup, rows, 0, 8, boxes, 0, 2)
     areas = np.array([[0, 8, 0, 8]], dtype=np.intp)
     offsets = np.array([0, 2], dtype=np.intp)
     candidates = np.arange(2, dtype=np.intp)
@@ -299,7 +302,7 @@ def warmup() -> None:
         kept = np.empty(candidates.shape[0], dtype=np.bool_)
         decisions = np.empty(areas.shape[0], dtype=np.int8)
         decide_level(areas, offsets, candidates, setup, boxes, 0, 0, inv_depth, triangle_id,
-                     kept, decisions)
+                     kept, decisions, 0, areas.shape[0])
         mark_areas(areas, decisions, 0, 0, 0, np.empty((8, 8), dtype=np.int8),
                    np.empty((8, 8), dtype=np.int8))
         areas, offsets, candidates = subdivide(areas, offsets, candidates, kept, decisions)
