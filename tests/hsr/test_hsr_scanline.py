@@ -163,7 +163,10 @@ def test_report_of_one_triangle():
     assert report.summary["pixels drawn"] == int((image.object_id >= 0).sum())
     assert report.summary["spans"] == int(drawn_rows.sum())
     table = report.tables[0]
-    assert table.columns == ("row", *LINE_COUNTS)
+    assert table.columns == ("row", *scanline.TABLE_COLUMNS)
+    assert table.rows[0][1:] == tuple(
+        int(arrays[name][0]) for name in scanline.TABLE_COLUMNS.values()
+    )
     assert table.rows[-1][0] == "total"
     assert len(table.rows) == len(range(0, 30, math.ceil(30 / scanline.PRINTED_LINES))) + 1
     assert "scanline" in str(report)

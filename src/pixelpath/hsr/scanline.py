@@ -65,6 +65,17 @@ LINE_COUNTS = (
     "span splits",
     "pixels compared one by one",
 )
+# The printed table's columns (short headers, so that it fits a terminal) and their counts;
+# the AEL's entering, leaving and sort moves are in the summary and the arrays.
+TABLE_COLUMNS = {
+    "edges": "active edges",
+    "crossings": "crossings",
+    "spans": "spans",
+    "one polygon": "spans without depth",
+    "by depth": "spans compared by depth",
+    "splits": "span splits",
+    "pixel tests": "pixels compared one by one",
+}
 
 
 def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
@@ -133,11 +144,12 @@ def _report(prepared: pipeline.Prepared, view: View, visibility: pipeline.Visibi
     image_rows = np.arange(view.y0, view.y0 + view.height)
     step = max(1, math.ceil(view.height / PRINTED_LINES))
     shown = range(0, view.height, step)
+    columns = [LINE_COUNTS.index(name) for name in TABLE_COLUMNS.values()]
     table = Table(
         f"scan lines (one in {step} of {view.height}, then the totals)",
-        ("row", *LINE_COUNTS),
-        [(int(image_rows[r]), *(int(v) for v in counts[r])) for r in shown]
-        + [("total", *(int(v) for v in totals))],
+        ("row", *TABLE_COLUMNS),
+        [(int(image_rows[r]), *(int(counts[r, c]) for c in columns)) for r in shown]
+        + [("total", *(int(totals[c]) for c in columns))],
     )
     summary = {
         **prepared.stats,
@@ -156,6 +168,9 @@ def _report(prepared: pipeline.Prepared, view: View, visibility: pipeline.Visibi
             "image space: per scan line the active edge list is sorted by x and walked left to "
             "right; a span covered by one polygon needs no depth, one covered by several is "
             "decided by 1/w at its two ends and split where two polygons' planes cross",
+            "per line: edges = active edges, one polygon = spans decided without depth, by "
+            "depth = spans compared by 1/w, splits = spans split where planes cross, pixel "
+            "tests = one-pixel pieces decided by the z-buffer's test",
             "edges entering counts each band's edge table: an edge crossing a band border "
             "enters again at the band's first line (bands of 32 lines run in parallel)",
         ),

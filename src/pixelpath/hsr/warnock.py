@@ -61,8 +61,10 @@ DECISIONS = (
     "subdivided",
     "pixel level",
 )
-# Columns of the per-level counts (``report.arrays["levels"]``).
+# Columns of the per-level counts (``report.arrays["levels"]``), and their short headers in
+# the printed table.
 LEVEL_COLUMNS = ("areas", *DECISIONS, "polygons tested")
+TABLE_COLUMNS = ("areas", "empty", "single", "in front", "subdivided", "pixels", "tested")
 
 
 def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
@@ -160,7 +162,7 @@ def _report(prepared: pipeline.Prepared, visibility: pipeline.Visibility, levels
     ]
     table = Table(
         "subdivision levels (largest area of each level; areas decided each way)",
-        ("level", "area size", *LEVEL_COLUMNS),
+        ("level", "area size", *TABLE_COLUMNS),
         [*rows, ("total", "", *(int(v) for v in totals))],
     )
     summary = {
@@ -180,6 +182,8 @@ def _report(prepared: pipeline.Prepared, visibility: pipeline.Visibility, levels
             "image space: an area is decided whole when no polygon reaches it, when one does, "
             "or when a polygon surrounding it is nearer than all others at its four corners; "
             "otherwise it is cut in four, down to pixels",
+            "per level: areas examined; decided empty, by a single polygon, by a surrounding "
+            "polygon in front, subdivided, or at pixel level; polygons classified (tested)",
         ),
         arrays={"levels": counts, "level": maps[0], "decision": maps[1]},
     )
