@@ -41,6 +41,8 @@ _KERNEL_MODULES = (
     "pixelpath.clip._kernels",
     "pixelpath.lighting._kernels",
     "pixelpath.raster._kernels",
+    "pixelpath.hsr._kernels.scanline",
+    "pixelpath.hsr._kernels.warnock",
 )
 
 __all__ = [
