@@ -120,9 +120,24 @@ class Scene(Record):
         if self.animation is None:
             frame_number(frame, "frame")  # any frame >= 0: the scene is the same at every one
             return self
-        camera = self.animation.camera_at(self.camera, frame, self._orbit_center)
         objects = self.animation.objects_at(self.objects, frame)
-        return dataclasses.replace(self, camera=camera, objects=objects, animation=None)
+        return dataclasses.replace(
+            self, camera=self.camera_at(frame), objects=objects, animation=None
+        )
+
+    def camera_at(self, frame: int) -> Camera:
+        """Return the camera at ``frame`` (cheaper than :meth:`at_frame` when only it is needed).
+
+        Examples
+        --------
+        >>> from pixelpath.scene import Camera, Scene
+        >>> Scene(Camera(eye=(0, 0, 5), target=(0, 0, 0))).camera_at(7).eye.tolist()
+        [0.0, 0.0, 5.0]
+        """
+        if self.animation is None:
+            frame_number(frame, "frame")
+            return self.camera
+        return self.animation.camera_at(self.camera, frame, self._orbit_center)
 
     def bounds(self) -> np.ndarray:
         """Return the (2, 3) bounding box of the bounded objects (planes are infinite).
