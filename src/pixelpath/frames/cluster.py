@@ -63,7 +63,8 @@ def local_client(workers: int | None = None) -> Client:
         n_workers=count,
         threads_per_worker=1,
         processes=True,
-        dashboard_address=None,
+        dashboard_address=None,  # no dashboard; its HTTP server on a free local port, not 8787
+        scheduler_kwargs={"dashboard_address": "127.0.0.1:0"},
         silence_logs=logging.ERROR,
         env={"NUMBA_NUM_THREADS": str(max(1, cores // count))},
     )
