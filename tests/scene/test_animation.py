@@ -1,4 +1,4 @@
-"""Animation: interpolation on hand cases, the turntable, frame 0, the [animation] table's errors."""
+"""Animation: interpolation on hand cases, the turntable, frame 0, errors of [animation]."""
 
 from __future__ import annotations
 
@@ -28,8 +28,9 @@ from pixelpath.scene.animation import ease
 CAMERA = Camera(eye=(0, 0, 5), target=(0, 0, 0), fov=40)
 
 
-def _scene(animation, objects=(Sphere((1, 0, 0), 1.0),)):
-    return Scene(CAMERA, list(objects), animation=animation)
+def _scene(animation, objects=None):
+    objects = [Sphere((1, 0, 0), 1.0)] if objects is None else objects
+    return Scene(CAMERA, objects, animation=animation)
 
 
 def test_ease_on_hand_values():
@@ -86,7 +87,7 @@ def test_a_rotated_box_becomes_a_mesh_and_an_unkeyed_object_is_untouched():
     moved = scene.at_frame(2).objects
     assert moved[0] is floor
     assert type(moved[1]).__name__ == "Mesh"
-    assert np.allclose(moved[1].bounds()[1][:2], [np.sqrt(0.5), np.sqrt(2)])  # (1, 0) and (1, 1) turned
+    assert np.allclose(moved[1].bounds()[1][:2], [np.sqrt(0.5), np.sqrt(2)])  # corners turned
 
 
 def test_turntable_orbits_the_centre_of_the_bounds():
