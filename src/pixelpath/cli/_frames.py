@@ -44,10 +44,8 @@ def add_frame_options(parser: argparse.ArgumentParser) -> None:
 
 def wants_frames(args: argparse.Namespace) -> bool:
     """Return True when any of the frame options was given."""
-    return any(
-        getattr(args, name) not in (None, False)
-        for name in ("frames", "tiles", "workers", "scheduler", "resume")
-    )
+    given = (args.frames, args.tiles, args.workers, args.scheduler)
+    return args.resume or any(value is not None for value in given)
 
 
 def run_frames(args: argparse.Namespace, scene: Any) -> int:
