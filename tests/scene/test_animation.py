@@ -287,3 +287,17 @@ def test_the_scene_model_does_not_import_its_file_format():
             elif isinstance(node, ast.Import):
                 imported.update(alias.name for alias in node.names)
         assert not imported & format_modules, f"{path.name} imports {imported & format_modules}"
+
+
+def test_the_animation_example_of_the_format_document_loads(tmp_path):
+    import re
+
+    text = (Path(__file__).resolve().parents[2] / "docs" / "scene-format.md").read_text()
+    example = next(
+        block for block in re.findall(r"```toml\n(.*?)```", text, re.DOTALL)
+        if block.startswith("[animation]")
+    )
+    head = '[camera]\neye = [0, 2, 8]\ntarget = [0, 0, 0]\n[[objects]]\ntype = "torus"\n'
+    scene = load_scene(_write(tmp_path, head + 'name = "ring"\n' + example))
+    assert scene.animation.frames == 120 and scene.animation.turntable.turns == 1
+    assert scene.camera_at(60).fov == 50.0

@@ -78,7 +78,7 @@ def run_frames(args: argparse.Namespace, scene: Any) -> int:
         if client is not None:
             from pixelpath.frames.cluster import warm_workers
 
-            warm_workers(client)
+            warm_workers(client, plan.options)
             ready = time.perf_counter() - start
             _say(args, f"{_cluster_name(client)} ready, kernels warmed, in {ready:.1f} s")
         label = f"rendering {len(plan.todo)} frame{'s' * (len(plan.todo) != 1)}"

@@ -18,28 +18,35 @@ CONNECT_TIMEOUT_S = 5.0
 
 
 class WarmKernels(WorkerPlugin):
-    """Compile (or load from the disk cache) every kernel when a worker starts.
+    """Compile (or load from the disk cache) the kernels frames will use, as a worker starts.
 
     Registered with ``client.register_plugin``, it runs on the workers present and on every
     worker that joins later (a replacement for one that died included), so no frame waits for
-    a compile and a worker compiles once, not once per task. Workers on one machine share
-    pixelpath's compile cache folder (``PIXELPATH_CACHE_DIR`` can point several machines at
-    a shared one).
+    a compile and a worker compiles once, not once per task. It renders a tiny scene with the
+    run's render options (:func:`pixelpath.frames.work.warm_up`), which compiles exactly the
+    kernels of that method and shading, not all of pixelpath's. Workers on one machine share
+    pixelpath's compile cache folder (``PIXELPATH_CACHE_DIR`` can point machines at a shared
+    one), so what one process compiled the others load.
     """
 
-    name = "pixelpath-warm-kernels"
+    def __init__(self, options: dict[str, Any]) -> None:
+        self.options = dict(options)
+        self.name = "pixelpath-warm-" + ",".join(f"{k}={v!r}" for k, v in sorted(options.items()))
 
     def setup(self, worker: Any) -> None:
-        """Run :func:`pixelpath.warmup` in the worker process."""
-        import pixelpath
+        """Render the warm-up scene in the worker process."""
+        from pixelpath.frames.work import warm_up
 
-        pixelpath.warmup()
+        warm_up(self.options)
 
 
-def warm_workers(client: Client) -> float:
-    """Register :class:`WarmKernels` on ``client``'s workers; return the seconds it took."""
+def warm_workers(client: Client, options: dict[str, Any]) -> float:
+    """Warm ``client``'s workers for frames with render ``options``; return the seconds taken.
+
+    Registering the same options again is quick: each worker keeps its compiled kernels.
+    """
     start = time.perf_counter()
-    client.register_plugin(WarmKernels())
+    client.register_plugin(WarmKernels(options))
     return time.perf_counter() - start
 
 
@@ -51,14 +58,16 @@ def available_cores() -> int:
         return os.cpu_count() or 1
 
 
-def local_client(workers: int | None = None) -> Client:
+def local_client(workers: int | None = None, numba_threads: int | None = None) -> Client:
     """Start a local cluster of ``workers`` processes (default: one per core) and connect.
 
-    Each worker runs one task at a time with ``cores // workers`` Numba threads (at least
-    one), so workers do not fight over cores. Closing the client closes the cluster.
+    Each worker runs one task at a time with ``numba_threads`` Numba threads (default:
+    ``cores // workers``, at least one), so workers do not fight over cores. Closing the client
+    closes the cluster.
     """
     cores = available_cores()
     count = workers or cores
+    threads = numba_threads or max(1, cores // count)
     cluster = LocalCluster(
         n_workers=count,
         threads_per_worker=1,
@@ -66,7 +75,7 @@ def local_client(workers: int | None = None) -> Client:
         dashboard_address=None,  # no dashboard; its HTTP server on a free local port, not 8787
         scheduler_kwargs={"dashboard_address": "127.0.0.1:0"},
         silence_logs=logging.ERROR,
-        env={"NUMBA_NUM_THREADS": str(max(1, cores // count))},
+        env={"NUMBA_NUM_THREADS": str(threads)},
     )
     client = Client(cluster)
     client.close = _closing_cluster(client.close, cluster)

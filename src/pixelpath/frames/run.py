@@ -110,7 +110,7 @@ def run_plan(plan: FramePlan, client: Any = None, progress: Progress | None = No
             frames.add(frame, tile, function(plan.scene, frame, *args))
             advance(1)
     else:
-        _run_on(client, plan.scene, tasks, frames, advance)
+        _run_on(client, plan.scene, plan.options, tasks, frames, advance)
     if plan.paths is None:
         return [frames.images[frame] for frame in plan.frames]
     return [plan.paths[frame] for frame in plan.frames]
@@ -165,13 +165,20 @@ class _Frames:
         write_bytes(self.plan.paths[frame], data)
 
 
-def _run_on(client: Any, scene: Scene, tasks: list, frames: _Frames, advance: Progress) -> None:
+def _run_on(
+    client: Any,
+    scene: Scene,
+    options: dict[str, Any],
+    tasks: list,
+    frames: _Frames,
+    advance: Progress,
+) -> None:
     """Run ``tasks`` on a Dask cluster; the scene goes to each worker once, before them."""
     from distributed import as_completed
 
     from pixelpath.frames.cluster import warm_workers
 
-    warm_workers(client)
+    warm_workers(client, options)
     run = uuid.uuid4().hex[:8]
     shared = client.scatter(scene, broadcast=True, hash=False)
     futures = {}

@@ -53,6 +53,34 @@ def frame_file(
     return encode(render_frame(scene, frame, options), suffix, gamma)
 
 
+def warm_up(options: dict[str, Any]) -> None:
+    """Render a tiny scene of every kind of object with ``options``, compiling what they need.
+
+    Numba compiles a kernel for the types of its arguments, not their values, so this compiles
+    (or loads from the disk cache) every kernel that frames rendered with ``options`` call.
+
+    Examples
+    --------
+    >>> from pixelpath.frames.work import warm_up
+    >>> warm_up({"shading": "gouraud"})
+    """
+    from pixelpath.renderer import render
+    from pixelpath.scene import Box, Camera, DirectionalLight, Plane, PointLight, Sphere
+    from pixelpath.scene.procedural import icosphere
+
+    scene = Scene(
+        Camera(eye=(0, 1, 4), target=(0, 0, 0), width=8, height=6),
+        [
+            Plane((0, -1, 0), (0, 1, 0)),
+            Sphere((-1, 0, 0), 0.5),
+            Box((0, -0.5, -0.5), (1, 0.5, 0.5)),
+            icosphere(subdivisions=0, radius=0.3, center=(0, 1, 0)),
+        ],
+        [PointLight((2, 3, 4)), DirectionalLight((-1, -1, -1))],
+    )
+    render(scene, **options)
+
+
 def encode(image: Image, suffix: str, gamma: float | None) -> bytes:
     """Return ``image`` encoded as ``Image.save`` would write it."""
     from pixelpath.io.images import encode_image
