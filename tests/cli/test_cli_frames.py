@@ -32,6 +32,18 @@ def test_showcase_turntable_frames_out_of_the_box(tmp_path, monkeypatch):
         assert (tmp_path / "spin" / f"f_{frame:03d}.png").read_bytes() == _expected(frame, tmp_path)
 
 
+def test_many_frames_go_to_a_local_cluster_by_default(tmp_path, monkeypatch, capsys):
+    import pixelpath.cli._frames as frames_cli
+
+    monkeypatch.setattr(frames_cli, "TASKS_PER_CORE_FOR_A_CLUSTER", 1)  # 2 frames suffice
+    monkeypatch.setattr(frames_cli, "available_cores", lambda: 2)
+    pattern = str(tmp_path / "f_{frame}.png")
+    assert main(["render", "showcase", "--frames", "3,7", "-o", pattern, *SIZE]) == 0
+    assert "Dask cluster of 2 workers" in capsys.readouterr().err
+    for frame in (3, 7):
+        assert (tmp_path / f"f_{frame}.png").read_bytes() == _expected(frame, tmp_path)
+
+
 def test_a_plain_render_draws_frame_zero(tmp_path):
     assert main(["render", "showcase", "-o", str(tmp_path / "plain.png"), *SIZE, "-q"]) == 0
     assert main(["render", "showcase", "--frames", "0", "-o", str(tmp_path / "f0.png"),

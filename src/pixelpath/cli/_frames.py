@@ -12,8 +12,13 @@ import time
 from typing import Any
 
 from pixelpath.cli._common import CommandError, console, error_console, progress
+from pixelpath.frames.plan import available_cores
 
 DASK_MISSING = "needs dask: pip install 'pixelpath[dask]'"
+
+# Without --workers or --scheduler, a local cluster (one worker process per core, started in
+# about 3 s) is used from this many tasks per core on; fewer render in this process.
+TASKS_PER_CORE_FOR_A_CLUSTER = 4
 
 
 def add_frame_options(parser: argparse.ArgumentParser) -> None:
@@ -30,7 +35,10 @@ def add_frame_options(parser: argparse.ArgumentParser) -> None:
         "(identical to the untiled image)",
     )
     group.add_argument(
-        "--workers", type=int, help="start a local Dask cluster of N worker processes"
+        "--workers",
+        type=int,
+        help="start a local Dask cluster of N worker processes (default: one per core when "
+        f"there are {TASKS_PER_CORE_FOR_A_CLUSTER}+ frames or tiles per core, else this process)",
     )
     group.add_argument(
         "--scheduler", help="send the work to the Dask scheduler at this address (tcp://host:8786)"
@@ -79,16 +87,21 @@ def run_frames(args: argparse.Namespace, scene: Any) -> int:
             from pixelpath.frames.cluster import warm_workers
 
             warm_workers(client, plan.options)
-            ready = time.perf_counter() - start
-            _say(args, f"{_cluster_name(client)} ready, kernels warmed, in {ready:.1f} s")
+            _say(args, f"{_cluster_name(client)} ready, kernels warmed, in {_since(start)}")
+        rendering = time.perf_counter()
         label = f"rendering {len(plan.todo)} frame{'s' * (len(plan.todo) != 1)}"
         with progress(label, plan.jobs, quiet=args.quiet) as advance:
             run_plan(plan, client, advance)
+        seconds = time.perf_counter() - rendering
     finally:
         if client is not None:
             client.close()
-    _summary(args, plan, time.perf_counter() - start)
+    _summary(args, plan, seconds, _since(start))
     return 0
+
+
+def _since(start: float) -> str:
+    return f"{time.perf_counter() - start:.1f} s"
 
 
 def render_options(args: argparse.Namespace) -> dict[str, Any]:
@@ -122,15 +135,15 @@ def _client(args: argparse.Namespace, jobs: int) -> Any:
             except ConnectionError as exc:
                 raise CommandError(str(exc)) from None
         return local_client(args.workers)
-    if jobs < 2:
-        return None
+    cores = available_cores()
+    if cores < 2 or jobs < TASKS_PER_CORE_FOR_A_CLUSTER * cores:
+        return None  # Numba's threads already use every core; a cluster would not pay
     if not has_dask:
         _say(args, f"rendering in this process (parallel frames {DASK_MISSING})")
         return None
-    from pixelpath.frames.cluster import available_cores, local_client
+    from pixelpath.frames.cluster import local_client
 
-    cores = available_cores()
-    return local_client(min(cores, jobs)) if cores > 1 else None
+    return local_client(cores)
 
 
 def _cluster_name(client: Any) -> str:
@@ -143,16 +156,16 @@ def _say(args: argparse.Namespace, text: str) -> None:
         error_console().print(text)
 
 
-def _summary(args: argparse.Namespace, plan: Any, elapsed: float) -> None:
+def _summary(args: argparse.Namespace, plan: Any, seconds: float, total: str) -> None:
     if args.quiet:
         return
     count = len(plan.todo)
-    rate = f", {count / elapsed:.2f} frames/s" if count and elapsed > 0 else ""
+    rate = f" ({count / seconds:.1f} frames/s)" if count > 1 and seconds > 0 else ""
     skipped = f"; skipped {len(plan.skipped)} complete on disk" if plan.skipped else ""
     first = plan.paths[plan.frames[0]]
     where = first if len(plan.frames) == 1 else f"{first.parent}/"
     camera = plan.scene.camera
     console().print(
         f"wrote {count} frame{'s' * (count != 1)} to {where} ({camera.width}x{camera.height}, "
-        f"{args.method}, {args.shading} shading) in {elapsed:.2f} s{rate}{skipped}"
+        f"{args.method}, {args.shading} shading) in {total}{rate}{skipped}"
     )

@@ -7,12 +7,13 @@ loads it. Workers warm pixelpath's kernels once, when they start (:class:`WarmKe
 from __future__ import annotations
 
 import logging
-import os
 import time
 from typing import Any
 
 from distributed import Client, LocalCluster
 from distributed.diagnostics.plugin import WorkerPlugin
+
+from pixelpath.frames.plan import available_cores
 
 CONNECT_TIMEOUT_S = 5.0
 
@@ -50,14 +51,6 @@ def warm_workers(client: Client, options: dict[str, Any]) -> float:
     return time.perf_counter() - start
 
 
-def available_cores() -> int:
-    """Return the number of cores this process may run on."""
-    try:
-        return len(os.sched_getaffinity(0))
-    except AttributeError:  # not on Linux
-        return os.cpu_count() or 1
-
-
 def local_client(workers: int | None = None, numba_threads: int | None = None) -> Client:
     """Start a local cluster of ``workers`` processes (default: one per core) and connect.
 
@@ -74,7 +67,7 @@ def local_client(workers: int | None = None, numba_threads: int | None = None) -
         processes=True,
         dashboard_address=None,  # no dashboard; its HTTP server on a free local port, not 8787
         scheduler_kwargs={"dashboard_address": "127.0.0.1:0"},
-        silence_logs=logging.ERROR,
+        silence_logs=logging.CRITICAL,  # worker chatter at shutdown; task errors reach us
         env={"NUMBA_NUM_THREADS": str(threads)},
     )
     client = Client(cluster)

@@ -302,6 +302,14 @@ def frame_is_complete(path: Path, width: int, height: int) -> bool:
         return False
 
 
+def available_cores() -> int:
+    """Return the number of cores this process may run on."""
+    try:
+        return len(os.sched_getaffinity(0))
+    except AttributeError:  # not on Linux
+        return os.cpu_count() or 1
+
+
 def render_options(options: dict[str, Any]) -> dict[str, Any]:
     """Return the render keywords after checking their names (values are checked by render)."""
     unknown = sorted(set(options) - set(RENDER_OPTIONS))
