@@ -128,6 +128,14 @@ def test_bad_requests_fail_before_any_work(kwargs, error, match, tmp_path, monke
     assert not list(tmp_path.iterdir())
 
 
+def test_a_frame_too_large_for_one_render_asks_for_tiles():
+    scene = animated_scene(frames=2, width=16384, height=8192)
+    with pytest.raises(ValueError, match="split the frame into more tiles"):
+        plan_frames(scene, [0])  # 16384 x 8192 = 2^27 samples, twice the limit
+    plan = plan_frames(scene, [0], tiles=(2, 1))
+    assert plan.regions == ((0, 0, 8192, 8192), (8192, 0, 16384, 8192))
+
+
 def test_a_camera_the_animation_breaks_between_keys_is_found_before_work():
     from pixelpath.scene import Animation, CameraKey
 

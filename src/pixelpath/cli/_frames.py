@@ -26,22 +26,27 @@ def add_frame_options(parser: argparse.ArgumentParser) -> None:
     group = parser.add_argument_group("many frames, tiles and clusters (Dask)")
     group.add_argument(
         "--frames",
+        metavar="SPEC",
         help="frames of the scene's [animation] to render: 0:120 (120 excluded), 0:120:2, "
         "5, 1,4,9 or all; -o must then contain {frame}, e.g. out/f_{frame:04d}.png",
     )
     group.add_argument(
         "--tiles",
+        metavar="CxR",
         help="split each frame into COLUMNSxROWS tiles rendered in parallel and stitched "
         "(identical to the untiled image)",
     )
     group.add_argument(
         "--workers",
         type=int,
+        metavar="N",
         help="start a local Dask cluster of N worker processes (default: one per core when "
         f"there are {TASKS_PER_CORE_FOR_A_CLUSTER}+ frames or tiles per core, else this process)",
     )
     group.add_argument(
-        "--scheduler", help="send the work to the Dask scheduler at this address (tcp://host:8786)"
+        "--scheduler",
+        metavar="ADDRESS",
+        help="send the work to the Dask scheduler at this address (tcp://host:8786)",
     )
     group.add_argument(
         "--resume",

@@ -109,23 +109,24 @@ def plan_frames(
     """
     if not isinstance(scene, Scene):
         raise TypeError(f"scene must be a pixelpath Scene, got {type(scene).__name__}")
-    numbers_ = frame_numbers(frames, scene)
+    chosen = frame_numbers(frames, scene)
     options = render_options(options or {})
     gamma = _gamma(gamma)
-    paths = None if out is None else output_paths(out, numbers_)
+    paths = None if out is None else output_paths(out, chosen)
     if resume and paths is None:
         raise ValueError("resume=True needs out= (frames complete on disk are skipped)")
     camera = scene.camera
     regions = tile_regions(camera.width, camera.height, tiles)
-    _check_render(scene, numbers_[0], options)
-    todo = numbers_
+    _check_render(scene, chosen[0], options)
+    _check_tile_size(regions, options.get("ssaa", 1))
+    todo = chosen
     if resume:
         todo = tuple(
             frame
-            for frame in numbers_
+            for frame in chosen
             if not frame_is_complete(paths[frame], camera.width, camera.height)
         )
-    return FramePlan(scene, numbers_, todo, paths, regions, options, gamma)
+    return FramePlan(scene, chosen, todo, paths, regions, options, gamma)
 
 
 def parse_frames(text: str) -> list[int] | None:
@@ -327,6 +328,19 @@ def _gamma(gamma: Any) -> float | None:
     if isinstance(gamma, bool) or not isinstance(gamma, numbers.Real) or not gamma > 0:
         raise ValueError(f"gamma must be a positive number, got {gamma!r}")
     return float(gamma)
+
+
+def _check_tile_size(regions: tuple[Region, ...], ssaa: int) -> None:
+    """Refuse frames (or tiles) too large for one render, pointing at ``tiles``."""
+    from pixelpath.renderer import MAX_SAMPLES
+
+    x0, y0, x1, y1 = max(regions, key=lambda r: (r[2] - r[0]) * (r[3] - r[1]))
+    samples = (x1 - x0) * (y1 - y0) * ssaa * ssaa
+    if samples > MAX_SAMPLES:
+        raise ValueError(
+            f"a {x1 - x0}x{y1 - y0} tile with ssaa={ssaa} is {samples:,} samples, more than "
+            f"the {MAX_SAMPLES:,} one render may hold; split the frame into more tiles"
+        )
 
 
 def _check_render(scene: Scene, frame: int, options: dict[str, Any]) -> None:

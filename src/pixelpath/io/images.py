@@ -129,11 +129,11 @@ def write_bytes(path: str | os.PathLike, data: bytes) -> None:
 
     Examples
     --------
-    >>> import os, tempfile
+    >>> import pathlib, tempfile
     >>> from pixelpath.io.images import write_bytes
-    >>> path = os.path.join(tempfile.mkdtemp(), "note.txt")
+    >>> path = pathlib.Path(tempfile.mkdtemp()) / "note.txt"
     >>> write_bytes(path, b"done")
-    >>> open(path, "rb").read()
+    >>> path.read_bytes()
     b'done'
     """
     path = Path(path)
