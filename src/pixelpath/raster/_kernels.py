@@ -204,7 +204,7 @@ def clip_triangles(attributes, triangles, crossing):
     for t in crossing:
         for corner in range(3):
             _copy_row(attributes, triangles[t, corner], polygon, corner)
-        n = 3
+        n = triangles.shape[1]  # 3, typed int64 rather than literal (one clip_stage build)
         src, dst = polygon, scratch
         for p in range(6):
             n = clip_stage(src, n, FRUSTUM_PLANES[p], dst, untraced)
@@ -357,6 +357,32 @@ def scanline_span(record, y, col_first, col_stop):
     first = max(math.ceil(x_left - 0.5), float(col_first))
     stop = min(math.ceil(x_right - 0.5), float(col_stop))
     return int(first), int(stop)
+
+
+# How much nearer (larger 1/w) one surface must be than another, relative to the size of the
+# terms its value is computed from, before a method decides a whole span or area from its ends
+# or corners (scan-line, Warnock). Rounding moves a computed 1/w by a few units in the last place
+# of those terms (about 1e-16 of them); with a margin far above that, the surface found nearer
+# at the ends is nearer, as the z-buffer computes it, at every pixel between them. Closer calls
+# are settled pixel by pixel with the z-buffer's own test (:func:`wins_depth_test`).
+NEARER_MARGIN = 1e-12
+
+
+@njit(inline="always")
+def clearly_nearer(value, other, scale):
+    """Whether 1/w ``value`` beats ``other`` by more than rounding of terms of size ``scale``."""
+    return value - other > NEARER_MARGIN * scale
+
+
+@njit(inline="always")
+def wins_depth_test(value, t, best_value, best_t):
+    """Return whether triangle t, at 1/w ``value``, replaces the best: the z-buffer's test.
+
+    Larger 1/w is nearer; a tie goes to the lower triangle index (the z-buffer visits triangles
+    in ascending order and replaces only on strictly nearer). Start from (0.0, -1): nothing at
+    1/w <= 0 is drawn, as in the z-buffer, whose buffer starts at 0.
+    """
+    return value > best_value or (value == best_value and t < best_t)
 
 
 @njit
@@ -618,7 +644,7 @@ def _shade_row(j, x0, y0, triangle_id, inv_depth, surfaces, out, batch):
     s = surfaces
     row = j - y0
     rgb = out.rgb[row]
-    count = 0
+    count = np.intp(0)  # not a literal 0: that would compile a second _shade_batch
     batch_object = -1
     line_triangle = -1
     line = (0.0,) * 14
@@ -645,7 +671,7 @@ def _shade_row(j, x0, y0, triangle_id, inv_depth, surfaces, out, batch):
             continue
         if count == SHADE_BATCH or (count > 0 and s.info[t, 0] != batch_object):
             _shade_batch(count, batch, s.materials[batch_object], s, rgb)
-            count = 0
+            count = np.intp(0)
         batch_object = s.info[t, 0]
         if t != line_triangle:
             line_triangle = t
