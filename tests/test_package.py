@@ -68,4 +68,11 @@ def test_python_dash_m_runs_the_cli():
 @pytest.mark.slow
 def test_warmup_compiles_every_kernel_group(capsys):
     assert main(["warmup"]) == 0
-    assert "warmed up" in capsys.readouterr().out
+    out = capsys.readouterr().out
+    assert "warmed up" in out
+    # One row per kernel module, then the total; a second run only loads from the cache.
+    rows = [line.split() for line in out.splitlines()]
+    modules = [row[0] for row in rows if row and row[0].startswith("pixelpath.")]
+    assert sorted(modules) == sorted(pixelpath._KERNEL_MODULES)
+    assert main(["warmup"]) == 0
+    assert " 0 specializations compiled" in capsys.readouterr().out
