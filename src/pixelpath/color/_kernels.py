@@ -20,10 +20,10 @@ The formulas are the notes' ones:
 
 * RGB -> HSV/HSL: Cmax, Cmin, Δ; H = 60° × (the notes' hue case), 0 when Δ = 0; V = Cmax,
   S = Δ/Cmax; or L = (Cmax + Cmin)/2, S = Δ/(1 − |2L − 1|).
-* HSV/HSL -> RGB: C and m from S and V (or L); each channel is ``m + C·f(k)`` with
-  ``k = (n + H/60) mod 6`` and ``f(k) = 1 − clamp(min(k, 4 − k), 0, 1)`` for n = 5, 3, 1 (R, G,
-  B): the notes' sector table in closed form (``f`` is 1 where the table has C, 0 where it has
-  0, and X/C on the ramps between).
+* HSV/HSL -> RGB: C and m from S and V (or L); each channel is ``m + C·f`` with ``s = H/60 mod
+  6`` and ``f = clamp(|s − 3| − 1)`` for R, ``clamp(2 − |s − 2|)`` for G and ``clamp(2 − |s − 4|)``
+  for B (clamped to [0, 1]): the notes' sector table in closed form (``f`` is 1 where the table
+  has C, 0 where it has 0, and X/C on the ramps between), five vector operations a channel.
 * CMY and YIQ and YCbCr: an affine map ``M·rgb + offset``; CMYK: K = min(C, M, Y),
   C' = (C − K)/(1 − K), with pure black (0, 0, 0, 1).
 """
@@ -139,17 +139,15 @@ def rgb_to_hsx_span(src, dst, scale, lightness):
 
 
 @njit(inline="always")
-def sector_weight(n, sextant, scale):
-    """f(k) = 1 − clamp(min(k, 4 − k), 0, 1), k = (n + sextant) mod 6: the table entry over C."""
-    zero, one, _, four, six, _, _, _ = numbers(scale)
-    k = n + sextant
-    k = k - six if k >= six else k
-    return one - smaller(larger(smaller(k, four - k), zero), one)
+def clamp(x, zero, one):
+    return smaller(larger(x, zero), one)
 
 
 @njit(error_model="numpy")
 def hsx_to_rgb_span(src, dst, scale, lightness):
     zero, one, two, four, six, sixth, per_degree, _ = numbers(scale)
+    three = two + one
+    half = one / two
     bad = False
     for i in range(src.shape[0] // 3):
         h, s, v, flag = load3(src, i, scale)
@@ -159,13 +157,13 @@ def hsx_to_rgb_span(src, dst, scale, lightness):
         sextant = zero if sextant >= six else sextant
         if lightness:
             chroma = smaller(two * v, two - two * v) * s  # (1 − |2L − 1|)·S, no cancellation
-            low = v - chroma / two
+            low = v - chroma * half
         else:
             chroma = v * s
             low = v - chroma
-        dst[3 * i] = low + chroma * sector_weight(four + one, sextant, scale)
-        dst[3 * i + 1] = low + chroma * sector_weight(two + one, sextant, scale)
-        dst[3 * i + 2] = low + chroma * sector_weight(one, sextant, scale)
+        dst[3 * i] = low + chroma * clamp(abs(sextant - three) - one, zero, one)
+        dst[3 * i + 1] = low + chroma * clamp(two - abs(sextant - two), zero, one)
+        dst[3 * i + 2] = low + chroma * clamp(two - abs(sextant - four), zero, one)
     return bad
 
 
