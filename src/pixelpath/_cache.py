@@ -21,12 +21,12 @@ changes:
 
 from __future__ import annotations
 
-import ast
 import functools
 import getpass
 import hashlib
 import inspect
 import os
+import re
 import stat
 import tempfile
 import warnings
@@ -153,24 +153,43 @@ def _module_file(name: str) -> Path | None:
     return None
 
 
-def _imported_files(path: Path) -> set[Path]:
+# ``import a.b, c`` and ``from .a import (b, c)`` at the start of a line, anywhere in a file
+# (imports inside functions count). Parsing the files would be exact but costs about 10 ms a
+# file, paid at every start-up; a line that only looks like an import (in a docstring) can only
+# add a file to the stamp, never hide one.
+_IMPORT_LINE = re.compile(
+    r"^[ \t]*(?:from[ \t]+(?P<base>\.*[\w.]*)[ \t]+import[ \t]+(?P<names>\([^)]*\)|[^\n#;]*)"
+    r"|import[ \t]+(?P<modules>[^\n#;]*))",
+    re.MULTILINE,
+)
+
+
+def _names(text: str) -> list[str]:
+    """Split ``a as b, c`` (or ``(a, c)`` over several lines) into ``["a", "c"]``."""
+    parts = text.strip("()").replace("\n", " ").split(",")
+    return [part.split()[0] for part in parts if part.split()]
+
+
+@functools.cache
+def _imported_files(path: Path) -> frozenset[Path]:
     """Return the pixelpath source files that the module at ``path`` imports, anywhere in it."""
     package = ("pixelpath", *path.relative_to(PACKAGE_DIR).parent.parts)
     found = set()
-    for node in ast.walk(ast.parse(path.read_bytes(), filename=str(path))):
-        if isinstance(node, ast.Import):
-            candidates = [_module_file(alias.name) for alias in node.names]
-        elif isinstance(node, ast.ImportFrom):
-            anchor = package[: len(package) - node.level + 1] if node.level else ()
-            base = ".".join((*anchor, node.module) if node.module else anchor)
+    for match in _IMPORT_LINE.finditer(path.read_text(encoding="utf-8")):
+        if match["modules"] is not None:
+            candidates = [_module_file(name) for name in _names(match["modules"])]
+        else:
+            dots = len(match["base"]) - len(match["base"].lstrip("."))
+            module = match["base"][dots:]
+            anchor = package[: len(package) - dots + 1] if dots else ()
+            base = ".".join((*anchor, module) if module else anchor)
             # ``from pixelpath.color import _kernels`` names a module; ``from x import f``, x's.
             candidates = [
-                _module_file(f"{base}.{alias.name}") or _module_file(base) for alias in node.names
+                _module_file(f"{base}.{name}") or _module_file(base)
+                for name in _names(match["names"])
             ]
-        else:
-            continue
         found.update(candidate for candidate in candidates if candidate is not None)
-    return found
+    return frozenset(found)
 
 
 @functools.cache
