@@ -12,7 +12,7 @@ folder holds two small JSON files:
   there is warm; ``warmup`` compiles every kernel, so after it every need is warm.
 * ``first-runs.json`` keeps the last measured duration of each command's cold run, so the
   notice can say how long the next one will take. Before any was measured, the estimates in
-  :data:`ESTIMATED_SECONDS` (cold runs measured with ``benchmarks/bench_coldstart.py``) stand.
+  :data:`ESTIMATED_SECONDS` stand.
 
 The answer is a guess on the safe side: it can call a run cold when only some kernels compile
 (after editing one kernel file), and warm when a render needs a kernel variant the last runs
@@ -32,10 +32,12 @@ from typing import TextIO
 
 from pixelpath import _KERNEL_MODULES
 
-#: Cold-run seconds assumed before one was measured on this machine, from
-#: ``benchmarks/bench_coldstart.py`` on the 2-core development machine (rounded up).
-ESTIMATED_SECONDS = {"demo": 30.0, "render": 25.0, "phong": 5.0, "color": 5.0, "clip": 10.0}
-#: The estimate for ``warmup``, which compiles every kernel.
+#: Cold-run seconds assumed before one was measured on this machine. demo and render: medians of
+#: ``benchmarks/bench_coldstart.py`` on the shared 2-core development machine (28 and 26 s),
+#: rounded up; phong, color and clip compile less and were not measured: rough guesses. The
+#: first cold run measured on a machine replaces them there.
+ESTIMATED_SECONDS = {"demo": 30.0, "render": 30.0, "phong": 5.0, "color": 10.0, "clip": 10.0}
+#: The estimate for ``warmup``, which compiles every kernel: 55 s measured at rest (README).
 WARMUP_ESTIMATE = 60.0
 #: The options of a command that decide which kernels it compiles.
 KERNEL_OPTIONS = ("method", "shading")
