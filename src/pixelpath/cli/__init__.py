@@ -10,7 +10,6 @@ from __future__ import annotations
 import argparse
 import importlib
 import sys
-import time
 from collections.abc import Sequence
 
 from rich.markup import escape
@@ -61,26 +60,13 @@ def main(argv: Sequence[str] | None = None) -> int:
         parser.print_help()
         return 2
     try:
-        return _run_announced(args)
+        return int(args.run(args) or 0)
     except (CommandError, ValueError, TypeError, FileNotFoundError) as exc:
         # escape: messages may hold brackets ("pixelpath[plot]") that are not rich markup.
         error_console().print(f"[bold red]pixelpath {args.command}: error:[/] {escape(str(exc))}")
         return 2
     except KeyboardInterrupt:
         return 130
-
-
-def _run_announced(args: argparse.Namespace) -> int:
-    """Run the command; on a terminal, say first when its kernels must compile (cold cache)."""
-    from pixelpath import _firstrun
-
-    first_run = _firstrun.for_command(args.command, vars(args))
-    _firstrun.announce(first_run)
-    start = time.perf_counter()
-    status = int(args.run(args) or 0)
-    if status == 0 and first_run is not None:
-        first_run.record(time.perf_counter() - start)
-    return status
 
 
 if __name__ == "__main__":  # pragma: no cover
