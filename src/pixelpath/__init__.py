@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any
 
 __version__ = "0.1.0"
 
-_SUBMODULES = ("color", "clip", "lighting", "scene", "raster", "hsr", "io")
+_SUBMODULES = ("color", "clip", "lighting", "scene", "raster", "hsr", "io", "raytrace")
 
 # Public name -> module that defines it, imported on first access.
 _LAZY_NAMES = {
@@ -41,6 +41,8 @@ _KERNEL_MODULES = (
     "pixelpath.clip._kernels",
     "pixelpath.lighting._kernels",
     "pixelpath.raster._kernels",
+    "pixelpath.raytrace._kernels",
+    "pixelpath.raytrace._whitted_kernels",
 )
 
 __all__ = [
@@ -61,13 +63,14 @@ __all__ = [
     "lighting",
     "load_scene",
     "raster",
+    "raytrace",
     "render",
     "scene",
     "warmup",
 ]
 
 if TYPE_CHECKING:
-    from pixelpath import clip, color, hsr, io, lighting, raster, scene
+    from pixelpath import clip, color, hsr, io, lighting, raster, raytrace, scene
     from pixelpath.image import Image
     from pixelpath.renderer import render
     from pixelpath.scene import (
