@@ -6,8 +6,9 @@ Rays are ``R(t) = o + t d`` with t in units of ``|d|``; a hit counts when ``t_mi
   with ``f = o − C``, ``a = d·d`` and ``h = d·f`` (half the notes' b), the discriminant
   ``h² − a c`` is computed as ``a (r² − |f − (h/a) d|²)`` (the squared distance from the centre
   to the line; Ray Tracing Gems, ch. 7), and the roots as ``q/a`` and ``c/q`` with
-  ``q = −(h + sign(h) √disc)``. An origin within a few units in the last place of the surface
-  is *on* it (c = 0): its root t = 0 is no hit, so a ray leaving a surface never hits it again.
+  ``q = −(h + sign(h) √disc)``. An origin within a few units in the last place (of its own
+  and the centre's coordinates) of the surface is *on* it (c = 0): its root t = 0 is no hit,
+  so a ray leaving a surface never hits it again.
 * ``plane_t``: ``t = n·(Q − o) / (n·d)`` (SPEC §9 errata: the notes print P0 twice); inf when
   the ray is parallel to the plane.
 * ``triangle_t``: the watertight test of Woop, Benthin and Wald (JCGT 2013). The ray is sheared
@@ -58,7 +59,10 @@ def sphere_roots(ox, oy, oz, dx, dy, dz, cx, cy, cz, radius):
     ff = fx * fx + fy * fy + fz * fz
     rr = radius * radius
     c = ff - rr
-    if abs(c) <= SURFACE_TOLERANCE * (ff + rr):
+    # o − C is rounded to the ulp of the larger coordinates: |f|² carries an error of about
+    # 2|f|·ulp(size) on top of its own rounding.
+    size = max(max(abs(ox), abs(oy), abs(oz)), max(abs(cx), abs(cy), abs(cz)))
+    if abs(c) <= SURFACE_TOLERANCE * (ff + rr + 4.0 * math.sqrt(ff) * size):
         c = 0.0  # the origin is on the surface: one root is exactly 0
     s = h / a
     lx = fx - s * dx
