@@ -202,10 +202,11 @@ class BVH:
             t.fill(np.inf)
             leaf.fill(-1)
         else:
-            _kernels.intersect_many(
-                self.bounds, self.links, self.corners, self.order, np.zeros(0, dtype=np.bool_),
-                False, o, d, self.depth, t, leaf,
-            )
+            with _kernels.slab_nan_allowed():
+                _kernels.intersect_many(
+                    self.bounds, self.links, self.corners, self.order,
+                    np.zeros(0, dtype=np.bool_), False, o, d, self.depth, t, leaf,
+                )
         triangle = np.where(leaf >= 0, self.order[np.maximum(leaf, 0)], -1)
         return t.reshape(shape), triangle.reshape(shape)
 

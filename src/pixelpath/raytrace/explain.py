@@ -254,6 +254,7 @@ def ray_tree(
     ...
     """
     from pixelpath.raytrace import _whitted_kernels as wk
+    from pixelpath.raytrace._kernels import slab_nan_allowed
     from pixelpath.raytrace.tracer import pack
     from pixelpath.renderer import RenderOptions, _choice, _int_in
 
@@ -272,7 +273,8 @@ def ray_tree(
     world, settings, bvh_depth, _ = pack(scene, scene.camera, options)
     bound = options.samples * (2 ** min(options.max_depth + 1, 20) - 1)
     work = wk.new_work(world, settings, bvh_depth, min(bound, LOG_LIMIT))
-    red, green, blue, depth, obj = wk.trace_pixel(world, settings, x, y, work)
+    with slab_nan_allowed():
+        red, green, blue, depth, obj = wk.trace_pixel(world, settings, x, y, work)
     logged = int(work.logged[0])
     count = min(logged, len(work.log))
     roots = _nodes(scene, world, settings, work.log[:count], work.log_lights[:count])

@@ -270,6 +270,7 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     """
     from pixelpath.raster import _pool
     from pixelpath.raytrace import _whitted_kernels as wk
+    from pixelpath.raytrace._kernels import slab_nan_allowed
 
     world, settings, bvh_depth, triangles = pack(scene, view.camera, options)
     options.progress(1)
@@ -281,8 +282,9 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     rows = spread(view.height)
     for part in np.array_split(rows, TRACE_SLICES):
         if len(part):
-            wk.render_rows(part, world, settings, bvh_depth, view.x0, view.y0, rgb, depth,
-                           object_id, counts)
+            with slab_nan_allowed():
+                wk.render_rows(part, world, settings, bvh_depth, view.x0, view.y0, rgb, depth,
+                               object_id, counts)
         options.progress(1)
     stats = _stats(world, counts.sum(axis=0))
     report = _report(stats, triangles, settings) if options.explain else None
