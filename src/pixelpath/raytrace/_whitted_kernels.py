@@ -149,13 +149,21 @@ def new_work(scene, settings, bvh_depth, log_size):
 
 
 @njit(inline="always")
+def _mul32(x, c):
+    """Return x·c mod 2³² for x, c < 2³², in products below 2⁴⁹ (no int64 overflow)."""
+    low = x * (c & 0xFFFF)
+    high = ((x * (c >> 16)) & 0xFFFF) << 16
+    return (low + high) & 0xFFFFFFFF
+
+
+@njit(inline="always")
 def _hash32(x):
     """Return a 32-bit integer hash of x (Wellons' lowbias32), in int64 arithmetic."""
     x &= 0xFFFFFFFF
     x ^= x >> 16
-    x = (x * 0x7FEB352D) & 0xFFFFFFFF
+    x = _mul32(x, 0x7FEB352D)
     x ^= x >> 15
-    x = (x * 0x846CA68B) & 0xFFFFFFFF
+    x = _mul32(x, 0x846CA68B)
     x ^= x >> 16
     return x
 
