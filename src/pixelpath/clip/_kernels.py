@@ -136,7 +136,8 @@ def clip_stage(src, n, row, dst, crossings):
             if m == 0 or not _same_rows(dst, m, dst, m - 1):
                 m += 1
         if e_in and (m == 0 or not _same_rows(src, i, dst, m - 1)):
-            dst[m] = e
+            for c in range(dst.shape[1]):  # element by element: no shape-error code to compile
+                dst[m, c] = e[c]
             m += 1
         s, s_in = e, e_in
     if m > 1 and _same_rows(dst, m - 1, dst, 0):
