@@ -35,7 +35,7 @@ import math
 
 import numpy as np
 
-from pixelpath._jit import njit, prange, register_warmup
+from pixelpath._jit import njit, register_warmup
 
 EPS = float(np.finfo(np.float64).eps)
 # An origin whose |o − C|² − r² is within this fraction of |o − C|² + r² lies on the sphere.
@@ -484,25 +484,23 @@ def triangle_boxes(tris, boxes, centroids):
             centroids[i, axis] = 0.5 * (low + high)
 
 
-CHUNK = 256  # rays per parallel work item of intersect_many
+@njit
+def intersect_many(bounds, links, tris, source, skip, cull, origins, directions, depth, start,
+                   stop, t_out, index_out):
+    """Write the nearest hit of rays start..stop-1 of (N, 3): t (inf on a miss), leaf index.
 
-
-@njit(parallel=True)
-def intersect_many(bounds, links, tris, source, skip, cull, origins, directions, depth, t_out,
-                   index_out):
-    """Write the nearest hit of each ray (N, 3): t (inf on a miss) and leaf index (or MISS)."""
-    n = origins.shape[0]
-    for chunk in prange((n + CHUNK - 1) // CHUNK):
-        stack = np.empty(depth + 1, dtype=np.intp)
-        stack_t = np.empty(depth + 1)
-        for r in range(chunk * CHUNK, min(n, (chunk + 1) * CHUNK)):
-            t, i, _, _, _, _ = closest_triangle(
-                bounds, links, tris, source, skip, cull, origins[r, 0], origins[r, 1],
-                origins[r, 2], directions[r, 0], directions[r, 1], directions[r, 2], 0.0,
-                math.inf, stack, stack_t,
-            )
-            t_out[r] = t
-            index_out[r] = i
+    Serial: the caller runs disjoint ranges of rays from several threads.
+    """
+    stack = np.empty(depth + 1, dtype=np.intp)
+    stack_t = np.empty(depth + 1)
+    for r in range(start, stop):
+        t, i, _, _, _, _ = closest_triangle(
+            bounds, links, tris, source, skip, cull, origins[r, 0], origins[r, 1],
+            origins[r, 2], directions[r, 0], directions[r, 1], directions[r, 2], 0.0,
+            math.inf, stack, stack_t,
+        )
+        t_out[r] = t
+        index_out[r] = i
 
 
 @njit
@@ -591,7 +589,8 @@ def warmup() -> None:
     t = np.empty(1)
     index = np.empty(1, dtype=np.intp)
     no_skip = np.zeros(0, dtype=np.bool_)
-    intersect_many(bounds, links, tris, source, no_skip, False, rays, down, depth, t, index)
+    intersect_many(bounds, links, tris, source, no_skip, False, rays, down, depth, np.intp(0),
+                   np.intp(1), t, index)
     stack = np.empty(depth + 1, dtype=np.intp)
     any_triangle(bounds, links, tris, np.zeros(1), 0.2, 0.2, 1.0, 0.0, 0.0, -1.0, 0.0, 2.0, stack)
     ray_sphere_many(rays, down, np.zeros((1, 3)), np.ones(1), t)

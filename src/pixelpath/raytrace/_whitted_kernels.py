@@ -35,7 +35,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from pixelpath._jit import njit, prange, register_warmup
+from pixelpath._jit import njit, register_warmup
 from pixelpath.lighting._kernels import light_direction, shade_point
 from pixelpath.raytrace._kernels import (
     MISS,
@@ -551,17 +551,20 @@ def trace_pixel(scene, settings, x, y, work):
     return red * scale, green * scale, blue * scale, depth, obj
 
 
-@njit(parallel=True)
+@njit
 def render_rows(rows, scene, settings, bvh_depth, x0, y0, rgb, depth, object_id, counts):
     """Trace the listed rows of the region whose top-left pixel is (x0, y0) of the image.
 
     Writes rgb (h, w, 3) float32, depth (h, w) float32 (inf where nothing was hit), object_id
-    (h, w) int32 (-1 there) and each row's counters into counts (h, COUNTS).
+    (h, w) int32 (-1 there) and each row's counters into counts (h, COUNTS). Serial: the
+    caller runs disjoint lists of rows from several threads (the kernel releases the GIL).
     """
     width = rgb.shape[1]
-    for k in prange(rows.shape[0]):
+    work = new_work(scene, settings, bvh_depth, np.intp(0))  # no log (not a literal 0)
+    for k in range(rows.shape[0]):
         row = rows[k]
-        work = new_work(scene, settings, bvh_depth, np.intp(0))  # no log (not a literal 0)
+        for c in range(COUNTS):
+            work.counts[c] = 0
         for i in range(width):
             r, g, b, t, obj = trace_pixel(scene, settings, x0 + i, y0 + row, work)
             rgb[row, i, 0] = r

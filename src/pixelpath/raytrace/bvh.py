@@ -4,7 +4,7 @@ The tree is built in compiled code with the binned surface-area heuristic and st
 arrays (see :mod:`pixelpath.raytrace._kernels` for the layout and the traversals). The
 triangles are stored in leaf order, so the ones a leaf holds are next to each other in memory.
 :func:`intersect` is a headless replacement for trimesh's ray module: the nearest triangle of a
-million rays in one call, traced in parallel, with the same watertight test the ray tracer uses.
+million rays in one call, traced on several threads, with the ray tracer's watertight test.
 
 Examples
 --------
@@ -26,6 +26,7 @@ from typing import Any
 import numpy as np
 
 from pixelpath import _validate as v
+from pixelpath._threads import in_threads
 from pixelpath.raster.tessellate import _IdentityCache
 from pixelpath.raytrace.geometry import _broadcast, _nonzero
 from pixelpath.scene import Mesh
@@ -202,11 +203,16 @@ class BVH:
             t.fill(np.inf)
             leaf.fill(-1)
         else:
-            with _kernels.slab_nan_allowed():
-                _kernels.intersect_many(
-                    self.bounds, self.links, self.corners, self.order,
-                    np.zeros(0, dtype=np.bool_), False, o, d, self.depth, t, leaf,
-                )
+            no_skip = np.zeros(0, dtype=np.bool_)
+
+            def trace(start: int, stop: int) -> None:
+                with _kernels.slab_nan_allowed():
+                    _kernels.intersect_many(
+                        self.bounds, self.links, self.corners, self.order, no_skip, False, o, d,
+                        self.depth, start, stop, t, leaf,
+                    )
+
+            in_threads(trace, len(o))
         triangle = np.where(leaf >= 0, self.order[np.maximum(leaf, 0)], -1)
         return t.reshape(shape), triangle.reshape(shape)
 

@@ -44,7 +44,7 @@ from pixelpath.scene import Box, Camera, Mesh, Plane, Scene, Sphere
 __all__ = ["EPSILON_SCALE", "STEPS", "render_frame"]
 
 EPSILON_SCALE = 1e-9
-TRACE_SLICES = 16  # progress steps while tracing (each a parallel call over a share of the rows)
+TRACE_SLICES = 16  # progress steps while tracing (each a share of the rows, run on several threads)
 STEPS = 1 + TRACE_SLICES  # packing the scene (and building the BVH), then tracing
 
 
@@ -268,6 +268,7 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     >>> int(frame.object_id[12, 16]), frame.stats["primary rays"], frame.stats["shadow rays"] > 0
     (0, 768, True)
     """
+    from pixelpath._threads import in_runs
     from pixelpath.raster import _pool
     from pixelpath.raytrace import _whitted_kernels as wk
     from pixelpath.raytrace._kernels import slab_nan_allowed
@@ -280,11 +281,14 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     object_id = _pool.empty(shape, np.int32)
     counts = np.zeros((view.height, wk.COUNTS), dtype=np.int64)
     rows = spread(view.height)
+    def trace(run: np.ndarray) -> None:
+        with slab_nan_allowed():
+            wk.render_rows(run, world, settings, bvh_depth, view.x0, view.y0, rgb, depth,
+                           object_id, counts)
+
     for part in np.array_split(rows, TRACE_SLICES):
         if len(part):
-            with slab_nan_allowed():
-                wk.render_rows(part, world, settings, bvh_depth, view.x0, view.y0, rgb, depth,
-                               object_id, counts)
+            in_runs(trace, part)
         options.progress(1)
     stats = _stats(world, counts.sum(axis=0))
     report = _report(stats, triangles, settings) if options.explain else None
