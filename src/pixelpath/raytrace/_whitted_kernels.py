@@ -208,7 +208,7 @@ def primary_direction(camera, px, py, width, height):
     )
 
 
-@njit
+@njit(inline="always")
 def nearest_hit(scene, ox, oy, oz, dx, dy, dz, t_min, t_max, primary_cull, work):
     """Return (t, primitive kind, index, w1, w2) of the nearest hit; index MISS when none.
 
@@ -250,7 +250,7 @@ def nearest_hit(scene, ox, oy, oz, dx, dy, dz, t_min, t_max, primary_cull, work)
     return best_t, kind, index, w1, w2
 
 
-@njit
+@njit(inline="always")
 def light_let_through(scene, ox, oy, oz, dx, dy, dz, t_max, work):
     """Return (fraction of light let through, blocking object or MISS) along a shadow ray."""
     through = 1.0
@@ -293,7 +293,7 @@ def _unit(x, y, z):
     return x * inv, y * inv, z * inv
 
 
-@njit
+@njit(inline="always")
 def surface(scene, settings, kind, index, w1, w2, px, py, pz):
     """Return (object, geometric normal, shading normal) at a hit; outward unit normals."""
     if kind == SPHERE:
