@@ -784,11 +784,25 @@ def _shade_batch(count, batch, material, surfaces, rgb_row):
             rgb_row[i, channel] = _clamp01(batch.shaded[channel, q])
 
 
-@register_warmup
-def warmup() -> None:
-    """Compile every raster kernel on one small triangle."""
+# Warm-up in three groups that compile independently (pixelpath._warm compiles groups in
+# separate processes at once on a first run): each builds its inputs by hand rather than with
+# another group's kernels. Values do not matter, only types: Numba compiles per type.
+def _tiny_triangle():
+    """One triangle's inputs: clip (3, 4), triangles (1, 3), setup, rows, bins, buffers."""
     clip = np.array([[-0.5, -0.5, 0.0, 1.0], [0.5, -0.5, 0.0, 1.0], [0.0, 0.5, 0.0, 1.0]])
     triangles = np.array([[0, 1, 2]], dtype=np.intp)
+    setup = np.zeros((1, SETUP_FIELDS))
+    rows = np.zeros((1, 2), dtype=np.intp)
+    offsets = np.array([0, 1], dtype=np.intp)
+    items = np.zeros(1, dtype=np.intp)
+    inv_depth = np.empty((8, 8))
+    triangle_id = np.empty((8, 8), dtype=np.int32)
+    return clip, triangles, setup, rows, offsets, items, inv_depth, triangle_id
+
+
+def warm_front() -> None:
+    """Compile the front end's kernels: cull, classify, clip, divide, set up, bin, light."""
+    clip, triangles, setup, rows, _, _, _, _ = _tiny_triangle()
     status = np.empty(1, dtype=np.int8)
     classify_triangles(clip, triangles, np.ones(1, dtype=np.bool_), status)
     normal = np.array([[0.0, 0.0, 1.0]])
@@ -796,38 +810,55 @@ def warmup() -> None:
     clip_triangles(np.zeros((3, 10)), triangles, np.zeros(1, dtype=np.intp))
     screen = np.empty((3, 3))
     clip_to_screen(clip, 8, 8, screen)
-    setup = np.zeros((1, SETUP_FIELDS))
-    rows = np.zeros((1, 2), dtype=np.intp)
     setup_triangles(screen, triangles, 0, 8, setup, rows)
-    offsets, items = bin_triangles(rows, 1, BAND_ROWS, 0)
-    inv_depth = np.empty((8, 8))
-    triangle_id = np.empty((8, 8), dtype=np.int32)
-    bands = np.arange(len(offsets) - 1)
-    rasterize_bands(bands, setup, rows, offsets, items, BAND_ROWS, 0, 0, inv_depth, triangle_id)
-    order = np.zeros(1, dtype=np.intp)
-    paint_bands(bands, setup, rows, offsets, items, order, BAND_ROWS, 0, 0, inv_depth,
-                triangle_id)
-    count_coverage(setup, rows, 0, 0, np.zeros((8, 8), dtype=np.int32))
-    interpolate_values(0, 8, setup, triangles, np.ones((3, 1)), triangle_id, np.zeros((8, 8, 1)))
+    bin_triangles(rows, 1, BAND_ROWS, 0)
     normals = np.zeros((3, 3))
     normals[:, 2] = 1.0
-    material = np.array([[1.0, 1.0, 1.0, 0.1, 0.7, 0.3, 32.0, 0.0]])
-    lights = np.array([[0.0, 0.0, 0.0, 5.0, 1.0, 1.0, 1.0]])
-    positions = clip[:, :3].copy()
     shade_points(
-        0, 3, positions, normals, np.zeros(3, np.bool_), np.zeros(3, np.intp), material, lights,
-        np.full(3, 0.1), np.zeros(3), False, np.empty((3, 3)),
+        0, 3, clip[:, :3].copy(), normals, np.zeros(3, np.bool_), np.zeros(3, np.intp),
+        np.array([[1.0, 1.0, 1.0, 0.1, 0.7, 0.3, 32.0, 0.0]]),
+        np.array([[0.0, 0.0, 0.0, 5.0, 1.0, 1.0, 1.0]]), np.full(3, 0.1), np.zeros(3), False,
+        np.empty((3, 3)),
     )
+
+
+def warm_back() -> None:
+    """Compile the z-buffer's fused pass and the shading pass every other method runs."""
+    clip, triangles, setup, rows, offsets, items, inv_depth, triangle_id = _tiny_triangle()
+    normals = np.zeros((3, 3))
+    normals[:, 2] = 1.0
     surfaces = Surfaces(
-        setup, triangles, positions, normals, np.zeros((3, 6)), np.zeros((1, 2), dtype=np.intp),
-        np.ones((1, 3)), material, lights, np.full(3, 0.1), np.array([0.0, 0.0, 5.0]),
-        np.zeros(3), PHONG, False,
+        setup, triangles, clip[:, :3].copy(), normals, np.zeros((3, 6)),
+        np.zeros((1, 2), dtype=np.intp), np.ones((1, 3)),
+        np.array([[1.0, 1.0, 1.0, 0.1, 0.7, 0.3, 32.0, 0.0]]),
+        np.array([[0.0, 0.0, 0.0, 5.0, 1.0, 1.0, 1.0]]), np.full(3, 0.1),
+        np.array([0.0, 0.0, 5.0]), np.zeros(3), PHONG, False,
     )
     out = Buffers(
         np.zeros((8, 8, 3), dtype=np.float32),
         np.empty((8, 8), dtype=np.float32),
         np.empty((8, 8), dtype=np.int32),
     )
+    bands = np.zeros(1, dtype=np.intp)
     render_bands(bands, setup, rows, offsets, items, BAND_ROWS, 0, 0, inv_depth, triangle_id,
                  surfaces, out)
     shade_bands(bands, BAND_ROWS, 0, 0, inv_depth, triangle_id, surfaces, out)
+
+
+def warm_scan() -> None:
+    """Compile the other scan conversions: depth test only, painting in order, coverage."""
+    _, triangles, setup, rows, offsets, items, inv_depth, triangle_id = _tiny_triangle()
+    bands = np.zeros(1, dtype=np.intp)
+    rasterize_bands(bands, setup, rows, offsets, items, BAND_ROWS, 0, 0, inv_depth, triangle_id)
+    paint_bands(bands, setup, rows, offsets, items, np.zeros(1, dtype=np.intp), BAND_ROWS, 0, 0,
+                inv_depth, triangle_id)
+    count_coverage(setup, rows, 0, 0, np.zeros((8, 8), dtype=np.int32))
+    interpolate_values(0, 8, setup, triangles, np.ones((3, 1)), triangle_id, np.zeros((8, 8, 1)))
+
+
+@register_warmup
+def warmup() -> None:
+    """Compile every raster kernel."""
+    warm_front()
+    warm_back()
+    warm_scan()
