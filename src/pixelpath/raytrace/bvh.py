@@ -56,7 +56,8 @@ class BVH:
     depth : int
         Levels of the tree (1 for a single leaf).
     build_seconds : float
-        Wall-clock time the build took.
+        Wall-clock time the build took (the first build in a process also loads, or compiles,
+        the build kernels).
 
     Examples
     --------
