@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any
 
 __version__ = "0.1.0"
 
-_SUBMODULES = ("color", "clip", "lighting", "scene", "raster", "hsr", "io", "frames")
+_SUBMODULES = ("color", "clip", "lighting", "scene", "raster", "hsr", "io", "frames", "raytrace")
 
 # Public name -> module that defines it, imported on first access.
 _LAZY_NAMES = {
@@ -44,6 +44,8 @@ _KERNEL_MODULES = (
     "pixelpath.raster._kernels",
     "pixelpath.hsr._kernels.scanline",
     "pixelpath.hsr._kernels.warnock",
+    "pixelpath.raytrace._kernels",
+    "pixelpath.raytrace._whitted_kernels",
 )
 
 __all__ = [
@@ -65,6 +67,7 @@ __all__ = [
     "lighting",
     "load_scene",
     "raster",
+    "raytrace",
     "render",
     "render_frames",
     "scene",
@@ -72,7 +75,7 @@ __all__ = [
 ]
 
 if TYPE_CHECKING:
-    from pixelpath import clip, color, frames, hsr, io, lighting, raster, scene
+    from pixelpath import clip, color, frames, hsr, io, lighting, raster, raytrace, scene
     from pixelpath.frames import render_frames
     from pixelpath.image import Image
     from pixelpath.renderer import render

@@ -49,6 +49,10 @@ GROUPS: dict[str, tuple[str, float]] = {
     "lighting": ("pixelpath.lighting._kernels:warmup", 1.5),
     "clip": ("pixelpath.clip._kernels:warmup", 4.0),
     "color": ("pixelpath.color._kernels:warmup", 4.0),
+    "raytrace-bvh": ("pixelpath.raytrace._kernels:warmup", 9.0),
+    # The tracer's warm-up packs a one-pixel scene with the renderer's own code (BVH build,
+    # back-face test), so it also compiles those kernels if no other process did.
+    "raytrace": ("pixelpath.raytrace._whitted_kernels:warmup", 15.0),
 }
 
 # The groups a render with each hidden-surface method calls.
@@ -56,6 +60,7 @@ METHOD_GROUPS: dict[str, tuple[str, ...]] = {
     "zbuffer": ("front", "back"),
     "scanline": ("front", "back", "scanline"),
     "warnock": ("front", "back", "warnock"),
+    "raytrace": ("lighting", "raytrace-bvh", "raytrace"),
 }
 
 
