@@ -126,4 +126,4 @@ def warmup() -> int:
 
     for module in _KERNEL_MODULES:
         importlib.import_module(module)
-    return run_warmups()
+    return len(run_warmups())

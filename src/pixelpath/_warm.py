@@ -90,10 +90,12 @@ def _stamp() -> str:
     return digest.hexdigest()[:16]
 
 
-def _marker_folder() -> Path:
-    from pixelpath._jit import cache_dir
+def _marker_folder() -> Path | None:
+    """Return the markers' folder, in the folder the kernels are cached in; None without one."""
+    from pixelpath._cache import writable_cache_dir
 
-    return cache_dir() / "warm" / _stamp()
+    root = writable_cache_dir()
+    return None if root is None else root / "warm" / _stamp()
 
 
 def _jit_enabled() -> bool:
@@ -105,7 +107,9 @@ def _jit_enabled() -> bool:
 def cold_groups(groups: Iterable[str]) -> list[str]:
     """Return those of ``groups`` not yet compiled into the disk cache (in their order).
 
-    Empty when Numba's JIT is disabled (nothing to compile).
+    Empty when Numba's JIT is disabled (nothing to compile) and when no cache folder can be
+    written (worker processes could not hand their code over: each kernel compiles on first
+    use, as without this module).
 
     Examples
     --------
@@ -113,13 +117,15 @@ def cold_groups(groups: Iterable[str]) -> list[str]:
     >>> set(cold_groups(["front", "back"])) <= {"front", "back"}
     True
     """
-    if not _jit_enabled():
+    folder = _marker_folder() if _jit_enabled() else None
+    if folder is None:
         return []
-    folder = _marker_folder()
     return [group for group in groups if not (folder / group).is_file()]
 
 
-def _recorded_seconds(group: str, folder: Path) -> float:
+def _recorded_seconds(group: str, folder: Path | None) -> float:
+    if folder is None:
+        return GROUPS[group][1]
     try:
         return float((folder / group).read_text())
     except (OSError, ValueError):
@@ -149,7 +155,7 @@ def _cores() -> int:
         return os.cpu_count() or 1
 
 
-def _share_out(groups: Sequence[str], processes: int, folder: Path) -> list[list[str]]:
+def _share_out(groups: Sequence[str], processes: int, folder: Path | None) -> list[list[str]]:
     """Split ``groups`` into at most ``processes`` shares of about equal compile time."""
     shares: list[list[str]] = [[] for _ in range(max(1, min(processes, len(groups))))]
     loads = [0.0] * len(shares)
@@ -200,6 +206,8 @@ def compile_groups(groups: Sequence[str], processes: int | None = None) -> dict[
     if unknown:
         raise ValueError(f"unknown kernel groups {unknown}; known: {sorted(GROUPS)}")
     folder = _marker_folder()
+    if folder is None:  # no disk cache: what workers compiled would not reach this process
+        return _compile_here(groups)
     shares = _share_out(list(groups), processes or _cores(), folder)
     if not shares:
         return {}
