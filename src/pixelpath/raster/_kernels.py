@@ -285,6 +285,9 @@ def _above(xa, ya, xb, yb):
     return ya < yb or (ya == yb and xa < xb)
 
 
+MIN_AREA2 = float(np.finfo(np.float64).tiny)  # smallest normal: its inverse (4.5e307) is finite
+
+
 @njit
 def setup_triangles(screen, triangles, row_first, row_stop, setup, rows):
     """Fill the set-up record (T, SETUP_FIELDS) and the covered rows [first, stop) (T, 2).
@@ -302,8 +305,10 @@ def setup_triangles(screen, triangles, row_first, row_stop, setup, rows):
         area2 = (xb - xa) * (yc - ya) - (xc - xa) * (yb - ya)
         rows[t, 0] = 0
         rows[t, 1] = 0
-        if not (math.isfinite(area2) and area2 != 0.0):
-            continue  # degenerate or non-finite: covers no pixel
+        # Degenerate, non-finite, or so thin that 1/area overflows (a subnormal area): no
+        # pixel. Tested on |area| rather than on 1/area, which would warn without the JIT.
+        if not (math.isfinite(area2) and abs(area2) >= MIN_AREA2):
+            continue
         inv = 1.0 / area2
         record = setup[t]
         _store3(record, S1_PLANE, _plane(xa, ya, 0.0, xb, yb, 1.0, xc, yc, 0.0, inv))

@@ -44,6 +44,7 @@ from pixelpath.raytrace._kernels import (
     plane_t,
     reflect_direction,
     refract_direction,
+    slab_nan_allowed,
     sphere_roots,
     sphere_t,
 )
@@ -586,7 +587,8 @@ def warmup() -> None:
     depth = np.empty((1, 1), dtype=np.float32)
     ids = np.empty((1, 1), dtype=np.int32)
     counts = np.empty((1, COUNTS), dtype=np.int64)
-    render_rows(np.zeros(1, dtype=np.intp), scene, settings, bvh_depth, 0, 0, rgb, depth, ids,
-                counts)
-    work = new_work(scene, settings, bvh_depth, 8)
-    trace_pixel(scene, settings, 0, 0, work)
+    with slab_nan_allowed():
+        render_rows(np.zeros(1, dtype=np.intp), scene, settings, bvh_depth, 0, 0, rgb, depth,
+                    ids, counts)
+        work = new_work(scene, settings, bvh_depth, 8)
+        trace_pixel(scene, settings, 0, 0, work)
