@@ -12,14 +12,14 @@ import numba
 import pytest
 
 from pixelpath import _warm
-from pixelpath.renderer import METHOD_NAMES
+from pixelpath.renderer import METHOD_NAMES, STYLES
 
 needs_jit = pytest.mark.skipif(numba.config.DISABLE_JIT, reason="needs Numba's JIT")
 
 
 def test_every_method_groups_name_known_groups():
     for method, groups in _warm.METHOD_GROUPS.items():
-        assert method in METHOD_NAMES
+        assert method in METHOD_NAMES or method in STYLES
         assert set(groups) <= set(_warm.GROUPS)
 
 
@@ -92,6 +92,9 @@ _RENDER_EVERY_METHOD = textwrap.dedent(
     scene = load_scene(bundled_scenes()["showcase"])
     scene = dataclasses.replace(scene, camera=scene.camera.with_size(64, 40))
     for method in sys.argv[1:]:
+        if method in ("wireframe", "hidden-line"):
+            pp.render(scene, style=method)
+            continue
         for shading in ("flat", "gouraud", "phong"):
             if (method, shading) != ("raytrace", "gouraud"):  # a ray tracer has no Gouraud
                 pp.render(scene, method=method, shading=shading)

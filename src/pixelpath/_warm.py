@@ -53,19 +53,24 @@ GROUPS: dict[str, tuple[str, float]] = {
     # The tracer's warm-up packs a one-pixel scene with the renderer's own code (BVH build,
     # back-face test), so it also compiles those kernels if no other process did.
     "raytrace": ("pixelpath.raytrace._whitted_kernels:warmup", 15.0),
+    "octree": ("pixelpath.hsr._kernels.octree:warmup", 5.0),
+    "lines": ("pixelpath.raster._line_kernels:warmup", 3.0),
 }
 
-# The groups a render with each hidden-surface method calls.
+# The groups a render with each hidden-surface method calls, and those a drawing style adds.
 METHOD_GROUPS: dict[str, tuple[str, ...]] = {
     "zbuffer": ("front", "back"),
     "scanline": ("front", "back", "scanline"),
     "warnock": ("front", "back", "warnock"),
+    "octree": ("front", "back", "octree"),
     "raytrace": ("lighting", "raytrace-bvh", "raytrace"),
+    "wireframe": ("lines",),
+    "hidden-line": ("lines",),
 }
 
 
 def groups_for(methods: Iterable[str]) -> tuple[str, ...]:
-    """Return the groups that renders with ``methods`` need, each once, in a stable order.
+    """Return the groups renders with ``methods`` (or drawing styles) need, each once, in order.
 
     Examples
     --------

@@ -147,7 +147,7 @@ def render_to_file(
         steps = render_steps(args.method)
     except NotImplementedError as exc:
         raise CommandError(str(exc)) from None
-    compile_kernels([args.method], quiet=args.quiet)
+    compile_kernels([args.method, getattr(args, "style", "filled")], quiet=args.quiet)
     start = time.perf_counter()
     explain = getattr(args, "explain", False)
     with progress(f"rendering {label}", steps, quiet=args.quiet) as advance:
