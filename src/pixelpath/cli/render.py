@@ -8,6 +8,7 @@ from pathlib import Path
 from typing import Any
 
 from pixelpath.cli._common import CommandError, add_command, console, progress
+from pixelpath.cli._frames import add_frame_options, run_frames, wants_frames
 from pixelpath.raster.shading import SHADINGS
 from pixelpath.renderer import METHOD_NAMES, STYLES
 
@@ -30,6 +31,10 @@ def register(subparsers: Any) -> None:
             "--size 1024x768",
             "pixelpath render showcase -o flat.png --shading flat --ssaa 2",
             "pixelpath render showcase -o lines.png --style hidden-line --method bsp --explain",
+            'pixelpath render showcase --frames 0:120 -o "spin/f_{frame:03d}.png"',
+            "pixelpath render scene.toml -o poster.png --size 8192x8192 --tiles 4x4 --workers 2",
+            'pixelpath render scene.toml --frames all -o "out/f_{frame:04d}.png" '
+            "--scheduler tcp://host:8786 --resume",
         ],
         run=run,
     )
@@ -56,6 +61,7 @@ def register(subparsers: Any) -> None:
         help="print what the method did: pipeline counts, then the method's own steps",
     )
     parser.add_argument("-q", "--quiet", action="store_true", help="no progress bar or summary")
+    add_frame_options(parser)
 
 
 def parse_size(text: str) -> tuple[int, int]:
@@ -143,6 +149,8 @@ def render_to_file(
 def run(args: argparse.Namespace) -> int:
     """Render the scene and write the image."""
     scene = load_scene_sized(args.scene, args.size)
+    if wants_frames(args):
+        return run_frames(args, scene)
     output = Path(args.output)
     image, report, elapsed = render_to_file(scene, output, args, Path(args.scene).stem)
     if report is not None:

@@ -463,6 +463,32 @@ def scanline_span(record, y, col_first, col_stop):
     return int(first), int(stop)
 
 
+# How much nearer (larger 1/w) one surface must be than another, relative to the size of the
+# terms its value is computed from, before a method decides a whole span or area from its ends
+# or corners (scan-line, Warnock). Rounding moves a computed 1/w by a few units in the last place
+# of those terms (about 1e-16 of them); with a margin far above that, the surface found nearer
+# at the ends is nearer, as the z-buffer computes it, at every pixel between them. Closer calls
+# are settled pixel by pixel with the z-buffer's own test (:func:`wins_depth_test`).
+NEARER_MARGIN = 1e-12
+
+
+@njit(inline="always")
+def clearly_nearer(value, other, scale):
+    """Whether 1/w ``value`` beats ``other`` by more than rounding of terms of size ``scale``."""
+    return value - other > NEARER_MARGIN * scale
+
+
+@njit(inline="always")
+def wins_depth_test(value, t, best_value, best_t):
+    """Return whether triangle t, at 1/w ``value``, replaces the best: the z-buffer's test.
+
+    Larger 1/w is nearer; a tie goes to the lower triangle index (the z-buffer visits triangles
+    in ascending order and replaces only on strictly nearer). Start from (0.0, -1): nothing at
+    1/w <= 0 is drawn, as in the z-buffer, whose buffer starts at 0.
+    """
+    return value > best_value or (value == best_value and t < best_t)
+
+
 @njit
 def bin_triangles(rows, n_bands, band_rows, row_first):
     """Return the triangles of each band of rows as CSR: offsets (n_bands + 1,), items.
