@@ -74,7 +74,7 @@ def test_render_a_bundled_scene_by_name(tmp_path):
     [
         (["--size", "big"], "--size"),
         (["--size", "0x10"], "--size"),
-        (["--method", "painter"], "not implemented"),
+        (["--method", "octree"], "not implemented"),
         (["--ssaa", "0"], "ssaa"),
     ],
 )
