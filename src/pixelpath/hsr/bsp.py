@@ -327,6 +327,9 @@ def _build(scene: Scene) -> BSPTree:
      item_count, items, node_plane) = kernels.build(
         rows, triangles, planes, infinite, _relation(infinite, eps), eps, stats
     )
+    # Keep only the fragments the nodes hold (a triangle that was cut is not drawn itself).
+    fragments, source = fragments[items], source[items]
+    items = np.arange(len(items), dtype=np.intp)
     polygon = geometry.triangle_polygon[finite[source]]
     fragment_object = geometry.polygon_object[polygon]
     polygon_start = np.searchsorted(geometry.polygon_object, np.arange(len(scene.objects)))
