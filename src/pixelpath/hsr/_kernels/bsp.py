@@ -567,7 +567,10 @@ def warmup() -> None:
     )
     rows = np.hstack((vertices, np.zeros((6, 3))))
     triangles = np.array([[0, 1, 2], [3, 4, 5]], dtype=np.intp)
-    planes = np.array([[0.0, 0.0, 1.0, 1.0], [-0.2, -0.8, 0.56, 0.97]])
+    # The triangles' own planes: a plane its polygon does not lie in would never empty a run.
+    normals = np.cross(vertices[[1, 4]] - vertices[[0, 3]], vertices[[2, 5]] - vertices[[0, 3]])
+    normals /= np.sqrt((normals * normals).sum(axis=1)).reshape(2, 1)
+    planes = np.hstack((normals, -(normals * vertices[[0, 3]]).sum(axis=1).reshape(2, 1)))
     floor = np.array([[0.0, 1.0, 0.0, 0.0]])
     stats = np.zeros(STATS, dtype=np.int64)
     built = build(rows, triangles, planes, floor, np.zeros((1, 1), dtype=np.int8), 1e-9, stats)

@@ -462,6 +462,8 @@ def warmup() -> None:
     for v in range(6):
         screen_point(attrs, v, 8, 8, screen, v)
     triangles = np.array([[0, 1, 2], [3, 4, 5]], dtype=np.intp)
-    planes = np.array([[0.0, 0.0, 1.0, 3.0, 1.0], [0.0, -0.6, 0.8, 1.6, 1.0]])
+    planes = np.empty((2, PLANE_COLUMNS))
+    triangle_planes(np.array(points), triangles, np.arange(2), np.zeros(3), planes)
+    planes[:, 4] = np.where(planes[:, 4] < 0, -1.0, 1.0)
     depth_sort(attrs, screen, 6, triangles, planes, 8, 8, 1e-9, 64,
                np.zeros(COUNTS, dtype=np.int64))
