@@ -192,3 +192,19 @@ def test_bad_arguments():
         render_frame(scene, view, RenderOptions(), tree=other)
     with pytest.raises(ValueError, match="eye"):
         build_tree(scene).order((0, 0))
+
+
+def test_the_build_ends_when_rounding_puts_a_polygon_off_its_own_plane():
+    # The splitter's triangle stays at its node even where its given plane misses its
+    # corners (here by far more than rounding): each node takes at least that polygon.
+    from pixelpath.hsr._kernels import bsp as kernels
+
+    rows = np.hstack([np.array([*FLAT, *CROSSING], dtype=float), np.zeros((6, 3))])
+    triangles = np.array([[0, 1, 2], [3, 4, 5]], dtype=np.intp)
+    planes = np.array([[0.0, 0.0, 1.0, 1.0], [-0.2, -0.8, 0.56, 0.97]])  # the second is off
+    stats = np.zeros(kernels.STATS, dtype=np.int64)
+    built = kernels.build(rows, triangles, planes, np.zeros((0, 4)),
+                          np.zeros((0, 0), dtype=np.int8), 1e-9, stats)
+    fragments, items = built[4], built[10]
+    assert len(items) == len(fragments) - stats[kernels.SPLITS]  # every live piece is held
+    assert stats[kernels.NODES] <= 3

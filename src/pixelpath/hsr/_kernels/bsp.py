@@ -130,24 +130,28 @@ def _score(vertices, fragments, work, start, stop, step, plane, eps):
 
 @njit
 def _choose_splitter(vertices, fragments, source, planes, work, start, stop, eps, best, scratch):
-    """Write the best splitting plane for the run into ``best``; return whether it is free.
+    """Write the best splitting plane for the run into ``best``; return whose plane it is.
 
-    ``scratch`` is (3, 4) work space: the run's bounding box and a candidate plane.
+    Returns the input triangle (``source``) whose plane was chosen, or -1 for a free
+    (axis-aligned) plane. ``scratch`` is (3, 4) work space: the run's bounding box and a
+    candidate plane.
     """
     m = stop - start
     step = max(1, m // SAMPLE)
     tried = min(CANDIDATES, m)
     best_score = -1
+    chosen = -1
     for c in range(tried):
-        plane = planes[source[work[start + (c * m) // tried]]]
+        owner = source[work[start + (c * m) // tried]]
+        plane = planes[owner]
         score, _, _ = _score(vertices, fragments, work, start, stop, step, plane, eps)
         if best_score < 0 or score < best_score:
             best_score = score
+            chosen = owner
             for k in range(4):
                 best[k] = plane[k]
     if m < FREE_PLANES_FROM:
-        return False
-    free = False
+        return chosen
     low, high, candidate = scratch[0], scratch[1], scratch[2]
     for axis in range(3):
         low[axis] = np.inf
@@ -165,10 +169,10 @@ def _choose_splitter(vertices, fragments, source, planes, work, start, stop, eps
         score, front, back = _score(vertices, fragments, work, start, stop, step, candidate, eps)
         if front > 0 and back > 0 and score < best_score:
             best_score = score
-            free = True
+            chosen = -1
             for k in range(4):
                 best[k] = candidate[k]
-    return free
+    return chosen
 
 
 @njit(inline="always")
@@ -303,17 +307,17 @@ def build(vertices, triangles, planes, infinite_planes, relation, eps, stats):
         depth = depths[n_tasks]
         stats[DEPTH] = max(stats[DEPTH], depth)
         j = _next_infinite(level, parent[node], side[node], infinite, parent, side, relation)
+        owner = -1  # the input triangle whose plane splits here, if any
         if j < n_planes:
             for k in range(4):
                 plane[k] = infinite_planes[j, k]
             infinite[node] = j
             level = j + 1
         else:
-            stats[FREE] += int(
-                _choose_splitter(
-                    vertices, fragments, source, planes, work, start, stop, eps, plane, scratch
-                )
+            owner = _choose_splitter(
+                vertices, fragments, source, planes, work, start, stop, eps, plane, scratch
             )
+            stats[FREE] += int(owner < 0)
             level = n_planes
         for k in range(4):
             node_planes[node, k] = plane[k]
@@ -328,7 +332,10 @@ def build(vertices, triangles, planes, infinite_planes, relation, eps, stats):
         first[node] = n_items
         for i in range(m):
             f = run[i]
-            where = _classify(vertices, fragments[f], plane, eps)
+            # The splitter's own triangle (and its pieces) stays here even where rounding puts
+            # a corner off its plane: a node split by a polygon's plane then always takes that
+            # polygon from its run, so the build ends.
+            where = 0 if source[f] == owner else _classify(vertices, fragments[f], plane, eps)
             if where == 0:
                 items, n_items = _push(items, n_items, f)
             elif where < 0:
