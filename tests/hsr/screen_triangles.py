@@ -45,6 +45,6 @@ def zbuffer(prepared, view: View) -> pipeline.Visibility:
     offsets, items = pipeline.binned(prepared, view)
     inv_depth = np.empty((view.height, view.width))
     triangle_id = np.empty((view.height, view.width), dtype=np.int32)
-    _kernels.rasterize_bands(prepared.setup, prepared.rows, offsets, items, _kernels.BAND_ROWS,
-                             view.x0, view.y0, inv_depth, triangle_id)
+    _kernels.rasterize_bands(np.arange(len(offsets) - 1), prepared.setup, prepared.rows, offsets,
+                             items, _kernels.BAND_ROWS, view.x0, view.y0, inv_depth, triangle_id)
     return pipeline.Visibility(inv_depth, triangle_id)

@@ -7,7 +7,7 @@ import time
 from pathlib import Path
 from typing import Any
 
-from pixelpath.cli._common import CommandError, add_command, console
+from pixelpath.cli._common import CommandError, add_command, compile_kernels, console
 from pixelpath.raster.shading import SHADINGS
 
 
@@ -52,6 +52,7 @@ def run(args: argparse.Namespace) -> int:
         method="zbuffer", ssaa=args.ssaa, no_cull=False, blinn=False, gamma=None, quiet=args.quiet
     )
     start = time.perf_counter()
+    compile_kernels([options.method], quiet=args.quiet)
     for name, path in scenes.items():
         scene = load_scene_sized(str(path), args.size)
         for shading in shadings:

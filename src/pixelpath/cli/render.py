@@ -7,7 +7,13 @@ import time
 from pathlib import Path
 from typing import Any
 
-from pixelpath.cli._common import CommandError, add_command, console, progress
+from pixelpath.cli._common import (
+    CommandError,
+    add_command,
+    compile_kernels,
+    console,
+    progress,
+)
 from pixelpath.cli._frames import add_frame_options, run_frames, wants_frames
 from pixelpath.raster.shading import SHADINGS
 from pixelpath.renderer import METHOD_NAMES, STYLES
@@ -123,11 +129,12 @@ def render_to_file(
 
     if not output.parent.is_dir():
         raise CommandError(f"output directory does not exist: {output.parent}")
-    start = time.perf_counter()
     try:
         steps = render_steps(args.method)
     except NotImplementedError as exc:
         raise CommandError(str(exc)) from None
+    compile_kernels([args.method], quiet=args.quiet)
+    start = time.perf_counter()
     explain = getattr(args, "explain", False)
     with progress(f"rendering {label}", steps, quiet=args.quiet) as advance:
         result = render(

@@ -26,15 +26,14 @@ and BSP): each triangle over the ones before it, with no depth test.
 
 from __future__ import annotations
 
-import concurrent.futures
 import dataclasses
 import itertools
 import threading
-from collections.abc import Callable
 from typing import NamedTuple
 
 import numpy as np
 
+from pixelpath._threads import in_runs, in_threads
 from pixelpath.renderer import Frame, RenderOptions, View
 from pixelpath.scene import Scene
 
@@ -44,6 +43,7 @@ __all__ = [
     "Lighting",
     "Prepared",
     "Visibility",
+    "in_runs",
     "in_threads",
     "paint",
     "prepare",
@@ -288,41 +288,15 @@ def paint(prepared: Prepared, view: View, order: np.ndarray) -> Visibility:
     visibility = visibility_buffers(view)
     order = np.ascontiguousarray(order, dtype=np.intp)
     offsets, items = binned(prepared, view, order)
-    _kernels.paint_bands(
-        prepared.setup, prepared.rows, offsets, items, order, _kernels.BAND_ROWS, view.x0,
-        view.y0, *visibility,
+    _, band_list = bands(view)
+    in_runs(
+        lambda run: _kernels.paint_bands(
+            run, prepared.setup, prepared.rows, offsets, items, order, _kernels.BAND_ROWS,
+            view.x0, view.y0, *visibility,
+        ),
+        band_list,
     )
     return visibility
-
-
-RUNS_PER_THREAD = 4  # in_threads() hands out this many runs per thread: uneven work evens out
-_EXECUTORS: dict[int, concurrent.futures.ThreadPoolExecutor] = {}
-_EXECUTORS_LOCK = threading.Lock()
-
-
-def in_threads(work: Callable[[int, int], object], count: int) -> None:
-    """Call ``work(start, stop)`` on runs of ``range(count)`` from several threads at once.
-
-    For kernels compiled without ``parallel=True``, which is cheaper to compile (seconds per
-    kernel on a cold start): they release the GIL (``nogil``), so the runs go on in
-    parallel. As many threads as Numba's (``numba.get_num_threads()``), each taking runs in
-    turn as it finishes one. The runs must write disjoint parts of the output.
-    """
-    import numba
-
-    threads = numba.get_num_threads()
-    if threads == 1 or count <= 1:
-        work(0, count)
-        return
-    runs = min(count, RUNS_PER_THREAD * threads)
-    bounds = np.linspace(0, count, runs + 1).astype(int).tolist()
-    with _EXECUTORS_LOCK:
-        executor = _EXECUTORS.get(threads)
-        if executor is None:
-            executor = concurrent.futures.ThreadPoolExecutor(threads, "pixelpath")
-            _EXECUTORS[threads] = executor
-    for _ in executor.map(work, bounds[:-1], bounds[1:]):
-        pass  # re-raises a run's exception here
 
 
 _SCRATCH = threading.local()
@@ -394,11 +368,13 @@ def shade(
     kernel_surfaces = surfaces(prepared, scene)
     _, order = bands(view)
     runs = slices(view)
-    for start, stop in runs:
+    def shade_run(run: np.ndarray) -> None:
         _kernels.shade_bands(
-            order[start:stop], _kernels.BAND_ROWS, view.x0, view.y0, *visibility,
-            kernel_surfaces, out,
+            run, _kernels.BAND_ROWS, view.x0, view.y0, *visibility, kernel_surfaces, out
         )
+
+    for start, stop in runs:
+        in_runs(shade_run, order[start:stop])
         options.progress(SHADE_SLICES // len(runs))
     return Frame(out.rgb, out.depth, out.object_id, prepared.stats, report)
 
