@@ -46,6 +46,8 @@ GROUPS: dict[str, tuple[str, float]] = {
     "scan": ("pixelpath.raster._kernels:warm_scan", 1.5),
     "scanline": ("pixelpath.hsr._kernels.scanline:warmup", 4.5),
     "warnock": ("pixelpath.hsr._kernels.warnock:warmup", 5.0),
+    "painter": ("pixelpath.hsr._kernels.painter:warmup", 9.5),
+    "bsp": ("pixelpath.hsr._kernels.bsp:warmup", 13.0),
     "lighting": ("pixelpath.lighting._kernels:warmup", 1.5),
     "clip": ("pixelpath.clip._kernels:warmup", 4.0),
     "color": ("pixelpath.color._kernels:warmup", 4.0),
@@ -56,6 +58,8 @@ METHOD_GROUPS: dict[str, tuple[str, ...]] = {
     "zbuffer": ("front", "back"),
     "scanline": ("front", "back", "scanline"),
     "warnock": ("front", "back", "warnock"),
+    "painter": ("front", "back", "scan", "painter"),
+    "bsp": ("front", "back", "scan", "bsp"),
 }
 
 

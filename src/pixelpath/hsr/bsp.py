@@ -211,6 +211,7 @@ def render_frame(
     ((24, 32, 3), 0)
     """
     from pixelpath.hsr._kernels import bsp as kernels
+    from pixelpath.raster._arrays import kernel_array
     from pixelpath.raster.tessellate import scene_geometry
 
     if tree is None:
@@ -224,7 +225,7 @@ def render_frame(
     drawing = _drawing(tree, scene_geometry(scene, view.camera))
     prepared = pipeline.prepare(scene, view, options, drawing.geometry, drawing.blends)
     sequence, visited = tree._traverse(
-        view.camera.eye, drawing.extra_first, drawing.extra_count, drawing.extra_items
+        kernel_array(view.camera.eye), drawing.extra_first, drawing.extra_count, drawing.extra_items
     )
     order = np.empty(len(prepared.triangles), dtype=np.intp)
     drawn = kernels.draw_order(sequence, prepared.source, len(drawing.geometry.triangles), order)

@@ -153,11 +153,12 @@ def _triangle_planes(prepared: pipeline.Prepared, camera: Camera) -> tuple[np.nd
     scene triangle share its plane exactly, so they classify alike.
     """
     from pixelpath.hsr._kernels import painter as kernels
+    from pixelpath.raster._arrays import kernel_array
 
     geometry = prepared.geometry
     planes = np.empty((len(prepared.source), kernels.PLANE_COLUMNS))
     kernels.triangle_planes(geometry.vertices, geometry.triangles, prepared.source,
-                            camera.eye, planes)
+                            kernel_array(camera.eye), planes)
     reach = np.abs(prepared.positions - camera.eye).max(initial=1.0)
     eps = PLANE_TOLERANCE * float(reach)
     eye_side = planes[:, 4]
