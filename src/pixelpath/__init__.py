@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any
 
 __version__ = "0.1.0"
 
-_SUBMODULES = ("color", "clip", "lighting", "scene", "raster", "hsr", "io", "frames")
+_SUBMODULES = ("color", "clip", "lighting", "scene", "raster", "hsr", "io", "frames", "raytrace")
 
 # Public name -> module that defines it, imported on first access.
 _LAZY_NAMES = {
@@ -46,6 +46,8 @@ _KERNEL_MODULES = (
     "pixelpath.hsr._kernels.painter",
     "pixelpath.hsr._kernels.bsp",
     "pixelpath.hsr._kernels.warnock",
+    "pixelpath.raytrace._kernels",
+    "pixelpath.raytrace._whitted_kernels",
 )
 
 __all__ = [
@@ -67,6 +69,7 @@ __all__ = [
     "lighting",
     "load_scene",
     "raster",
+    "raytrace",
     "render",
     "render_frames",
     "scene",
@@ -74,7 +77,7 @@ __all__ = [
 ]
 
 if TYPE_CHECKING:
-    from pixelpath import clip, color, frames, hsr, io, lighting, raster, scene
+    from pixelpath import clip, color, frames, hsr, io, lighting, raster, raytrace, scene
     from pixelpath.frames import render_frames
     from pixelpath.image import Image
     from pixelpath.renderer import render
@@ -125,4 +128,4 @@ def warmup() -> int:
 
     for module in _KERNEL_MODULES:
         importlib.import_module(module)
-    return run_warmups()
+    return len(run_warmups())

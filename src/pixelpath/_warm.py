@@ -51,6 +51,10 @@ GROUPS: dict[str, tuple[str, float]] = {
     "lighting": ("pixelpath.lighting._kernels:warmup", 1.5),
     "clip": ("pixelpath.clip._kernels:warmup", 4.0),
     "color": ("pixelpath.color._kernels:warmup", 4.0),
+    "raytrace-bvh": ("pixelpath.raytrace._kernels:warmup", 9.0),
+    # The tracer's warm-up packs a one-pixel scene with the renderer's own code (BVH build,
+    # back-face test), so it also compiles those kernels if no other process did.
+    "raytrace": ("pixelpath.raytrace._whitted_kernels:warmup", 15.0),
 }
 
 # The groups a render with each hidden-surface method calls.
@@ -60,6 +64,7 @@ METHOD_GROUPS: dict[str, tuple[str, ...]] = {
     "warnock": ("front", "back", "warnock"),
     "painter": ("front", "back", "scan", "painter"),
     "bsp": ("front", "back", "scan", "bsp"),
+    "raytrace": ("lighting", "raytrace-bvh", "raytrace"),
 }
 
 
@@ -89,10 +94,12 @@ def _stamp() -> str:
     return digest.hexdigest()[:16]
 
 
-def _marker_folder() -> Path:
-    from pixelpath._jit import cache_dir
+def _marker_folder() -> Path | None:
+    """Return the markers' folder, in the folder the kernels are cached in; None without one."""
+    from pixelpath._cache import writable_cache_dir
 
-    return cache_dir() / "warm" / _stamp()
+    root = writable_cache_dir()
+    return None if root is None else root / "warm" / _stamp()
 
 
 def _jit_enabled() -> bool:
@@ -104,7 +111,9 @@ def _jit_enabled() -> bool:
 def cold_groups(groups: Iterable[str]) -> list[str]:
     """Return those of ``groups`` not yet compiled into the disk cache (in their order).
 
-    Empty when Numba's JIT is disabled (nothing to compile).
+    Empty when Numba's JIT is disabled (nothing to compile) and when no cache folder can be
+    written (worker processes could not hand their code over: each kernel compiles on first
+    use, as without this module).
 
     Examples
     --------
@@ -112,13 +121,15 @@ def cold_groups(groups: Iterable[str]) -> list[str]:
     >>> set(cold_groups(["front", "back"])) <= {"front", "back"}
     True
     """
-    if not _jit_enabled():
+    folder = _marker_folder() if _jit_enabled() else None
+    if folder is None:
         return []
-    folder = _marker_folder()
     return [group for group in groups if not (folder / group).is_file()]
 
 
-def _recorded_seconds(group: str, folder: Path) -> float:
+def _recorded_seconds(group: str, folder: Path | None) -> float:
+    if folder is None:
+        return GROUPS[group][1]
     try:
         return float((folder / group).read_text())
     except (OSError, ValueError):
@@ -148,7 +159,7 @@ def _cores() -> int:
         return os.cpu_count() or 1
 
 
-def _share_out(groups: Sequence[str], processes: int, folder: Path) -> list[list[str]]:
+def _share_out(groups: Sequence[str], processes: int, folder: Path | None) -> list[list[str]]:
     """Split ``groups`` into at most ``processes`` shares of about equal compile time."""
     shares: list[list[str]] = [[] for _ in range(max(1, min(processes, len(groups))))]
     loads = [0.0] * len(shares)
@@ -199,6 +210,8 @@ def compile_groups(groups: Sequence[str], processes: int | None = None) -> dict[
     if unknown:
         raise ValueError(f"unknown kernel groups {unknown}; known: {sorted(GROUPS)}")
     folder = _marker_folder()
+    if folder is None:  # no disk cache: what workers compiled would not reach this process
+        return _compile_here(groups)
     shares = _share_out(list(groups), processes or _cores(), folder)
     if not shares:
         return {}

@@ -14,7 +14,7 @@ from pixelpath.frames import frame_is_complete, plan_frames, render_frame
 
 # Every method the renderer implements today; each one that lands joins this list (a method
 # that is not implemented must fail here, not be skipped).
-METHODS = ["zbuffer"]
+METHODS = ["zbuffer", "raytrace"]
 
 
 def test_frames_equal_render_of_each_frame():

@@ -119,7 +119,7 @@ def render_options(args: argparse.Namespace) -> dict[str, Any]:
         "blinn": args.blinn,
         "style": args.style,
     }
-    for name in ("max_depth", "samples"):  # the ray tracer's options, when the command has them
+    for name in ("max_depth", "samples", "fresnel"):  # the ray tracer's, when the command has them
         if getattr(args, name, None) is not None:
             options[name] = getattr(args, name)
     return options

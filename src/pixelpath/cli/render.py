@@ -24,7 +24,7 @@ def register(subparsers: Any) -> None:
     parser = add_command(
         subparsers,
         "render",
-        summary="render a TOML scene file to an image with any hidden-surface method",
+        summary="render a TOML scene file to an image (any hidden-surface method, ray tracing)",
         description=(
             "Render a scene file with a hidden-surface method and a shading mode and write the "
             "image (PNG, JPEG, ... by extension; written atomically). SCENE may also name a "
@@ -37,6 +37,7 @@ def register(subparsers: Any) -> None:
             "--size 1024x768",
             "pixelpath render showcase -o flat.png --shading flat --ssaa 2",
             "pixelpath render showcase -o lines.png --style hidden-line --method bsp --explain",
+            "pixelpath render showcase -o traced.png --method raytrace --samples 4 --max-depth 5",
             'pixelpath render showcase --frames 0:120 -o "spin/f_{frame:03d}.png"',
             "pixelpath render scene.toml -o poster.png --size 8192x8192 --tiles 4x4 --workers 2",
             'pixelpath render scene.toml --frames all -o "out/f_{frame:04d}.png" '
@@ -61,6 +62,19 @@ def register(subparsers: Any) -> None:
     parser.add_argument("--no-cull", action="store_true", help="draw back faces too (two-sided)")
     parser.add_argument("--blinn", action="store_true", help="Blinn-Phong highlights")
     parser.add_argument("--gamma", type=float, help="encode with this display gamma (e.g. 2.2)")
+    tracing = parser.add_argument_group("ray tracing (--method raytrace)")
+    tracing.add_argument(
+        "--samples", type=int, default=1, help="stratified, seeded samples per pixel (default 1)"
+    )
+    tracing.add_argument(
+        "--max-depth",
+        type=int,
+        default=5,
+        help="reflection/refraction bounces followed (default 5; 0 = local light only)",
+    )
+    tracing.add_argument(
+        "--fresnel", action="store_true", help="split glass's light by Schlick's Fresnel term"
+    )
     parser.add_argument(
         "--explain",
         action="store_true",
@@ -147,6 +161,9 @@ def render_to_file(
             style=getattr(args, "style", "filled"),
             explain=explain,
             progress=advance,
+            max_depth=getattr(args, "max_depth", 5),
+            samples=getattr(args, "samples", 1),
+            fresnel=getattr(args, "fresnel", False),
         )
     image, report = result if explain else (result, None)
     image.save(output, gamma=args.gamma)

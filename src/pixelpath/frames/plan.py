@@ -33,6 +33,7 @@ RENDER_OPTIONS = (
     "style",
     "max_depth",
     "samples",
+    "fresnel",
 )
 
 
