@@ -90,21 +90,6 @@ def bsp_build(scene: pp.Scene) -> str:
     return f"BSP build {1000 * seconds:.0f} ms: {tree}"
 
 
-def available(methods: list[str]) -> list[str]:
-    """The methods this installation implements (the others are reported and skipped)."""
-    from pixelpath.renderer import _method_module
-
-    found = []
-    for method in methods:
-        try:
-            _method_module(method)
-        except NotImplementedError:
-            print(f"({method}: not implemented in this version, skipped)")
-        else:
-            found.append(method)
-    return found
-
-
 def main() -> None:
     """Time every method at every size and print the table."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -116,7 +101,7 @@ def main() -> None:
     if unknown:
         parser.error(f"unknown sizes {sorted(unknown)}; choose from {', '.join(LEVELS)}")
     methods = RASTER_METHODS if args.methods == "all" else args.methods.split(",")
-    methods = available(["zbuffer", *[m for m in methods if m != "zbuffer"]])
+    methods = ["zbuffer", *[m for m in methods if m != "zbuffer"]]
     import numba
 
     print(f"1024x768, Phong shading, {numba.get_num_threads()} Numba threads, "

@@ -45,6 +45,8 @@ _KERNEL_MODULES = (
     "pixelpath.raster._line_kernels",
     "pixelpath.hsr._kernels.octree",
     "pixelpath.hsr._kernels.scanline",
+    "pixelpath.hsr._kernels.painter",
+    "pixelpath.hsr._kernels.bsp",
     "pixelpath.hsr._kernels.warnock",
     "pixelpath.raytrace._kernels",
     "pixelpath.raytrace._whitted_kernels",

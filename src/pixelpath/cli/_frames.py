@@ -73,18 +73,15 @@ def run_frames(args: argparse.Namespace, scene: Any) -> int:
         raise CommandError(f"--workers must be at least 1, got {args.workers}")
     frames = [0] if args.frames is None else parse_frames(args.frames)
     tiles = (1, 1) if args.tiles is None else parse_tiles(args.tiles)
-    try:
-        plan = plan_frames(
-            scene,
-            frames,
-            args.output,
-            tiles=tiles,
-            resume=args.resume,
-            gamma=args.gamma,
-            options=render_options(args),
-        )
-    except NotImplementedError as exc:
-        raise CommandError(str(exc)) from None
+    plan = plan_frames(
+        scene,
+        frames,
+        args.output,
+        tiles=tiles,
+        resume=args.resume,
+        gamma=args.gamma,
+        options=render_options(args),
+    )
     start = time.perf_counter()
     client = _client(args, plan.jobs)
     try:

@@ -143,10 +143,7 @@ def render_to_file(
 
     if not output.parent.is_dir():
         raise CommandError(f"output directory does not exist: {output.parent}")
-    try:
-        steps = render_steps(args.method)
-    except NotImplementedError as exc:
-        raise CommandError(str(exc)) from None
+    steps = render_steps(args.method)
     compile_kernels([args.method, getattr(args, "style", "filled")], quiet=args.quiet)
     start = time.perf_counter()
     explain = getattr(args, "explain", False)

@@ -135,7 +135,9 @@ class Prepared:
     stats: dict[str, int]
 
 
-def prepare(scene: Scene, view: View, options: RenderOptions, geometry=None) -> Prepared:
+def prepare(
+    scene: Scene, view: View, options: RenderOptions, geometry=None, blends=None
+) -> Prepared:
     """Run the front end: cull, light, clip, divide, map to the viewport, set up.
 
     Parameters
@@ -149,6 +151,12 @@ def prepare(scene: Scene, view: View, options: RenderOptions, geometry=None) -> 
     geometry : SceneGeometry, optional
         Geometry to draw instead of the scene's own tessellation (the BSP method passes its
         fragments); its polygon arrays must be the scene's.
+    blends : (rows, corners, weights), optional
+        Vertices of ``geometry`` made by cutting its triangles (the BSP method's splits):
+        ``rows`` (N,) their indices, ``corners`` (N, 3) the vertices of the triangle each was
+        cut from and ``weights`` (N, 3) its barycentric weights there. Gouraud shading blends
+        their colours from those corners, as clipping does for the vertices it makes, so the
+        pieces of a triangle shade exactly like the whole.
 
     Returns
     -------
@@ -186,14 +194,14 @@ def prepare(scene: Scene, view: View, options: RenderOptions, geometry=None) -> 
     if not options.backface_cull:
         keep = np.ones_like(keep)
     advance(1)
-    clipped = _clip_to_view(geometry, camera, keep, front, mode, lighting)
+    clipped = _clip_to_view(geometry, camera, keep, front, mode, lighting, blends)
     advance(1)
     prepared = _set_up(clipped, view)
     advance(1)
     return prepared
 
 
-def _clip_to_view(geometry, camera, keep, front, mode, lighting) -> dict:
+def _clip_to_view(geometry, camera, keep, front, mode, lighting, blends) -> dict:
     """Light what needs lighting before clipping, then clip to the frustum; count each stage."""
     from pixelpath.raster import _kernels
     from pixelpath.raster.frustum import classify, clip_crossing
@@ -203,7 +211,7 @@ def _clip_to_view(geometry, camera, keep, front, mode, lighting) -> dict:
     columns = (clip, geometry.vertices, geometry.normals)
     if mode == _kernels.GOURAUD:
         back_drawn = bool(np.any(keep & ~front[geometry.triangle_polygon]))
-        columns += (_vertex_colors(geometry, lighting, two_sided=back_drawn),)
+        columns += (_vertex_colors(geometry, lighting, back_drawn, blends),)
     inside, crossing = classify(clip, geometry.triangles, keep)
     new_columns, new_triangles, new_source = clip_crossing(columns, geometry.triangles, crossing)
     if len(new_triangles):
@@ -371,10 +379,11 @@ def shade(
     return Frame(out.rgb, out.depth, out.object_id, prepared.stats, report)
 
 
-def _vertex_colors(geometry, lighting: Lighting, two_sided: bool) -> np.ndarray:
+def _vertex_colors(geometry, lighting: Lighting, two_sided: bool, blends) -> np.ndarray:
     """(V, 6) Gouraud intensities at the vertices, lit from the front, then from the back.
 
     The back half is only computed when a face seen from behind is drawn (culling off).
+    Cut vertices (``blends``, see :func:`prepare`) take the blend of their corners' colours.
     """
     from pixelpath.raster.shading import shade_points
 
@@ -385,6 +394,9 @@ def _vertex_colors(geometry, lighting: Lighting, two_sided: bool) -> np.ndarray:
             geometry.vertex_object, geometry.materials, lighting.lights, lighting.ambient,
             lighting.eye, blinn=lighting.blinn,
         )
+    if blends is not None:
+        rows, corners, weights = blends
+        colors[rows] = np.einsum("nk,nkc->nc", weights, colors[corners])
     return colors
 
 

@@ -254,14 +254,118 @@ def _grown(array, needed):
     return bigger
 
 
+# Cutting a triangle by a plane (the painter's and BSP methods' polygon splitting).
 @njit
+def cut_triangle(vertices, count, corners, distances, eps, pieces, cut_edges, cut_params):
+    """Cut a triangle by a plane into pieces that each lie on one side of it.
+
+    Parameters
+    ----------
+    vertices : (V, k) float64
+        Per-vertex rows (a position and any attributes, all interpolated linearly along a cut
+        edge); rows ``[0, count)`` are in use. Grown (doubled) when full: keep the returned one.
+    corners : (3,) intp
+        The triangle's vertex indices.
+    distances : (3,) float64
+        Signed distances of its corners to the plane; within ``eps`` a corner lies on it.
+    pieces : (3, 4) intp, out
+        Per piece: its three vertex indices (in the triangle's winding) and its side, +1 where
+        the distances are positive, -1 where negative.
+    cut_edges : (2, 2) intp, out; cut_params : (2,) float64, out
+        Per new vertex: the edge it cuts (lower vertex index first) and its parameter along it.
+
+    Returns
+    -------
+    (vertices, count, n_pieces)
+        ``n_pieces`` is 0 when the triangle does not straddle the plane (nothing is written),
+        else 2 (a corner on the plane: one new vertex) or 3 (two new vertices).
+    """
+    s0, s1, s2 = _side(distances[0], eps), _side(distances[1], eps), _side(distances[2], eps)
+    if max(s0, s1, s2) < 1 or min(s0, s1, s2) > -1:
+        return vertices, count, 0
+    if count + 2 > vertices.shape[0]:
+        vertices = _grown_rows(vertices, count + 2)
+    # The corner on the plane, or else the corner alone on its side, comes first.
+    if s0 * s1 * s2 == 0:
+        lone = 0 if s0 == 0 else (1 if s1 == 0 else 2)
+    else:
+        lone = 0 if s1 == s2 else (1 if s0 == s2 else 2)
+    a, b, c = corners[lone], corners[(lone + 1) % 3], corners[(lone + 2) % 3]
+    da, db, dc = distances[lone], distances[(lone + 1) % 3], distances[(lone + 2) % 3]
+    side_a, side_b = _side(da, eps), _side(db, eps)
+    if side_a == 0:
+        m = _cut_edge(vertices, count, b, db, c, dc, cut_edges, cut_params, 0)
+        _store_piece(pieces, 0, a, b, m, side_b)
+        _store_piece(pieces, 1, a, m, c, -side_b)
+        return vertices, count + 1, 2
+    m_ab = _cut_edge(vertices, count, a, da, b, db, cut_edges, cut_params, 0)
+    m_ca = _cut_edge(vertices, count + 1, c, dc, a, da, cut_edges, cut_params, 1)
+    _store_piece(pieces, 0, a, m_ab, m_ca, side_a)
+    _store_piece(pieces, 1, m_ab, b, c, side_b)
+    _store_piece(pieces, 2, m_ab, c, m_ca, side_b)
+    return vertices, count + 2, 3
+
+
+@njit(inline="always")
+def _cut_edge(vertices, row, i, di, j, dj, cut_edges, cut_params, slot):
+    """Write at ``row`` the point where edge (i, j) meets the plane; return ``row``.
+
+    Always interpolated from the lower vertex index, so an edge shared by two triangles gets
+    the same bits from both.
+    """
+    if j < i:
+        i, di, j, dj = j, dj, i, di
+    s = di / (di - dj)
+    for column in range(vertices.shape[1]):
+        start = vertices[i, column]
+        vertices[row, column] = start + s * (vertices[j, column] - start)
+    cut_edges[slot, 0] = i
+    cut_edges[slot, 1] = j
+    cut_params[slot] = s
+    return row
+
+
+@njit(inline="always")
+def _side(distance, eps):
+    """+1, -1 or 0 (on the plane, within eps)."""
+    if distance > eps:
+        return 1
+    if distance < -eps:
+        return -1
+    return 0
+
+
+@njit(inline="always")
+def _store_piece(pieces, slot, a, b, c, side):
+    pieces[slot, 0] = a
+    pieces[slot, 1] = b
+    pieces[slot, 2] = c
+    pieces[slot, 3] = side
+
+
+@njit(error_model="numpy")
 def clip_to_screen(clip, width, height, screen):
-    """Write (x_screen, y_screen, 1/w) of each clip-space vertex (V, 4) into screen (V, 3)."""
+    """Write (x_screen, y_screen, 1/w) of each clip-space vertex (V, 4) into screen (V, 3).
+
+    A vertex in the eye's plane (w = 0, such as the point of a plane's grid under an eye
+    looking along the plane) maps to infinity, not an error: only vertices of triangles that
+    were dropped or clipped can lie there, and those are never drawn.
+    """
     for v in range(clip.shape[0]):
-        inv_w = 1.0 / clip[v, 3]
-        screen[v, 0] = (clip[v, 0] * inv_w + 1.0) * 0.5 * width
-        screen[v, 1] = (1.0 - clip[v, 1] * inv_w) * 0.5 * height
-        screen[v, 2] = inv_w
+        screen_point(clip, v, width, height, screen, v)
+
+
+@njit(inline="always")
+def screen_point(clip, row, width, height, screen, screen_row):
+    """Divide and map one clip-space vertex: ``screen[screen_row] = (x, y, 1/w)``.
+
+    The one formula of the viewport, shared by :func:`clip_to_screen` and by the methods
+    that make vertices of their own (the painter's splits), so equal inputs give equal bits.
+    """
+    inv_w = 1.0 / clip[row, 3]
+    screen[screen_row, 0] = (clip[row, 0] * inv_w + 1.0) * 0.5 * width
+    screen[screen_row, 1] = (1.0 - clip[row, 1] * inv_w) * 0.5 * height
+    screen[screen_row, 2] = inv_w
 
 
 @njit(inline="always")
