@@ -594,4 +594,5 @@ def warmup() -> None:
     order = np.empty(items.shape[0] + extra_items.shape[0], dtype=np.intp)
     drawn, _ = traverse(node_planes, children, first, count, items, extra_first, extra_count,
                         extra_items, np.array([0.0, 1.0, 5.0]), order)
-    draw_order(order[:drawn], np.zeros(1, dtype=np.intp), drawn, np.empty(1, dtype=np.intp))
+    draw_order(order[:drawn], np.zeros(1, dtype=np.intp), int(order[:drawn].max(initial=0)) + 1,
+               np.empty(1, dtype=np.intp))
