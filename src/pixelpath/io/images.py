@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import io
 import os
 import tempfile
 from pathlib import Path
@@ -91,16 +92,49 @@ def write_image(path: str | os.PathLike, rgb: np.ndarray, *, gamma: float | None
     fmt = PILImage.registered_extensions().get(path.suffix.lower())
     if fmt is None:
         raise ValueError(f"unknown image extension {path.suffix!r} for {path}; use .png, .jpg, ...")
+    buffer = io.BytesIO()
+    image.save(buffer, format=fmt)
+    write_atomic(path, buffer.getvalue())
+
+
+def write_atomic(path: str | os.PathLike, data: bytes) -> Path:
+    """Write ``data`` to ``path`` through a temporary file in the same folder, then rename.
+
+    A crash never leaves a half-written file: readers see the old file or the new one.
+
+    Parameters
+    ----------
+    path : str or path-like
+        Destination; its directory must exist.
+    data : bytes
+        The file's contents.
+
+    Returns
+    -------
+    pathlib.Path
+        The file written.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> from pixelpath.io.images import write_atomic
+    >>> write_atomic(os.path.join(tempfile.mkdtemp(), "note.txt"), b"hello").read_bytes()
+    b'hello'
+    """
+    path = Path(path)
+    if not path.parent.is_dir():
+        raise FileNotFoundError(f"output directory does not exist: {path.parent}")
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     try:
         if hasattr(os, "fchmod"):  # mkstemp makes 0600; give the file the usual permissions
             os.fchmod(fd, _new_file_mode())
         with os.fdopen(fd, "wb") as handle:
-            image.save(handle, format=fmt)
+            handle.write(data)
         os.replace(tmp, path)
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
         raise
+    return path
 
 
 def _new_file_mode() -> int:
