@@ -109,9 +109,12 @@ def main() -> None:
     """Time every method at every size and print the table."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--frames", type=int, default=5)
-    parser.add_argument("--sizes", default="1k,10k,100k")
+    parser.add_argument("--sizes", default="1k,10k,100k", help="comma-separated: 1k, 10k, 100k")
     parser.add_argument("--methods", default="all")
     args = parser.parse_args()
+    unknown = set(args.sizes.split(",")) - set(LEVELS)
+    if unknown:
+        parser.error(f"unknown sizes {sorted(unknown)}; choose from {', '.join(LEVELS)}")
     methods = RASTER_METHODS if args.methods == "all" else args.methods.split(",")
     methods = available(["zbuffer", *[m for m in methods if m != "zbuffer"]])
     import numba

@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any
 
 __version__ = "0.1.0"
 
-_SUBMODULES = ("color", "clip", "lighting", "scene", "raster", "hsr", "io")
+_SUBMODULES = ("color", "clip", "lighting", "scene", "raster", "hsr", "io", "frames", "raytrace")
 
 # Public name -> module that defines it, imported on first access.
 _LAZY_NAMES = {
@@ -33,6 +33,7 @@ _LAZY_NAMES = {
     "load_scene": "pixelpath.scene",
     "Image": "pixelpath.image",
     "render": "pixelpath.renderer",  # a module named "render" would shadow the function
+    "render_frames": "pixelpath.frames",
 }
 
 # Modules whose import registers their kernels' warm-up functions.
@@ -41,6 +42,10 @@ _KERNEL_MODULES = (
     "pixelpath.clip._kernels",
     "pixelpath.lighting._kernels",
     "pixelpath.raster._kernels",
+    "pixelpath.hsr._kernels.scanline",
+    "pixelpath.hsr._kernels.warnock",
+    "pixelpath.raytrace._kernels",
+    "pixelpath.raytrace._whitted_kernels",
 )
 
 __all__ = [
@@ -56,18 +61,22 @@ __all__ = [
     "Sphere",
     "clip",
     "color",
+    "frames",
     "hsr",
     "io",
     "lighting",
     "load_scene",
     "raster",
+    "raytrace",
     "render",
+    "render_frames",
     "scene",
     "warmup",
 ]
 
 if TYPE_CHECKING:
-    from pixelpath import clip, color, hsr, io, lighting, raster, scene
+    from pixelpath import clip, color, frames, hsr, io, lighting, raster, raytrace, scene
+    from pixelpath.frames import render_frames
     from pixelpath.image import Image
     from pixelpath.renderer import render
     from pixelpath.scene import (
@@ -117,4 +126,4 @@ def warmup() -> int:
 
     for module in _KERNEL_MODULES:
         importlib.import_module(module)
-    return run_warmups()
+    return len(run_warmups())

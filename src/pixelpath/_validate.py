@@ -114,3 +114,24 @@ def instance(value: Any, name: str, kinds: type | tuple[type, ...]) -> Any:
         names = " or ".join(k.__name__ for k in (kinds if isinstance(kinds, tuple) else (kinds,)))
         raise TypeError(f"{name} must be a {names}, got {type(value).__name__}")
     return value
+
+
+def finite_array(value: Any, name: str, last: int | None = None) -> np.ndarray:
+    """Return a finite float64 copy of ``value``, of any shape, or ``(..., last)`` when given."""
+    if isinstance(value, np.ndarray) and value.dtype.kind in "iufb":
+        array = value.astype(np.float64)
+    else:
+        try:
+            if isinstance(value, str | bytes) or np.asarray(value).dtype.kind not in "iufb":
+                raise TypeError
+            array = np.array(value, dtype=np.float64)
+        except (TypeError, ValueError):
+            raise TypeError(
+                f"{name} must be a number or an array of numbers, got {_describe(value)}"
+            ) from None
+    if last is not None and (array.ndim == 0 or array.shape[-1] != last):
+        raise ValueError(f"{name} must have shape (..., {last}), got shape {array.shape}")
+    if not np.all(np.isfinite(array)):
+        kind = "NaN" if np.any(np.isnan(array)) else "infinite values"
+        raise ValueError(f"{name} must be finite, got {kind} in {_describe(value)}")
+    return array

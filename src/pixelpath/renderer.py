@@ -81,6 +81,7 @@ class RenderOptions:
     explain: bool = False
     max_depth: int = 5
     samples: int = 1
+    fresnel: bool = False
     progress: Callable[[int], None] = dataclasses.field(default=lambda steps: None)
 
 
@@ -121,6 +122,7 @@ def render(
     explain: bool = False,
     max_depth: int = 5,
     samples: int = 1,
+    fresnel: bool = False,
     region: tuple[int, int, int, int] | None = None,
     progress: Callable[[int], None] | None = None,
 ) -> Image | tuple[Image, Any]:
@@ -154,6 +156,9 @@ def render(
         Ray tracing only: reflection and refraction bounces followed (0 = local light only).
     samples : int
         Ray tracing only: stratified samples per pixel.
+    fresnel : bool
+        Ray tracing only: split a transparent surface's light between reflection and
+        transmission by Schlick's approximation of the Fresnel equations.
     region : (x0, y0, x1, y1), optional
         Render only the pixels ``x0 <= x < x1``, ``y0 <= y < y1`` of the camera's image; they
         equal the same pixels of the whole image exactly (tiles stitch without seams).
@@ -198,12 +203,13 @@ def render(
         explain=bool(explain),
         max_depth=_int_in(max_depth, "max_depth", 0, 64, "reflection/refraction bounces"),
         samples=_int_in(samples, "samples", 1, 1024, "samples per pixel"),
+        fresnel=bool(fresnel),
         progress=progress or (lambda steps: None),
     )
-    if method != "raytrace" and (options.max_depth, options.samples) != (5, 1):
+    if method != "raytrace" and (options.max_depth, options.samples, fresnel) != (5, 1, False):
         raise ValueError(
-            f"max_depth and samples apply to method='raytrace' only (got method={method!r}); "
-            f"use ssaa= to supersample a raster method"
+            f"max_depth, samples and fresnel apply to method='raytrace' only (got "
+            f"method={method!r}); use ssaa= to supersample a raster method"
         )
     view = _view(scene.camera, region, factor)
     frame = _draw(module, scene, view, style, options)

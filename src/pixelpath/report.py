@@ -58,12 +58,17 @@ class Report:
         Its steps in detail.
     notes : tuple of str
         Sentences on what the method does and in which space it works.
+    arrays : mapping of str to ndarray
+        The method's complete per-step data for use from Python (for example every scan
+        line's counts, where the printed table shows a sample); each method's documentation
+        lists its keys. Not printed.
     """
 
     method: str
     summary: Mapping[str, Any]
     tables: tuple[Table, ...] = ()
     notes: tuple[str, ...] = ()
+    arrays: Mapping[str, Any] = dataclasses.field(default_factory=dict)
 
     def __str__(self) -> str:
         lines = [self.method]

@@ -192,3 +192,93 @@ def test_parallel_path_equals_the_small_input_path(fn):
     whole = fn(rgb)  # above one chunk: the parallel kernel
     pieces = np.concatenate([fn(rgb[k : k + 1000]) for k in range(0, len(rgb), 1000)])
     np.testing.assert_array_equal(whole, pieces)
+
+
+@pytest.mark.parametrize(
+    ("fn", "model", "out_channels"), RGB_INPUT, ids=[c[0].__name__ for c in RGB_INPUT]
+)
+@pytest.mark.parametrize("int_dtype", [np.uint8, np.uint16, np.int64])
+@pytest.mark.parametrize("dtype", [np.float32, np.float64])
+def test_integer_rgb_converts_straight_into_the_requested_dtype(
+    fn, model, out_channels, int_dtype, dtype
+):
+    top = 65535 if int_dtype == np.uint16 else 255
+    values = np.random.default_rng(3).integers(0, top + 1, (50, 3)).astype(int_dtype)
+    result = fn(values, dtype=dtype)
+    assert result.dtype == dtype and result.shape == (50, out_channels)
+    # The float32 path scales and converts in float32: equal to float32 rounding of the exact.
+    exact = fn(values / top)
+    tolerance = 2e-5 if dtype == np.float32 else 1e-12
+    np.testing.assert_allclose(result, exact, rtol=tolerance, atol=tolerance * 360)
+
+
+@pytest.mark.parametrize(("fn", "model", "out_channels"), CONVERTERS, ids=IDS)
+@pytest.mark.parametrize(
+    ("given", "requested"), [(np.float64, np.float32), (np.float32, np.float64)]
+)
+def test_float_input_of_the_other_precision_is_cast_first(
+    fn, model, out_channels, given, requested
+):
+    values = sample(model, dtype=given)
+    result = fn(values, dtype=requested)
+    assert result.dtype == requested
+    np.testing.assert_array_equal(result, fn(values.astype(requested)))
+
+
+def test_integers_of_other_models_go_straight_into_the_requested_dtype():
+    green = color.hsv_to_rgb(np.array([120, 1, 1], np.int16), dtype="float32")
+    assert green.dtype == np.float32
+    np.testing.assert_array_equal(green, [0, 1, 0])
+
+
+@pytest.mark.parametrize("spelling", ["float32", np.float32, np.dtype("float32"), "f4"])
+def test_dtype_may_be_spelled_any_numpy_way(spelling):
+    assert color.rgb_to_yiq(np.zeros((2, 3), np.uint8), dtype=spelling).dtype == np.float32
+
+
+@pytest.mark.parametrize(
+    ("dtype", "error", "match"),
+    [
+        (np.int16, ValueError, "dtype must be float32 or float64, got int16"),
+        ("float16", ValueError, "dtype must be float32 or float64, got float16"),
+        ("colour", TypeError, "dtype must be float32 or float64, got 'colour'"),
+    ],
+)
+def test_other_dtypes_are_rejected_naming_the_argument(dtype, error, match):
+    with pytest.raises(error, match=match):
+        color.rgb_to_hsv([1.0, 0.5, 0.0], dtype=dtype)
+    with pytest.raises(error, match=match):
+        color.convert([1.0, 0.5, 0.0], "rgb", "cmyk", dtype=dtype)
+
+
+def test_out_must_match_the_requested_dtype():
+    values = np.zeros((4, 3), np.uint8)
+    out = np.empty((4, 3), np.float32)
+    assert color.rgb_to_hsl(values, dtype="float32", out=out) is out
+    with pytest.raises(ValueError, match="out must be a C-contiguous float64 array"):
+        color.rgb_to_hsl(values, out=out)
+
+
+@pytest.mark.parametrize(
+    ("src", "dst"), [("rgb", "rgb"), ("rgb", "hsv"), ("cmyk", "rgb"), ("hsl", "ycbcr")]
+)
+def test_convert_honours_dtype_for_every_route(src, dst):
+    values = (sample(src) * 255).astype(np.uint8) if src == "rgb" else sample(src)
+    result = color.convert(values, src, dst, dtype="float32")
+    assert result.dtype == np.float32
+    np.testing.assert_allclose(result, color.convert(values, src, dst), rtol=2e-5, atol=1e-4)
+
+
+def test_uint8_to_float32_allocates_only_the_float32_result():
+    import tracemalloc
+
+    image = np.random.default_rng(4).integers(0, 256, (256, 256, 3), dtype=np.uint8)
+    color.rgb_to_hsv(image, dtype="float32")  # compile outside the measurement
+    tracemalloc.start()
+    try:
+        result = color.rgb_to_hsv(image, dtype="float32")
+        _, peak = tracemalloc.get_traced_memory()
+    finally:
+        tracemalloc.stop()
+    assert result.dtype == np.float32
+    assert peak < 1.1 * result.nbytes  # no float64 or float32 copy of the input on the way

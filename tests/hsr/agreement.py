@@ -97,7 +97,8 @@ def cyclic(seed: int) -> pp.Scene:
         across = np.array([-along[1], along[0]])
         tail, tip = start - 0.9 * along, stop + 0.9 * along
         points = [(*(tail + 0.35 * across), 0.4), (*(tail - 0.35 * across), 0.4), (*tip, -0.4)]
-        if np.cross(points[1][:2] - tail - 0.35 * across, tip - tail - 0.35 * across) < 0:
+        u, v = points[1][:2] - tail - 0.35 * across, tip - tail - 0.35 * across
+        if u[0] * v[1] - u[1] * v[0] < 0:  # 2-D cross product (NumPy 2 deprecates np.cross)
             points[0], points[1] = points[1], points[0]  # counter-clockwise seen from +z
         objects.append(pp.Mesh(points, [[0, 1, 2]], _material(rng)))
     camera = _camera(eye=(0.1, 0.2, 5.0), target=(0.0, 0.0, 0.0))

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import argparse
 import contextlib
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from typing import Any
 
 from rich.console import Console
@@ -44,6 +44,26 @@ def console() -> Console:
 def error_console() -> Console:
     """Return the console for errors and progress (standard error)."""
     return Console(stderr=True, highlight=False, soft_wrap=True)
+
+
+def compile_kernels(methods: Iterable[str], *, quiet: bool = False) -> None:
+    """Before a first run, compile the kernels that renders with ``methods`` need, on every core.
+
+    Nothing happens when they are in the disk cache already. While they compile, a line on
+    standard error says so (only on a terminal, and not when ``quiet``).
+    """
+    from pixelpath._warm import cold_groups, compile_groups, estimate_seconds, groups_for
+
+    cold = cold_groups(groups_for(methods))
+    if not cold:
+        return
+    err = error_console()
+    if not quiet and err.is_terminal:
+        err.print(
+            f"compiling kernels for the first run, about {estimate_seconds(cold):.0f} s; "
+            "later runs are instant"
+        )
+    compile_groups(cold)
 
 
 @contextlib.contextmanager

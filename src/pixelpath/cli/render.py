@@ -7,7 +7,14 @@ import time
 from pathlib import Path
 from typing import Any
 
-from pixelpath.cli._common import CommandError, add_command, console, progress
+from pixelpath.cli._common import (
+    CommandError,
+    add_command,
+    compile_kernels,
+    console,
+    progress,
+)
+from pixelpath.cli._frames import add_frame_options, run_frames, wants_frames
 from pixelpath.raster.shading import SHADINGS
 from pixelpath.renderer import METHOD_NAMES, STYLES
 
@@ -17,7 +24,7 @@ def register(subparsers: Any) -> None:
     parser = add_command(
         subparsers,
         "render",
-        summary="render a TOML scene file to an image with any hidden-surface method",
+        summary="render a TOML scene file to an image (any hidden-surface method, ray tracing)",
         description=(
             "Render a scene file with a hidden-surface method and a shading mode and write the "
             "image (PNG, JPEG, ... by extension; written atomically). SCENE may also name a "
@@ -30,6 +37,11 @@ def register(subparsers: Any) -> None:
             "--size 1024x768",
             "pixelpath render showcase -o flat.png --shading flat --ssaa 2",
             "pixelpath render showcase -o lines.png --style hidden-line --method bsp --explain",
+            "pixelpath render showcase -o traced.png --method raytrace --samples 4 --max-depth 5",
+            'pixelpath render showcase --frames 0:120 -o "spin/f_{frame:03d}.png"',
+            "pixelpath render scene.toml -o poster.png --size 8192x8192 --tiles 4x4 --workers 2",
+            'pixelpath render scene.toml --frames all -o "out/f_{frame:04d}.png" '
+            "--scheduler tcp://host:8786 --resume",
         ],
         run=run,
     )
@@ -50,12 +62,26 @@ def register(subparsers: Any) -> None:
     parser.add_argument("--no-cull", action="store_true", help="draw back faces too (two-sided)")
     parser.add_argument("--blinn", action="store_true", help="Blinn-Phong highlights")
     parser.add_argument("--gamma", type=float, help="encode with this display gamma (e.g. 2.2)")
+    tracing = parser.add_argument_group("ray tracing (--method raytrace)")
+    tracing.add_argument(
+        "--samples", type=int, default=1, help="stratified, seeded samples per pixel (default 1)"
+    )
+    tracing.add_argument(
+        "--max-depth",
+        type=int,
+        default=5,
+        help="reflection/refraction bounces followed (default 5; 0 = local light only)",
+    )
+    tracing.add_argument(
+        "--fresnel", action="store_true", help="split glass's light by Schlick's Fresnel term"
+    )
     parser.add_argument(
         "--explain",
         action="store_true",
         help="print what the method did: pipeline counts, then the method's own steps",
     )
     parser.add_argument("-q", "--quiet", action="store_true", help="no progress bar or summary")
+    add_frame_options(parser)
 
 
 def parse_size(text: str) -> tuple[int, int]:
@@ -117,11 +143,12 @@ def render_to_file(
 
     if not output.parent.is_dir():
         raise CommandError(f"output directory does not exist: {output.parent}")
-    start = time.perf_counter()
     try:
         steps = render_steps(args.method)
     except NotImplementedError as exc:
         raise CommandError(str(exc)) from None
+    compile_kernels([args.method], quiet=args.quiet)
+    start = time.perf_counter()
     explain = getattr(args, "explain", False)
     with progress(f"rendering {label}", steps, quiet=args.quiet) as advance:
         result = render(
@@ -134,6 +161,9 @@ def render_to_file(
             style=getattr(args, "style", "filled"),
             explain=explain,
             progress=advance,
+            max_depth=getattr(args, "max_depth", 5),
+            samples=getattr(args, "samples", 1),
+            fresnel=getattr(args, "fresnel", False),
         )
     image, report = result if explain else (result, None)
     image.save(output, gamma=args.gamma)
@@ -143,6 +173,8 @@ def render_to_file(
 def run(args: argparse.Namespace) -> int:
     """Render the scene and write the image."""
     scene = load_scene_sized(args.scene, args.size)
+    if wants_frames(args):
+        return run_frames(args, scene)
     output = Path(args.output)
     image, report, elapsed = render_to_file(scene, output, args, Path(args.scene).stem)
     if report is not None:

@@ -27,7 +27,14 @@ from pixelpath._jit import njit, prange, register_warmup
 
 LEFT, RIGHT, BOTTOM, TOP, EDGE, PLANE = 0, 1, 2, 3, 4, 5
 
-OK, NON_FINITE, TOO_FEW_VERTICES = 0, 1, 2
+OK, NON_FINITE, TOO_FEW_VERTICES, TOO_LARGE = 0, 1, 2, 3
+
+# The largest coordinate magnitude the floating-point kernels take. The slanted-edge tests and
+# crossings multiply two coordinate differences and subtract such products: with every
+# coordinate within ±1e150 no intermediate exceeds 16·1e300, far below the float64 maximum
+# (1.8e308), so nothing overflows. (Rectangle bounds are only compared, and a crossing of one
+# lies between the edge's two vertices, so they need no limit.)
+LARGEST_COORDINATE = 1e150
 
 WHOLLY_OUTSIDE, WHOLLY_INSIDE, STRADDLES = -1, 1, 0
 
@@ -136,7 +143,8 @@ def clip_stage(src, n, row, dst, crossings):
             if m == 0 or not _same_rows(dst, m, dst, m - 1):
                 m += 1
         if e_in and (m == 0 or not _same_rows(src, i, dst, m - 1)):
-            dst[m] = e
+            for c in range(dst.shape[1]):  # element by element: no shape-error code to compile
+                dst[m, c] = e[c]
             m += 1
         s, s_in = e, e_in
     if m > 1 and _same_rows(dst, m - 1, dst, 0):
@@ -146,11 +154,14 @@ def clip_stage(src, n, row, dst, crossings):
 
 @njit
 def check_subject(xy):
-    """Return ``OK``, ``NON_FINITE`` or ``TOO_FEW_VERTICES`` (fewer than 3 distinct)."""
+    """Return ``OK``, ``NON_FINITE``, ``TOO_LARGE`` or ``TOO_FEW_VERTICES`` (< 3 distinct)."""
     n = xy.shape[0]
     for i in range(n):
-        if not (np.isfinite(xy[i, 0]) and np.isfinite(xy[i, 1])):
+        x, y = xy[i, 0], xy[i, 1]
+        if not (np.isfinite(x) and np.isfinite(y)):
             return NON_FINITE
+        if abs(x) > LARGEST_COORDINATE or abs(y) > LARGEST_COORDINATE:
+            return TOO_LARGE
     second = -1
     for i in range(1, n):
         if xy[i, 0] != xy[0, 0] or xy[i, 1] != xy[0, 1]:
@@ -287,7 +298,7 @@ def _boundary_coordinate(row, x, y):
     ex, ey = row[3] - row[1], row[4] - row[2]
     length2 = ex * ex + ey * ey
     side = ex * (y - row[2]) - ey * (x - row[1])
-    scale = max(1.0, abs(row[1]) + abs(row[2]) + np.sqrt(length2))
+    scale = abs(row[1]) + abs(row[2]) + np.sqrt(length2)  # relative: no floor for tiny windows
     t = (ex * (x - row[1]) + ey * (y - row[2])) / length2
     return t, abs(side) <= ON_EDGE_RTOL * scale * np.sqrt(length2)
 

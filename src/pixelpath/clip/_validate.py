@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from pixelpath.clip._kernels import NON_FINITE, TOO_FEW_VERTICES
+from pixelpath.clip._kernels import LARGEST_COORDINATE, NON_FINITE, TOO_FEW_VERTICES, TOO_LARGE
 
 
 def polygon_array(value: object, name: str) -> np.ndarray:
@@ -25,17 +25,48 @@ def polygon_array(value: object, name: str) -> np.ndarray:
     if raw.ndim != 2 or raw.shape[1] != 2:
         raise ValueError(f"{name} must have shape (N, 2), got shape {raw.shape}")
     points = np.ascontiguousarray(raw, dtype=np.float64)
-    bad = ~np.isfinite(points).all(axis=1)
-    if bad.any():
-        i = int(np.flatnonzero(bad)[0])
-        raise ValueError(f"{name} has a NaN or infinite coordinate at vertex {i}: {raw[i]}")
+    if not np.isfinite(points).all():
+        raise _non_finite(points, name)
     return points
 
 
-def subject_error(status: int, name: str) -> ValueError:
-    """Return the error for a kernel's subject status code."""
+def _non_finite(points: np.ndarray, name: str) -> ValueError:
+    i = int(np.flatnonzero(~np.isfinite(points).all(axis=1))[0])
+    return ValueError(f"{name} has a NaN or infinite coordinate at vertex {i}: {points[i]}")
+
+
+def bounded(points: np.ndarray, name: str) -> np.ndarray:
+    """Return finite ``points`` if no coordinate exceeds what float kernels take, else raise.
+
+    Sutherland-Hodgman computes in floating point (``LARGEST_COORDINATE`` in the kernels says
+    why the limit keeps every intermediate finite); Weiler-Atherton computes exactly and needs
+    no limit, which the message says.
+    """
+    error = _beyond_limit(points, name)
+    if error is not None:
+        raise error
+    return points
+
+
+def _beyond_limit(points: np.ndarray, name: str) -> ValueError | None:
+    large = np.abs(points).max(axis=1, initial=0.0) > LARGEST_COORDINATE
+    if not large.any():
+        return None
+    i = int(np.flatnonzero(large)[0])
+    x, y = points[i]
+    return ValueError(
+        f"{name} vertex {i} at ({x:g}, {y:g}) is beyond ±{LARGEST_COORDINATE:g}, the largest "
+        "coordinate Sutherland-Hodgman's floating-point arithmetic takes without overflow; "
+        "weiler_atherton computes exactly and takes any finite coordinates"
+    )
+
+
+def subject_error(status: int, name: str, points: np.ndarray) -> ValueError:
+    """Return the error for a kernel's status code about the polygon ``points``."""
     if status == NON_FINITE:
-        return ValueError(f"{name} has a NaN or infinite coordinate")
+        return _non_finite(points, name)
+    if status == TOO_LARGE:
+        return _beyond_limit(points, name) or ValueError(f"{name} has a coordinate too large")
     if status == TOO_FEW_VERTICES:
         return ValueError(f"{name} needs at least 3 distinct vertices")
     return ValueError(f"{name} was rejected (status {status})")

@@ -48,8 +48,9 @@ def clip_flat(
     Raises
     ------
     ValueError
-        For a bad buffer, bad offsets, a polygon with fewer than 3 distinct vertices or a
-        non-finite coordinate (the message gives its index), or a bad window.
+        For a bad buffer, bad offsets, a polygon with fewer than 3 distinct vertices, a
+        non-finite coordinate or one beyond ±1e150 (the message gives the polygon's index and
+        the vertex), or a bad window.
 
     Examples
     --------
@@ -72,7 +73,8 @@ def clip_flat(
     bad = np.flatnonzero(status)
     if bad.size:
         i = int(bad[0])
-        raise _validate.subject_error(int(status[i]), f"polygon {i}")
+        polygon = coords[offsets[i] : offsets[i + 1]]
+        raise _validate.subject_error(int(status[i]), f"polygon {i}", polygon)
     return out, out_offsets
 
 
@@ -96,8 +98,8 @@ def clip_polygons(polygons: Sequence[np.ndarray], window: object) -> list[np.nda
     Raises
     ------
     ValueError
-        For a polygon of the wrong shape, with a non-finite coordinate or fewer than 3
-        distinct vertices (the message gives its index), or a bad window.
+        For a polygon of the wrong shape, with a non-finite coordinate, one beyond ±1e150 or
+        fewer than 3 distinct vertices (the message gives its index), or a bad window.
     TypeError
         For non-numeric coordinates.
 

@@ -21,7 +21,7 @@ from pixelpath.clip.sutherland_hodgman import (
 )
 from pixelpath.clip.weiler_atherton import weiler_atherton
 from pixelpath.clip.window import Rect, as_window
-from pixelpath.io.images import write_atomic
+from pixelpath.io.images import write_bytes
 
 __all__ = ["plot_bridges", "plot_trace"]
 
@@ -182,4 +182,5 @@ def _save(fig, axes, path: str | os.PathLike) -> Path:
         fig.savefig(png, format="png", dpi=100)
     finally:
         plt.close(fig)
-    return write_atomic(path, png.getvalue())
+    write_bytes(path, png.getvalue())
+    return Path(path)

@@ -255,7 +255,9 @@ def sutherland_hodgman(
     Raises
     ------
     ValueError
-        For a malformed or non-finite subject, a degenerate or non-convex window.
+        For a malformed or non-finite subject, a degenerate or non-convex window, or a
+        coordinate beyond ±1e150 (the floating-point arithmetic could overflow; the message
+        names the vertex; :func:`~pixelpath.clip.weiler_atherton` takes any finite ones).
     TypeError
         For non-numeric input.
 
@@ -284,7 +286,7 @@ def sutherland_hodgman(
     table = window.table if type(window) is Rect else as_window(window).table
     result, status, bridge_count = _kernels.sutherland_hodgman(subject, table)
     if status:
-        raise _validate.subject_error(status, "subject")
+        raise _validate.subject_error(status, "subject", subject)
     if bridge_count:
         warnings.warn(
             f"sutherland_hodgman: the result runs along the window boundary and back "
@@ -314,6 +316,11 @@ def zero_width_bridges(polygon: np.ndarray, window: object) -> np.ndarray:
     (B, 2, 2) ndarray
         Each bridge as its two end points; empty when there is none.
 
+    Raises
+    ------
+    ValueError
+        For a malformed polygon or window, or a coordinate beyond ±1e150.
+
     Examples
     --------
     >>> import warnings
@@ -326,7 +333,7 @@ def zero_width_bridges(polygon: np.ndarray, window: object) -> np.ndarray:
     >>> zero_width_bridges(clipped, window).tolist()
     [[[3.0, 2.0], [3.0, 4.0]]]
     """
-    points = _validate.polygon_array(polygon, "polygon")
+    points = _validate.bounded(_validate.polygon_array(polygon, "polygon"), "polygon")
     return _kernels.bridges(points, as_window(window).table)
 
 
@@ -334,7 +341,7 @@ def _traced(subject: object, window: object) -> tuple[np.ndarray, ClipTrace]:
     points = _validate.polygon_array(subject, "subject")
     status = _kernels.check_subject(points)
     if status:
-        raise _validate.subject_error(status, "subject")
+        raise _validate.subject_error(status, "subject", points)
     window = as_window(window)
     stages = []
     for name, row in zip(boundary_names(window), window.table, strict=True):

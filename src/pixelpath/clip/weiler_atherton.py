@@ -87,7 +87,8 @@ def weiler_atherton(
     ------
     ValueError
         For fewer than 3 distinct vertices, a non-finite coordinate, zero area or a
-        self-intersecting polygon.
+        self-intersecting polygon. Every finite coordinate is taken, up to ±1.8e308: the
+        arithmetic is exact.
     TypeError
         For non-numeric input.
 
@@ -226,8 +227,11 @@ def _x_overlaps(
     """
     order = np.argsort(lo_b, kind="stable")
     starts = lo_b[order]
-    widest = float(np.max(hi_b - lo_b))
-    reach = np.nextafter(lo_a - widest, -np.inf)  # rounding must not lose a candidate
+    # Near ±1.8e308 a width or a reach can overflow to inf: the search then starts at the
+    # first interval, which only adds candidates for the exact test to discard.
+    with np.errstate(over="ignore"):
+        widest = float(np.max(hi_b - lo_b))
+        reach = np.nextafter(lo_a - widest, -np.inf)  # rounding must not lose a candidate
     first = np.searchsorted(starts, reach, side="left")
     count = np.searchsorted(starts, hi_a, side="right") - first
     i = np.repeat(np.arange(lo_a.size), count)

@@ -136,6 +136,7 @@ def as_window(window: object) -> Rect | ConvexWindow:
     if isinstance(window, (Rect, ConvexWindow)):
         return window
     vertices = _validate.distinct_ring(_validate.polygon_array(window, "window"), "window")
+    _validate.bounded(vertices, "window")  # the slanted-edge arithmetic multiplies coordinates
     turns = _turns(vertices)
     area2 = _validate.twice_signed_area(vertices)
     if area2 == 0.0:

@@ -2,10 +2,11 @@
 
 :func:`convert_pixels` takes the pixels as flat 1-D arrays (``r0 g0 b0 r1 g1 b1 ...``), cuts them
 into chunks and runs one conversion loop per chunk, in parallel. Each loop reads a pixel, scales
-it (1/255 for uint8, 1/65535 for uint16, 1 for floats), counts it if a component is not finite,
-converts it and writes it. The arithmetic runs in the output's precision — the type of ``scale``,
-from which every constant is derived (:func:`numbers`) — so a float32 image is converted with
-16-lane float32 vectors, as OpenCV does, and a float64 one to full double precision. A pixel is
+it (1/255 for uint8, 1/65535 for uint16, 1 for floats), notes whether a component is not
+finite, converts it and writes it. The arithmetic runs in the output's precision — the type of
+``scale``, from which every constant is derived (:func:`numbers`) — so a float32 image is
+converted with full-width float32 vectors, as OpenCV does, and a float64 one to full double
+precision. A pixel is
 read whole before it is written, so the output may be the input's own buffer.
 
 Written this way — flat arrays indexed ``3*i + k`` from zero, no data-dependent branches
@@ -19,10 +20,10 @@ The formulas are the notes' ones:
 
 * RGB -> HSV/HSL: Cmax, Cmin, Δ; H = 60° × (the notes' hue case), 0 when Δ = 0; V = Cmax,
   S = Δ/Cmax; or L = (Cmax + Cmin)/2, S = Δ/(1 − |2L − 1|).
-* HSV/HSL -> RGB: C and m from S and V (or L); each channel is ``m + C·f(k)`` with
-  ``k = (n + H/60) mod 6`` and ``f(k) = 1 − clamp(min(k, 4 − k), 0, 1)`` for n = 5, 3, 1 (R, G,
-  B): the notes' sector table in closed form (``f`` is 1 where the table has C, 0 where it has
-  0, and X/C on the ramps between).
+* HSV/HSL -> RGB: C and m from S and V (or L); each channel is ``m + C·f`` with ``s = H/60 mod
+  6`` and ``f = clamp(|s − 3| − 1)`` for R, ``clamp(2 − |s − 2|)`` for G and ``clamp(2 − |s − 4|)``
+  for B (clamped to [0, 1]): the notes' sector table in closed form (``f`` is 1 where the table
+  has C, 0 where it has 0, and X/C on the ramps between), five vector operations a channel.
 * CMY and YIQ and YCbCr: an affine map ``M·rgb + offset``; CMYK: K = min(C, M, Y),
   C' = (C − K)/(1 − K), with pure black (0, 0, 0, 1).
 """
@@ -43,7 +44,6 @@ CMYK_TO_RGB = 6
 
 # Pixels per parallel work item.
 CHUNK = 8192
-_LARGEST = np.finfo(np.float64).max
 
 
 @njit(inline="always")
@@ -72,18 +72,22 @@ def numbers(scale):
 
 
 @njit(inline="always")
-def not_finite(magnitude):
-    """1 if a sum of magnitudes |a| + |b| + ... is NaN or inf (some term is), else 0."""
-    return np.int64(not magnitude <= _LARGEST)
+def not_finite(residue):
+    """Tell whether ``residue``, a sum of terms x − x, is NaN (some x is NaN or ±inf).
+
+    Each x − x is 0 for finite x and NaN otherwise, so the test needs no float64 constant
+    (which would turn a float32 loop into float64) and cannot overflow, as |a| + |b| can.
+    """
+    return residue != residue
 
 
 @njit(inline="always")
 def load3(src, i, scale):
-    """Return pixel ``i``'s three components, scaled, and 1 if one of them is not finite."""
+    """Return pixel ``i``'s three components, scaled, and whether one of them is not finite."""
     a = src[3 * i] * scale
     b = src[3 * i + 1] * scale
     c = src[3 * i + 2] * scale
-    return a, b, c, not_finite(abs(a) + abs(b) + abs(c))
+    return a, b, c, not_finite((a - a) + (b - b) + (c - c))
 
 
 @njit(error_model="numpy")
@@ -92,10 +96,10 @@ def affine_span(src, dst, scale, matrix, offset):
     m10, m11, m12 = matrix[1, 0], matrix[1, 1], matrix[1, 2]
     m20, m21, m22 = matrix[2, 0], matrix[2, 1], matrix[2, 2]
     o0, o1, o2 = offset[0], offset[1], offset[2]
-    bad = 0
+    bad = False
     for i in range(src.shape[0] // 3):
         a, b, c, flag = load3(src, i, scale)
-        bad += flag
+        bad |= flag
         dst[3 * i] = m00 * a + m01 * b + m02 * c + o0
         dst[3 * i + 1] = m10 * a + m11 * b + m12 * c + o1
         dst[3 * i + 2] = m20 * a + m21 * b + m22 * c + o2
@@ -105,10 +109,10 @@ def affine_span(src, dst, scale, matrix, offset):
 @njit(error_model="numpy")
 def rgb_to_hsx_span(src, dst, scale, lightness):
     zero, one, two, four, six, _, _, sixty = numbers(scale)
-    bad = 0
+    bad = False
     for i in range(src.shape[0] // 3):
         r, g, b, flag = load3(src, i, scale)
-        bad += flag
+        bad |= flag
         cmax = larger(larger(r, g), b)
         cmin = smaller(smaller(r, g), b)
         delta = cmax - cmin
@@ -135,43 +139,41 @@ def rgb_to_hsx_span(src, dst, scale, lightness):
 
 
 @njit(inline="always")
-def sector_weight(n, sextant, scale):
-    """f(k) = 1 − clamp(min(k, 4 − k), 0, 1), k = (n + sextant) mod 6: the table entry over C."""
-    zero, one, _, four, six, _, _, _ = numbers(scale)
-    k = n + sextant
-    k = k - six if k >= six else k
-    return one - smaller(larger(smaller(k, four - k), zero), one)
+def clamp(x, zero, one):
+    return smaller(larger(x, zero), one)
 
 
 @njit(error_model="numpy")
 def hsx_to_rgb_span(src, dst, scale, lightness):
     zero, one, two, four, six, sixth, per_degree, _ = numbers(scale)
-    bad = 0
+    three = two + one
+    half = one / two
+    bad = False
     for i in range(src.shape[0] // 3):
         h, s, v, flag = load3(src, i, scale)
-        bad += flag
+        bad |= flag
         sextant = h * per_degree
         sextant = sextant - six * np.floor(sextant * sixth)  # H mod 360: 360 and −60 wrap
         sextant = zero if sextant >= six else sextant
         if lightness:
             chroma = smaller(two * v, two - two * v) * s  # (1 − |2L − 1|)·S, no cancellation
-            low = v - chroma / two
+            low = v - chroma * half
         else:
             chroma = v * s
             low = v - chroma
-        dst[3 * i] = low + chroma * sector_weight(four + one, sextant, scale)
-        dst[3 * i + 1] = low + chroma * sector_weight(two + one, sextant, scale)
-        dst[3 * i + 2] = low + chroma * sector_weight(one, sextant, scale)
+        dst[3 * i] = low + chroma * clamp(abs(sextant - three) - one, zero, one)
+        dst[3 * i + 1] = low + chroma * clamp(two - abs(sextant - two), zero, one)
+        dst[3 * i + 2] = low + chroma * clamp(two - abs(sextant - four), zero, one)
     return bad
 
 
 @njit(error_model="numpy")
 def rgb_to_cmyk_span(src, dst, scale):
     zero, one, _, _, _, _, _, _ = numbers(scale)
-    bad = 0
+    bad = False
     for i in range(src.shape[0] // 3):
         r, g, b, flag = load3(src, i, scale)
-        bad += flag
+        bad |= flag
         cyan = one - r
         magenta = one - g
         yellow = one - b
@@ -188,13 +190,13 @@ def rgb_to_cmyk_span(src, dst, scale):
 @njit(error_model="numpy")
 def cmyk_to_rgb_span(src, dst, scale):
     _, one, _, _, _, _, _, _ = numbers(scale)
-    bad = 0
+    bad = False
     for i in range(src.shape[0] // 4):
         c = src[4 * i] * scale
         m = src[4 * i + 1] * scale
         y = src[4 * i + 2] * scale
         k = src[4 * i + 3] * scale
-        bad += not_finite(abs(c) + abs(m) + abs(y) + abs(k))
+        bad |= not_finite((c - c) + (m - m) + (y - y) + (k - k))
         white = one - k
         dst[3 * i] = (one - c) * white
         dst[3 * i + 1] = (one - m) * white
@@ -218,10 +220,14 @@ def convert_span(src, dst, scale, op, matrix, offset):
 
 @njit(parallel=True)
 def convert_pixels(src, dst, src_channels, dst_channels, scale, op, matrix, offset):
-    """Convert flat ``src`` (N·src_channels,) into flat ``dst``; return the bad-pixel count."""
+    """Convert flat ``src`` (N·src_channels,) into flat ``dst``; return whether any is not finite.
+
+    A flag, not a count: an OR in the loops vectorizes beside float32 arithmetic, where a 64-bit
+    count does not; the caller counts the bad colours when there are some.
+    """
     n = src.shape[0] // src_channels
     chunks = (n + CHUNK - 1) // CHUNK
-    bad = np.zeros(chunks, dtype=np.int64)
+    bad = np.zeros(chunks, dtype=np.bool_)
     for chunk in prange(chunks):
         lo = chunk * CHUNK
         hi = min(n, lo + CHUNK)
@@ -233,17 +239,19 @@ def convert_pixels(src, dst, src_channels, dst_channels, scale, op, matrix, offs
             matrix,
             offset,
         )
-    return bad.sum()
+    return bad.any()
 
 
 @register_warmup
 def warmup() -> None:
-    """Compile the kernel for every input dtype the public API passes it."""
+    """Compile the kernel for every pair of input and result dtypes the public API passes it."""
     matrix = np.eye(3)
     offset = np.zeros(3)
     for dtype, out_dtype in (
         (np.uint8, np.float64),
         (np.uint16, np.float64),
+        (np.uint8, np.float32),  # dtype="float32"
+        (np.uint16, np.float32),
         (np.float32, np.float32),
         (np.float64, np.float64),
     ):

@@ -10,7 +10,10 @@ Input policy, written once in :func:`_prepare`:
   8-bit values and must lie in 0..255.
 * Input of the other models is numbers in that model's own units (hue in degrees), so integers
   are taken at face value: ``hsv_to_rgb([120, 1, 1])`` is pure green.
-* ``float32`` input gives ``float32`` output; everything else gives ``float64``.
+* The result is ``float32`` for ``float32`` input and ``float64`` for everything else, unless
+  ``dtype=`` (float32 or float64) asks for another: integer input is then converted straight
+  into it (a uint8 image to float32 takes 4 bytes a component, not 8), and float input of the
+  other precision is cast first. The arithmetic runs in the result's precision.
 * Booleans, strings, complex and object arrays raise ``TypeError``; a wrong last axis, ragged
   input and NaN or infinite components raise ``ValueError``. The input is never modified.
 
@@ -23,7 +26,7 @@ from __future__ import annotations
 from typing import NamedTuple
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import ArrayLike, DTypeLike, NDArray
 
 from pixelpath.color import _matrices as mx
 
@@ -87,12 +90,28 @@ _REJECTED_KINDS = {
 }
 
 
-def _prepare(values: ArrayLike, name: str, model: str) -> tuple[np.ndarray, float]:
-    """Validate ``values`` as colours of ``model``; return a native, contiguous array and scale.
+def _requested_dtype(dtype: DTypeLike | None) -> np.dtype | None:
+    """Check the ``dtype=`` argument: None, or float32 or float64 in any spelling."""
+    if dtype is None:
+        return None
+    try:
+        resolved = np.dtype(dtype)
+    except TypeError:
+        raise TypeError(f"dtype must be float32 or float64, got {dtype!r}") from None
+    if resolved not in (np.float32, np.float64):
+        raise ValueError(f"dtype must be float32 or float64, got {resolved}")
+    return resolved
+
+
+def _prepare(
+    values: ArrayLike, name: str, model: str, dtype: DTypeLike | None
+) -> tuple[np.ndarray, float, np.dtype]:
+    """Validate ``values`` as colours of ``model``: return kernel-ready array, scale, result dtype.
 
     The array keeps the caller's data where it can (no copy for contiguous float32/float64,
-    uint8 and uint16 input); the scale is applied inside the kernel.
+    uint8 and uint16 input); the scale is applied inside the kernel, in the result's precision.
     """
+    requested = _requested_dtype(dtype)
     try:
         arr = np.asarray(values)
     except ValueError as exc:  # ragged nested lists
@@ -107,10 +126,14 @@ def _prepare(values: ArrayLike, name: str, model: str) -> tuple[np.ndarray, floa
         raise ValueError(
             f"{name} must have shape (..., {channels}) for {model.upper()}, got {arr.shape}"
         )
+    if not arr.dtype.isnative:
+        arr = arr.astype(arr.dtype.newbyteorder("="))
+    default = np.dtype(np.float32 if arr.dtype == np.float32 else np.float64)
+    result = default if requested is None else requested
     scale = 1.0
     if arr.dtype.kind in "iu":
         if model != "rgb":
-            arr = arr.astype(np.float64)
+            arr = arr.astype(result)
         elif arr.dtype == np.uint8:
             scale = 1.0 / 255.0
         elif arr.dtype == np.uint16:
@@ -124,25 +147,19 @@ def _prepare(values: ArrayLike, name: str, model: str) -> tuple[np.ndarray, floa
                 )
             arr = arr.astype(np.uint8)
             scale = 1.0 / 255.0
-    elif arr.dtype != np.float32:
-        arr = arr.astype(np.float64, copy=False)
-    if not arr.dtype.isnative:
-        arr = arr.astype(arr.dtype.newbyteorder("="))
-    return np.ascontiguousarray(arr), scale
+    elif arr.dtype != result:
+        arr = arr.astype(result)
+    return np.ascontiguousarray(arr), scale, result
 
 
-def _result_dtype(arr: np.ndarray) -> type:
-    return np.float32 if arr.dtype == np.float32 else np.float64
-
-
-def _prepare_out(out: np.ndarray | None, shape: tuple[int, ...], dtype: type) -> np.ndarray:
+def _prepare_out(out: np.ndarray | None, shape: tuple[int, ...], dtype: np.dtype) -> np.ndarray:
     if out is None:
         return np.empty(shape, dtype=dtype)
     if not isinstance(out, np.ndarray):
         raise TypeError(f"out must be a numpy array, got {type(out).__name__}")
     if out.shape != shape or out.dtype != dtype or not out.flags.c_contiguous:
         raise ValueError(
-            f"out must be a C-contiguous {np.dtype(dtype).name} array of shape {shape}, "
+            f"out must be a C-contiguous {dtype.name} array of shape {shape}, "
             f"got {out.dtype} {out.shape}"
             + ("" if out.flags.c_contiguous else " (not C-contiguous)")
         )
@@ -151,42 +168,48 @@ def _prepare_out(out: np.ndarray | None, shape: tuple[int, ...], dtype: type) ->
     return out
 
 
-def _apply(conversion: _Conversion, values: ArrayLike, name: str, out: np.ndarray | None):
+def _apply(
+    conversion: _Conversion,
+    values: ArrayLike,
+    name: str,
+    out: np.ndarray | None,
+    dtype: DTypeLike | None = None,
+) -> NDArray[np.floating]:
     from pixelpath.color import _kernels
 
-    src, scale = _prepare(values, name, conversion.src)
-    dtype = _result_dtype(src)
+    src, scale, dtype = _prepare(values, name, conversion.src, dtype)
     dst_channels = MODELS[conversion.dst]
     result = _prepare_out(out, (*src.shape[:-1], dst_channels), dtype)
     # The kernels compute in the precision of scale, matrix and offset: the result's.
     args = (
-        dtype(scale),
+        dtype.type(scale),
         getattr(_kernels, conversion.op),
         conversion.matrix.astype(dtype, copy=False),
         conversion.offset.astype(dtype, copy=False),
     )
     flat_src, flat_dst = src.reshape(-1), result.reshape(-1)
-    # Non-finite input is counted by the kernel and raised below; errstate keeps the pure-Python
+    # Non-finite input is flagged by the kernel and counted below; errstate keeps the pure-Python
     # run (NUMBA_DISABLE_JIT=1) from warning on the way, as the compiled run never does.
     with np.errstate(invalid="ignore", over="ignore"):
         if flat_src.size <= _kernels.CHUNK * src.shape[-1]:
             # One chunk's worth: waking the thread pool would cost more than the work.
             bad = _kernels.convert_span(flat_src, flat_dst, *args)
         else:
-            bad = _kernels.convert_pixels(
-                flat_src, flat_dst, src.shape[-1], dst_channels, *args
-            )
+            bad = _kernels.convert_pixels(flat_src, flat_dst, src.shape[-1], dst_channels, *args)
     if bad:
+        count = np.count_nonzero(~np.isfinite(src).all(axis=-1))
         raise ValueError(
-            f"{name} has {bad} colour(s) with NaN or infinite components; "
+            f"{name} has {count} colour(s) with NaN or infinite components; "
             "mask or replace them before converting"
         )
     return result
 
 
-def _same_model(values: ArrayLike, model: str, out: np.ndarray | None) -> NDArray[np.floating]:
-    src, scale = _prepare(values, "values", model)
-    result = _prepare_out(out, src.shape, _result_dtype(src))
+def _same_model(
+    values: ArrayLike, model: str, out: np.ndarray | None, dtype: DTypeLike | None
+) -> NDArray[np.floating]:
+    src, scale, dtype = _prepare(values, "values", model, dtype)
+    result = _prepare_out(out, src.shape, dtype)
     np.multiply(src, scale, out=result, casting="unsafe")
     if not np.isfinite(result).all():
         raise ValueError("values has NaN or infinite components")
@@ -194,7 +217,12 @@ def _same_model(values: ArrayLike, model: str, out: np.ndarray | None) -> NDArra
 
 
 def convert(
-    values: ArrayLike, src: str = "rgb", dst: str = "hsv", *, out: np.ndarray | None = None
+    values: ArrayLike,
+    src: str = "rgb",
+    dst: str = "hsv",
+    *,
+    dtype: DTypeLike | None = None,
+    out: np.ndarray | None = None,
 ) -> NDArray[np.floating]:
     """Convert colours between any two models, through RGB.
 
@@ -204,13 +232,16 @@ def convert(
         Colours of model ``src`` (four components for CMYK).
     src, dst : {"rgb", "hsv", "hsl", "cmy", "cmyk", "yiq", "ycbcr"}
         Model names, lower case.
+    dtype : {None, "float32", "float64"}, optional
+        The result's dtype: by default float32 for float32 input, else float64. Integer input
+        is converted straight into it (uint8 to float32 takes half the memory of float64).
     out : ndarray, optional
         Destination of the right shape and dtype, C-contiguous, to reuse a buffer.
 
     Returns
     -------
     ndarray
-        Colours of model ``dst``, float32 for float32 input, else float64.
+        Colours of model ``dst``, of the result dtype (see ``dtype``).
 
     Raises
     ------
@@ -233,15 +264,18 @@ def convert(
                 f"unknown colour model {label}={model!r}; choose from {', '.join(MODELS)}"
             )
     if src == dst:
-        return _same_model(values, src, out)
+        return _same_model(values, src, out, dtype)
     if src == "rgb":
-        return _apply(_FROM_RGB[dst], values, "values", out)
+        return _apply(_FROM_RGB[dst], values, "values", out, dtype)
     if dst == "rgb":
-        return _apply(_TO_RGB[src], values, "values", out)
-    return _apply(_FROM_RGB[dst], _apply(_TO_RGB[src], values, "values", None), "values", out)
+        return _apply(_TO_RGB[src], values, "values", out, dtype)
+    rgb = _apply(_TO_RGB[src], values, "values", None, dtype)
+    return _apply(_FROM_RGB[dst], rgb, "values", out)
 
 
-def rgb_to_hsv(rgb: ArrayLike, *, out: np.ndarray | None = None) -> NDArray[np.floating]:
+def rgb_to_hsv(
+    rgb: ArrayLike, *, dtype: DTypeLike | None = None, out: np.ndarray | None = None
+) -> NDArray[np.floating]:
     """Convert RGB to HSV (the notes' single hexcone).
 
     V = Cmax, S = Δ/Cmax (0 for black), H from the notes' three hue cases, in degrees
@@ -251,13 +285,16 @@ def rgb_to_hsv(rgb: ArrayLike, *, out: np.ndarray | None = None) -> NDArray[np.f
     ----------
     rgb : (..., 3) array_like
         Floats in [0, 1], or integers (uint8, uint16, 8-bit values; see the module notes).
+    dtype : {None, "float32", "float64"}, optional
+        The result's dtype: by default float32 for float32 input, else float64. Integer input
+        is converted straight into it (uint8 to float32 takes half the memory of float64).
     out : ndarray, optional
         Destination buffer (same shape as the result, C-contiguous, result dtype).
 
     Returns
     -------
     (..., 3) ndarray
-        (H, S, V), float32 for float32 input, else float64.
+        (H, S, V), of the result dtype (see ``dtype``).
 
     Examples
     --------
@@ -266,11 +303,16 @@ def rgb_to_hsv(rgb: ArrayLike, *, out: np.ndarray | None = None) -> NDArray[np.f
     [60.0, 1.0, 1.0]
     >>> rgb_to_hsv([0.5, 0.5, 0.5]).tolist()
     [0.0, 0.0, 0.5]
+    >>> import numpy as np
+    >>> rgb_to_hsv(np.array([[255, 0, 51]], np.uint8), dtype="float32")
+    array([[348.,   1.,   1.]], dtype=float32)
     """
-    return _apply(_FROM_RGB["hsv"], rgb, "rgb", out)
+    return _apply(_FROM_RGB["hsv"], rgb, "rgb", out, dtype)
 
 
-def hsv_to_rgb(hsv: ArrayLike, *, out: np.ndarray | None = None) -> NDArray[np.floating]:
+def hsv_to_rgb(
+    hsv: ArrayLike, *, dtype: DTypeLike | None = None, out: np.ndarray | None = None
+) -> NDArray[np.floating]:
     """Convert HSV to RGB with the notes' sector table.
 
     C = V·S, X = C·(1 − |(H/60) mod 2 − 1|), m = V − C; (R', G', B') from H's 60° sector, then
@@ -280,6 +322,9 @@ def hsv_to_rgb(hsv: ArrayLike, *, out: np.ndarray | None = None) -> NDArray[np.f
     ----------
     hsv : (..., 3) array_like
         (H in degrees, S in [0, 1], V in [0, 1]).
+    dtype : {None, "float32", "float64"}, optional
+        The result's dtype: by default float32 for float32 input, else float64. Integer input
+        is converted straight into it (uint8 to float32 takes half the memory of float64).
     out : ndarray, optional
         Destination buffer.
 
@@ -296,10 +341,12 @@ def hsv_to_rgb(hsv: ArrayLike, *, out: np.ndarray | None = None) -> NDArray[np.f
     >>> hsv_to_rgb([-60.0, 1.0, 1.0]).tolist()
     [1.0, 0.0, 1.0]
     """
-    return _apply(_TO_RGB["hsv"], hsv, "hsv", out)
+    return _apply(_TO_RGB["hsv"], hsv, "hsv", out, dtype)
 
 
-def rgb_to_hsl(rgb: ArrayLike, *, out: np.ndarray | None = None) -> NDArray[np.floating]:
+def rgb_to_hsl(
+    rgb: ArrayLike, *, dtype: DTypeLike | None = None, out: np.ndarray | None = None
+) -> NDArray[np.floating]:
     """Convert RGB to HSL (the double hexcone).
 
     L = (Cmax + Cmin)/2, S = Δ/(1 − |2L − 1|) (0 for greys), H as for HSV.
@@ -308,6 +355,9 @@ def rgb_to_hsl(rgb: ArrayLike, *, out: np.ndarray | None = None) -> NDArray[np.f
     ----------
     rgb : (..., 3) array_like
         RGB colours (see the module notes for integer input).
+    dtype : {None, "float32", "float64"}, optional
+        The result's dtype: by default float32 for float32 input, else float64. Integer input
+        is converted straight into it (uint8 to float32 takes half the memory of float64).
     out : ndarray, optional
         Destination buffer.
 
@@ -322,10 +372,12 @@ def rgb_to_hsl(rgb: ArrayLike, *, out: np.ndarray | None = None) -> NDArray[np.f
     >>> rgb_to_hsl([1.0, 0.0, 0.0]).tolist()
     [0.0, 1.0, 0.5]
     """
-    return _apply(_FROM_RGB["hsl"], rgb, "rgb", out)
+    return _apply(_FROM_RGB["hsl"], rgb, "rgb", out, dtype)
 
 
-def hsl_to_rgb(hsl: ArrayLike, *, out: np.ndarray | None = None) -> NDArray[np.floating]:
+def hsl_to_rgb(
+    hsl: ArrayLike, *, dtype: DTypeLike | None = None, out: np.ndarray | None = None
+) -> NDArray[np.floating]:
     """Convert HSL to RGB.
 
     C = (1 − |2L − 1|)·S, m = L − C/2, then the same sector table as HSV.
@@ -334,6 +386,9 @@ def hsl_to_rgb(hsl: ArrayLike, *, out: np.ndarray | None = None) -> NDArray[np.f
     ----------
     hsl : (..., 3) array_like
         (H in degrees, S in [0, 1], L in [0, 1]).
+    dtype : {None, "float32", "float64"}, optional
+        The result's dtype: by default float32 for float32 input, else float64. Integer input
+        is converted straight into it (uint8 to float32 takes half the memory of float64).
     out : ndarray, optional
         Destination buffer.
 
@@ -348,16 +403,21 @@ def hsl_to_rgb(hsl: ArrayLike, *, out: np.ndarray | None = None) -> NDArray[np.f
     >>> hsl_to_rgb([240, 1, 0.5]).tolist()
     [0.0, 0.0, 1.0]
     """
-    return _apply(_TO_RGB["hsl"], hsl, "hsl", out)
+    return _apply(_TO_RGB["hsl"], hsl, "hsl", out, dtype)
 
 
-def rgb_to_cmy(rgb: ArrayLike, *, out: np.ndarray | None = None) -> NDArray[np.floating]:
+def rgb_to_cmy(
+    rgb: ArrayLike, *, dtype: DTypeLike | None = None, out: np.ndarray | None = None
+) -> NDArray[np.floating]:
     """Convert RGB to CMY: the complements C = 1 − R, M = 1 − G, Y = 1 − B.
 
     Parameters
     ----------
     rgb : (..., 3) array_like
         RGB colours (see the module notes for integer input).
+    dtype : {None, "float32", "float64"}, optional
+        The result's dtype: by default float32 for float32 input, else float64. Integer input
+        is converted straight into it (uint8 to float32 takes half the memory of float64).
     out : ndarray, optional
         Destination buffer.
 
@@ -372,16 +432,21 @@ def rgb_to_cmy(rgb: ArrayLike, *, out: np.ndarray | None = None) -> NDArray[np.f
     >>> rgb_to_cmy([255, 255, 0]).tolist()
     [0.0, 0.0, 1.0]
     """
-    return _apply(_FROM_RGB["cmy"], rgb, "rgb", out)
+    return _apply(_FROM_RGB["cmy"], rgb, "rgb", out, dtype)
 
 
-def cmy_to_rgb(cmy: ArrayLike, *, out: np.ndarray | None = None) -> NDArray[np.floating]:
+def cmy_to_rgb(
+    cmy: ArrayLike, *, dtype: DTypeLike | None = None, out: np.ndarray | None = None
+) -> NDArray[np.floating]:
     """Convert CMY to RGB: R = 1 − C, G = 1 − M, B = 1 − Y.
 
     Parameters
     ----------
     cmy : (..., 3) array_like
         (C, M, Y) in [0, 1].
+    dtype : {None, "float32", "float64"}, optional
+        The result's dtype: by default float32 for float32 input, else float64. Integer input
+        is converted straight into it (uint8 to float32 takes half the memory of float64).
     out : ndarray, optional
         Destination buffer.
 
@@ -396,10 +461,12 @@ def cmy_to_rgb(cmy: ArrayLike, *, out: np.ndarray | None = None) -> NDArray[np.f
     >>> cmy_to_rgb([1, 1, 0]).tolist()
     [0.0, 0.0, 1.0]
     """
-    return _apply(_TO_RGB["cmy"], cmy, "cmy", out)
+    return _apply(_TO_RGB["cmy"], cmy, "cmy", out, dtype)
 
 
-def rgb_to_cmyk(rgb: ArrayLike, *, out: np.ndarray | None = None) -> NDArray[np.floating]:
+def rgb_to_cmyk(
+    rgb: ArrayLike, *, dtype: DTypeLike | None = None, out: np.ndarray | None = None
+) -> NDArray[np.floating]:
     """Convert RGB to CMYK: K = min(C, M, Y) and C' = (C − K)/(1 − K), likewise M', Y'.
 
     Pure black gives (0, 0, 0, 1), with no division by zero.
@@ -408,6 +475,9 @@ def rgb_to_cmyk(rgb: ArrayLike, *, out: np.ndarray | None = None) -> NDArray[np.
     ----------
     rgb : (..., 3) array_like
         RGB colours (see the module notes for integer input).
+    dtype : {None, "float32", "float64"}, optional
+        The result's dtype: by default float32 for float32 input, else float64. Integer input
+        is converted straight into it (uint8 to float32 takes half the memory of float64).
     out : ndarray, optional
         Destination buffer of shape (..., 4).
 
@@ -424,16 +494,21 @@ def rgb_to_cmyk(rgb: ArrayLike, *, out: np.ndarray | None = None) -> NDArray[np.
     >>> rgb_to_cmyk([1.0, 0.5, 0.0]).tolist()
     [0.0, 0.5, 1.0, 0.0]
     """
-    return _apply(_FROM_RGB["cmyk"], rgb, "rgb", out)
+    return _apply(_FROM_RGB["cmyk"], rgb, "rgb", out, dtype)
 
 
-def cmyk_to_rgb(cmyk: ArrayLike, *, out: np.ndarray | None = None) -> NDArray[np.floating]:
+def cmyk_to_rgb(
+    cmyk: ArrayLike, *, dtype: DTypeLike | None = None, out: np.ndarray | None = None
+) -> NDArray[np.floating]:
     """Convert CMYK to RGB: R = (1 − C')(1 − K), likewise G and B.
 
     Parameters
     ----------
     cmyk : (..., 4) array_like
         (C', M', Y', K) in [0, 1].
+    dtype : {None, "float32", "float64"}, optional
+        The result's dtype: by default float32 for float32 input, else float64. Integer input
+        is converted straight into it (uint8 to float32 takes half the memory of float64).
     out : ndarray, optional
         Destination buffer of shape (..., 3).
 
@@ -448,16 +523,21 @@ def cmyk_to_rgb(cmyk: ArrayLike, *, out: np.ndarray | None = None) -> NDArray[np
     >>> cmyk_to_rgb([0, 0, 1, 0.5]).tolist()
     [0.5, 0.5, 0.0]
     """
-    return _apply(_TO_RGB["cmyk"], cmyk, "cmyk", out)
+    return _apply(_TO_RGB["cmyk"], cmyk, "cmyk", out, dtype)
 
 
-def rgb_to_yiq(rgb: ArrayLike, *, out: np.ndarray | None = None) -> NDArray[np.floating]:
+def rgb_to_yiq(
+    rgb: ArrayLike, *, dtype: DTypeLike | None = None, out: np.ndarray | None = None
+) -> NDArray[np.floating]:
     """Convert RGB to YIQ with the notes' NTSC matrix.
 
     Parameters
     ----------
     rgb : (..., 3) array_like
         RGB colours (see the module notes for integer input).
+    dtype : {None, "float32", "float64"}, optional
+        The result's dtype: by default float32 for float32 input, else float64. Integer input
+        is converted straight into it (uint8 to float32 takes half the memory of float64).
     out : ndarray, optional
         Destination buffer.
 
@@ -472,10 +552,12 @@ def rgb_to_yiq(rgb: ArrayLike, *, out: np.ndarray | None = None) -> NDArray[np.f
     >>> [round(v, 3) for v in rgb_to_yiq([1.0, 1.0, 0.0]).tolist()]
     [0.886, 0.322, -0.312]
     """
-    return _apply(_FROM_RGB["yiq"], rgb, "rgb", out)
+    return _apply(_FROM_RGB["yiq"], rgb, "rgb", out, dtype)
 
 
-def yiq_to_rgb(yiq: ArrayLike, *, out: np.ndarray | None = None) -> NDArray[np.floating]:
+def yiq_to_rgb(
+    yiq: ArrayLike, *, dtype: DTypeLike | None = None, out: np.ndarray | None = None
+) -> NDArray[np.floating]:
     """Convert YIQ to RGB with the exact inverse of the notes' matrix.
 
     The notes print the inverse rounded to three decimals; the exact inverse makes round trips
@@ -485,6 +567,9 @@ def yiq_to_rgb(yiq: ArrayLike, *, out: np.ndarray | None = None) -> NDArray[np.f
     ----------
     yiq : (..., 3) array_like
         (Y, I, Q).
+    dtype : {None, "float32", "float64"}, optional
+        The result's dtype: by default float32 for float32 input, else float64. Integer input
+        is converted straight into it (uint8 to float32 takes half the memory of float64).
     out : ndarray, optional
         Destination buffer.
 
@@ -499,10 +584,12 @@ def yiq_to_rgb(yiq: ArrayLike, *, out: np.ndarray | None = None) -> NDArray[np.f
     >>> yiq_to_rgb([0.299, 0.596, 0.211]).round(6) + 0.0  # + 0.0 turns -0.0 into 0.0
     array([1., 0., 0.])
     """
-    return _apply(_TO_RGB["yiq"], yiq, "yiq", out)
+    return _apply(_TO_RGB["yiq"], yiq, "yiq", out, dtype)
 
 
-def rgb_to_ycbcr(rgb: ArrayLike, *, out: np.ndarray | None = None) -> NDArray[np.floating]:
+def rgb_to_ycbcr(
+    rgb: ArrayLike, *, dtype: DTypeLike | None = None, out: np.ndarray | None = None
+) -> NDArray[np.floating]:
     """Convert RGB to YCbCr, ITU-R BT.601 full range with every component in [0, 1].
 
     Y = 0.299 R + 0.587 G + 0.114 B, Cb = 0.5 + (B − Y)/1.772, Cr = 0.5 + (R − Y)/1.402.
@@ -511,6 +598,9 @@ def rgb_to_ycbcr(rgb: ArrayLike, *, out: np.ndarray | None = None) -> NDArray[np
     ----------
     rgb : (..., 3) array_like
         RGB colours (see the module notes for integer input).
+    dtype : {None, "float32", "float64"}, optional
+        The result's dtype: by default float32 for float32 input, else float64. Integer input
+        is converted straight into it (uint8 to float32 takes half the memory of float64).
     out : ndarray, optional
         Destination buffer.
 
@@ -525,16 +615,21 @@ def rgb_to_ycbcr(rgb: ArrayLike, *, out: np.ndarray | None = None) -> NDArray[np
     >>> [round(v, 6) for v in rgb_to_ycbcr([0.0, 0.0, 1.0]).tolist()]
     [0.114, 1.0, 0.418688]
     """
-    return _apply(_FROM_RGB["ycbcr"], rgb, "rgb", out)
+    return _apply(_FROM_RGB["ycbcr"], rgb, "rgb", out, dtype)
 
 
-def ycbcr_to_rgb(ycbcr: ArrayLike, *, out: np.ndarray | None = None) -> NDArray[np.floating]:
+def ycbcr_to_rgb(
+    ycbcr: ArrayLike, *, dtype: DTypeLike | None = None, out: np.ndarray | None = None
+) -> NDArray[np.floating]:
     """Convert BT.601 full-range YCbCr (all in [0, 1]) to RGB.
 
     Parameters
     ----------
     ycbcr : (..., 3) array_like
         (Y, Cb, Cr).
+    dtype : {None, "float32", "float64"}, optional
+        The result's dtype: by default float32 for float32 input, else float64. Integer input
+        is converted straight into it (uint8 to float32 takes half the memory of float64).
     out : ndarray, optional
         Destination buffer.
 
@@ -549,4 +644,4 @@ def ycbcr_to_rgb(ycbcr: ArrayLike, *, out: np.ndarray | None = None) -> NDArray[
     >>> [round(v, 6) for v in ycbcr_to_rgb([0.5, 0.5, 0.5]).tolist()]
     [0.5, 0.5, 0.5]
     """
-    return _apply(_TO_RGB["ycbcr"], ycbcr, "ycbcr", out)
+    return _apply(_TO_RGB["ycbcr"], ycbcr, "ycbcr", out, dtype)

@@ -17,7 +17,7 @@ from pathlib import Path
 import numpy as np
 from PIL import Image, ImageDraw, ImageFont
 
-from pixelpath.io.images import write_atomic
+from pixelpath.io.images import write_bytes
 
 # The palette of every figure (RGB). Tests look pixels up by these names.
 COLOURS = {
@@ -236,10 +236,10 @@ def save(image: Image.Image, path: str | os.PathLike) -> Path:
     if fmt is None:
         raise ValueError(f"unknown image extension {path.suffix!r} for {path}; use .png or .gif")
     if fmt == "GIF":
-        return write_atomic(path, gif_bytes([image], [1000]))
+        return _write(path, gif_bytes([image], [1000]))
     buffer = io.BytesIO()
     image.save(buffer, format=fmt)
-    return write_atomic(path, buffer.getvalue())
+    return _write(path, buffer.getvalue())
 
 
 def save_animation(frames: Sequence[Image.Image], durations: Sequence[int],
@@ -248,4 +248,12 @@ def save_animation(frames: Sequence[Image.Image], durations: Sequence[int],
     path = Path(path)
     if path.suffix.lower() != ".gif":
         raise ValueError(f"animations are written as GIF; give a .gif path, got {str(path)!r}")
-    return write_atomic(path, gif_bytes(frames, durations))
+    return _write(path, gif_bytes(frames, durations))
+
+
+def _write(path: Path, data: bytes) -> Path:
+    """Write a figure's bytes atomically, saying plainly when the folder is missing."""
+    if not path.parent.is_dir():
+        raise FileNotFoundError(f"output directory does not exist: {path.parent}")
+    write_bytes(path, data)
+    return path

@@ -33,6 +33,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from pixelpath._threads import in_runs, in_threads
 from pixelpath.renderer import Frame, RenderOptions, View
 from pixelpath.scene import Scene
 
@@ -42,6 +43,8 @@ __all__ = [
     "Lighting",
     "Prepared",
     "Visibility",
+    "in_runs",
+    "in_threads",
     "paint",
     "prepare",
     "shade",
@@ -277,9 +280,13 @@ def paint(prepared: Prepared, view: View, order: np.ndarray) -> Visibility:
     visibility = visibility_buffers(view)
     order = np.ascontiguousarray(order, dtype=np.intp)
     offsets, items = binned(prepared, view, order)
-    _kernels.paint_bands(
-        prepared.setup, prepared.rows, offsets, items, order, _kernels.BAND_ROWS, view.x0,
-        view.y0, *visibility,
+    _, band_list = bands(view)
+    in_runs(
+        lambda run: _kernels.paint_bands(
+            run, prepared.setup, prepared.rows, offsets, items, order, _kernels.BAND_ROWS,
+            view.x0, view.y0, *visibility,
+        ),
+        band_list,
     )
     return visibility
 
@@ -353,11 +360,13 @@ def shade(
     kernel_surfaces = surfaces(prepared, scene)
     _, order = bands(view)
     runs = slices(view)
-    for start, stop in runs:
+    def shade_run(run: np.ndarray) -> None:
         _kernels.shade_bands(
-            order[start:stop], _kernels.BAND_ROWS, view.x0, view.y0, *visibility,
-            kernel_surfaces, out,
+            run, _kernels.BAND_ROWS, view.x0, view.y0, *visibility, kernel_surfaces, out
         )
+
+    for start, stop in runs:
+        in_runs(shade_run, order[start:stop])
         options.progress(SHADE_SLICES // len(runs))
     return Frame(out.rgb, out.depth, out.object_id, prepared.stats, report)
 

@@ -63,11 +63,14 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     surfaces = pipeline.surfaces(prepared, scene)
     _, order = pipeline.bands(view)
     runs = pipeline.slices(view)
-    for start, stop in runs:
+    def render_run(run: np.ndarray) -> None:
         _kernels.render_bands(
-            order[start:stop], prepared.setup, prepared.rows, offsets, items,
-            _kernels.BAND_ROWS, view.x0, view.y0, *visibility, surfaces, out,
+            run, prepared.setup, prepared.rows, offsets, items, _kernels.BAND_ROWS, view.x0,
+            view.y0, *visibility, surfaces, out,
         )
+
+    for start, stop in runs:
+        pipeline.in_runs(render_run, order[start:stop])
         options.progress(pipeline.SHADE_SLICES // len(runs))
     report = _report(prepared, view, visibility) if options.explain else None
     return Frame(out.rgb, out.depth, out.object_id, prepared.stats, report)

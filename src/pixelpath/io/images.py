@@ -80,50 +80,63 @@ def write_image(path: str | os.PathLike, rgb: np.ndarray, *, gamma: float | None
     >>> from pixelpath.io import write_image
     >>> write_image(os.path.join(tempfile.mkdtemp(), "grey.png"), np.full((2, 2, 3), 0.5))
     """
+    path = Path(path)
+    if not path.parent.is_dir():
+        raise FileNotFoundError(f"output directory does not exist: {path.parent}")
+    write_bytes(path, encode_image(rgb, path.suffix, gamma=gamma))
+
+
+def image_format(suffix: str) -> str:
+    """Return Pillow's format name for a file extension such as ``".png"``; ValueError if none.
+
+    Examples
+    --------
+    >>> from pixelpath.io.images import image_format
+    >>> image_format(".PNG")
+    'PNG'
+    """
+    from PIL import Image as PILImage
+
+    fmt = PILImage.registered_extensions().get(suffix.lower())
+    if fmt is None:
+        raise ValueError(f"unknown image extension {suffix!r}; use .png, .jpg, ...")
+    return fmt
+
+
+def encode_image(rgb: np.ndarray, suffix: str, *, gamma: float | None = None) -> bytes:
+    """Return the bytes of the image file ``write_image`` writes for extension ``suffix``.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from pixelpath.io.images import encode_image
+    >>> encode_image(np.zeros((1, 1, 3)), ".png")[1:4]
+    b'PNG'
+    """
     from PIL import Image as PILImage
 
     rgb = np.asarray(rgb)
     if rgb.ndim != 3 or rgb.shape[-1] != 3:
         raise ValueError(f"rgb must have shape (H, W, 3), got {rgb.shape}")
-    path = Path(path)
-    if not path.parent.is_dir():
-        raise FileNotFoundError(f"output directory does not exist: {path.parent}")
-    image = PILImage.fromarray(to_uint8(rgb, gamma))
-    fmt = PILImage.registered_extensions().get(path.suffix.lower())
-    if fmt is None:
-        raise ValueError(f"unknown image extension {path.suffix!r} for {path}; use .png, .jpg, ...")
+    fmt = image_format(suffix)
     buffer = io.BytesIO()
-    image.save(buffer, format=fmt)
-    write_atomic(path, buffer.getvalue())
+    PILImage.fromarray(to_uint8(rgb, gamma)).save(buffer, format=fmt)
+    return buffer.getvalue()
 
 
-def write_atomic(path: str | os.PathLike, data: bytes) -> Path:
-    """Write ``data`` to ``path`` through a temporary file in the same folder, then rename.
-
-    A crash never leaves a half-written file: readers see the old file or the new one.
-
-    Parameters
-    ----------
-    path : str or path-like
-        Destination; its directory must exist.
-    data : bytes
-        The file's contents.
-
-    Returns
-    -------
-    pathlib.Path
-        The file written.
+def write_bytes(path: str | os.PathLike, data: bytes) -> None:
+    """Write ``data`` to ``path`` atomically: a temporary file in the same folder, then a rename.
 
     Examples
     --------
-    >>> import os, tempfile
-    >>> from pixelpath.io.images import write_atomic
-    >>> write_atomic(os.path.join(tempfile.mkdtemp(), "note.txt"), b"hello").read_bytes()
-    b'hello'
+    >>> import pathlib, tempfile
+    >>> from pixelpath.io.images import write_bytes
+    >>> path = pathlib.Path(tempfile.mkdtemp()) / "note.txt"
+    >>> write_bytes(path, b"done")
+    >>> path.read_bytes()
+    b'done'
     """
     path = Path(path)
-    if not path.parent.is_dir():
-        raise FileNotFoundError(f"output directory does not exist: {path.parent}")
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     try:
         if hasattr(os, "fchmod"):  # mkstemp makes 0600; give the file the usual permissions
@@ -134,7 +147,6 @@ def write_atomic(path: str | os.PathLike, data: bytes) -> Path:
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
         raise
-    return path
 
 
 def _new_file_mode() -> int:

@@ -33,7 +33,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from pixelpath._jit import njit, prange, register_warmup
+from pixelpath._jit import njit, register_warmup
 from pixelpath.clip._kernels import PLANE, clip_stage
 from pixelpath.lighting._kernels import shade_planar, shade_point
 
@@ -204,7 +204,7 @@ def clip_triangles(attributes, triangles, crossing):
     for t in crossing:
         for corner in range(3):
             _copy_row(attributes, triangles[t, corner], polygon, corner)
-        n = 3
+        n = triangles.shape[1]  # 3, typed int64 rather than literal (one clip_stage build)
         src, dst = polygon, scratch
         for p in range(6):
             n = clip_stage(src, n, FRUSTUM_PLANES[p], dst, untraced)
@@ -285,6 +285,9 @@ def _above(xa, ya, xb, yb):
     return ya < yb or (ya == yb and xa < xb)
 
 
+MIN_AREA2 = float(np.finfo(np.float64).tiny)  # smallest normal: its inverse (4.5e307) is finite
+
+
 @njit
 def setup_triangles(screen, triangles, row_first, row_stop, setup, rows):
     """Fill the set-up record (T, SETUP_FIELDS) and the covered rows [first, stop) (T, 2).
@@ -302,8 +305,10 @@ def setup_triangles(screen, triangles, row_first, row_stop, setup, rows):
         area2 = (xb - xa) * (yc - ya) - (xc - xa) * (yb - ya)
         rows[t, 0] = 0
         rows[t, 1] = 0
-        if not (math.isfinite(area2) and area2 != 0.0):
-            continue  # degenerate or non-finite: covers no pixel
+        # Degenerate, non-finite, or so thin that 1/area overflows (a subnormal area): no
+        # pixel. Tested on |area| rather than on 1/area, which would warn without the JIT.
+        if not (math.isfinite(area2) and abs(area2) >= MIN_AREA2):
+            continue
         inv = 1.0 / area2
         record = setup[t]
         _store3(record, S1_PLANE, _plane(xa, ya, 0.0, xb, yb, 1.0, xc, yc, 0.0, inv))
@@ -357,6 +362,32 @@ def scanline_span(record, y, col_first, col_stop):
     first = max(math.ceil(x_left - 0.5), float(col_first))
     stop = min(math.ceil(x_right - 0.5), float(col_stop))
     return int(first), int(stop)
+
+
+# How much nearer (larger 1/w) one surface must be than another, relative to the size of the
+# terms its value is computed from, before a method decides a whole span or area from its ends
+# or corners (scan-line, Warnock). Rounding moves a computed 1/w by a few units in the last place
+# of those terms (about 1e-16 of them); with a margin far above that, the surface found nearer
+# at the ends is nearer, as the z-buffer computes it, at every pixel between them. Closer calls
+# are settled pixel by pixel with the z-buffer's own test (:func:`wins_depth_test`).
+NEARER_MARGIN = 1e-12
+
+
+@njit(inline="always")
+def clearly_nearer(value, other, scale):
+    """Whether 1/w ``value`` beats ``other`` by more than rounding of terms of size ``scale``."""
+    return value - other > NEARER_MARGIN * scale
+
+
+@njit(inline="always")
+def wins_depth_test(value, t, best_value, best_t):
+    """Return whether triangle t, at 1/w ``value``, replaces the best: the z-buffer's test.
+
+    Larger 1/w is nearer; a tie goes to the lower triangle index (the z-buffer visits triangles
+    in ascending order and replaces only on strictly nearer). Start from (0.0, -1): nothing at
+    1/w <= 0 is drawn, as in the z-buffer, whose buffer starts at 0.
+    """
+    return value > best_value or (value == best_value and t < best_t)
 
 
 @njit
@@ -430,14 +461,16 @@ def _rasterize_band(setup, rows, offsets, items, band, band_rows, x0, y0, inv_de
                     triangle_id[j - y0, i - x0] = t
 
 
-@njit(parallel=True)
-def rasterize_bands(setup, rows, offsets, items, band_rows, x0, y0, inv_depth, triangle_id):
-    """Depth-test every triangle's pixels, keeping the nearest (largest 1/w) per pixel.
+@njit
+def rasterize_bands(bands, setup, rows, offsets, items, band_rows, x0, y0, inv_depth,
+                    triangle_id):
+    """Depth-test the triangles' pixels in the listed bands, keeping the nearest (largest 1/w).
 
     Each band first clears its rows of ``inv_depth`` (h, w) to 0 (infinitely far) and of
     ``triangle_id`` (h, w) to -1 (nothing), so the buffers may hold anything on entry.
     """
-    for band in prange(offsets.shape[0] - 1):
+    for k in range(bands.shape[0]):
+        band = bands[k]
         _rasterize_band(
             setup, rows, offsets, items, band, band_rows, x0, y0, inv_depth, triangle_id
         )
@@ -467,13 +500,15 @@ def _paint_band(setup, rows, offsets, items, order, band, band_rows, x0, y0, inv
                 triangle_id[j - y0, i - x0] = t
 
 
-@njit(parallel=True)
-def paint_bands(setup, rows, offsets, items, order, band_rows, x0, y0, inv_depth, triangle_id):
-    """Draw the triangles ``order[items[...]]`` of each band in list order (painter's drawing).
+@njit
+def paint_bands(bands, setup, rows, offsets, items, order, band_rows, x0, y0, inv_depth,
+                triangle_id):
+    """Draw the triangles ``order[items[...]]`` of each listed band in list order (painter's).
 
     ``offsets``/``items`` bin the positions of ``order`` (not triangle indices) per band.
     """
-    for band in prange(offsets.shape[0] - 1):
+    for k in range(bands.shape[0]):
+        band = bands[k]
         _paint_band(
             setup, rows, offsets, items, order, band, band_rows, x0, y0, inv_depth, triangle_id
         )
@@ -502,11 +537,11 @@ def perspective_weights(record, x, y):
     return t0 * scale, t1 * scale, t2 * scale
 
 
-@njit(parallel=True)
-def interpolate_values(setup, triangles, values, triangle_id, out):
-    """Interpolate per-vertex values (V, C) over the drawn pixels into out (H, W, C)."""
-    height, width = triangle_id.shape
-    for j in prange(height):
+@njit
+def interpolate_values(first, stop, setup, triangles, values, triangle_id, out):
+    """Interpolate per-vertex values (V, C) over the drawn pixels of rows [first, stop)."""
+    width = triangle_id.shape[1]
+    for j in range(first, stop):
         for i in range(width):
             t = triangle_id[j, i]
             if t < 0:
@@ -519,13 +554,15 @@ def interpolate_values(setup, triangles, values, triangle_id, out):
                 )
 
 
-@njit(parallel=True)
-def shade_points(points, normals, flip, owner, materials, lights, ambient, eye, blinn, out):
-    """Unclamped intensities (N, 3) at points with unit normals, each with its owner's material.
+@njit
+def shade_points(first, stop, points, normals, flip, owner, materials, lights, ambient, eye,
+                 blinn, out):
+    """Unclamped intensities at points [first, stop) with unit normals, into out (N, 3).
 
-    Where ``flip`` is set the normal is reversed first (a surface seen from behind).
+    Each point has its owner's material; where ``flip`` is set the normal is reversed first
+    (a surface seen from behind).
     """
-    for p in prange(points.shape[0]):
+    for p in range(first, stop):
         sign = -1.0 if flip[p] else 1.0
         shade_point(
             points[p, 0],
@@ -568,17 +605,17 @@ def _new_batch():
     )
 
 
-@njit(parallel=True)
+@njit
 def render_bands(bands, setup, rows, offsets, items, band_rows, x0, y0, inv_depth, triangle_id,
                  surfaces, out):
     """Rasterize the listed bands of rows with the depth test, then shade them (the z-buffer).
 
-    One parallel pass: a band's depth and triangle buffers are still in cache when it is
-    shaded. Threads take contiguous runs of ``bands``; listing the bands interleaved (even
-    ones, then odd ones) gives each thread rows from all over the image, so the work is even.
+    One pass per band: its depth and triangle buffers are still in cache when it is shaded.
+    Serial, and called on runs of the band list from several threads at once (it releases
+    the GIL): a ``parallel=True`` loop cost seconds more to compile on a first run.
     """
     height = inv_depth.shape[0]
-    for k in prange(bands.shape[0]):
+    for k in range(bands.shape[0]):
         band = bands[k]
         _rasterize_band(
             setup, rows, offsets, items, band, band_rows, x0, y0, inv_depth, triangle_id
@@ -589,7 +626,7 @@ def render_bands(bands, setup, rows, offsets, items, band_rows, x0, y0, inv_dept
             _shade_row(j, x0, y0, triangle_id, inv_depth, surfaces, out, batch)
 
 
-@njit(parallel=True)
+@njit
 def shade_bands(bands, band_rows, x0, y0, inv_depth, triangle_id, surfaces, out):
     """Shade the listed bands from visibility buffers a hidden-surface method filled.
 
@@ -600,7 +637,7 @@ def shade_bands(bands, band_rows, x0, y0, inv_depth, triangle_id, surfaces, out)
     ``out``.
     """
     height = inv_depth.shape[0]
-    for k in prange(bands.shape[0]):
+    for k in range(bands.shape[0]):
         batch = _new_batch()
         first, stop = _band_rows(bands[k], band_rows, y0, height)
         for j in range(first, stop):
@@ -618,7 +655,7 @@ def _shade_row(j, x0, y0, triangle_id, inv_depth, surfaces, out, batch):
     s = surfaces
     row = j - y0
     rgb = out.rgb[row]
-    count = 0
+    count = np.intp(0)  # not a literal 0: that would compile a second _shade_batch
     batch_object = -1
     line_triangle = -1
     line = (0.0,) * 14
@@ -645,7 +682,7 @@ def _shade_row(j, x0, y0, triangle_id, inv_depth, surfaces, out, batch):
             continue
         if count == SHADE_BATCH or (count > 0 and s.info[t, 0] != batch_object):
             _shade_batch(count, batch, s.materials[batch_object], s, rgb)
-            count = 0
+            count = np.intp(0)
         batch_object = s.info[t, 0]
         if t != line_triangle:
             line_triangle = t
@@ -752,11 +789,25 @@ def _shade_batch(count, batch, material, surfaces, rgb_row):
             rgb_row[i, channel] = _clamp01(batch.shaded[channel, q])
 
 
-@register_warmup
-def warmup() -> None:
-    """Compile every raster kernel on one small triangle."""
+# Warm-up in three groups that compile independently (pixelpath._warm compiles groups in
+# separate processes at once on a first run): each builds its inputs by hand rather than with
+# another group's kernels. Values do not matter, only types: Numba compiles per type.
+def _tiny_triangle():
+    """One triangle's inputs: clip (3, 4), triangles (1, 3), setup, rows, bins, buffers."""
     clip = np.array([[-0.5, -0.5, 0.0, 1.0], [0.5, -0.5, 0.0, 1.0], [0.0, 0.5, 0.0, 1.0]])
     triangles = np.array([[0, 1, 2]], dtype=np.intp)
+    setup = np.zeros((1, SETUP_FIELDS))
+    rows = np.zeros((1, 2), dtype=np.intp)
+    offsets = np.array([0, 1], dtype=np.intp)
+    items = np.zeros(1, dtype=np.intp)
+    inv_depth = np.empty((8, 8))
+    triangle_id = np.empty((8, 8), dtype=np.int32)
+    return clip, triangles, setup, rows, offsets, items, inv_depth, triangle_id
+
+
+def warm_front() -> None:
+    """Compile the front end's kernels: cull, classify, clip, divide, set up, bin, light."""
+    clip, triangles, setup, rows, _, _, _, _ = _tiny_triangle()
     status = np.empty(1, dtype=np.int8)
     classify_triangles(clip, triangles, np.ones(1, dtype=np.bool_), status)
     normal = np.array([[0.0, 0.0, 1.0]])
@@ -764,37 +815,55 @@ def warmup() -> None:
     clip_triangles(np.zeros((3, 10)), triangles, np.zeros(1, dtype=np.intp))
     screen = np.empty((3, 3))
     clip_to_screen(clip, 8, 8, screen)
-    setup = np.zeros((1, SETUP_FIELDS))
-    rows = np.zeros((1, 2), dtype=np.intp)
     setup_triangles(screen, triangles, 0, 8, setup, rows)
-    offsets, items = bin_triangles(rows, 1, BAND_ROWS, 0)
-    inv_depth = np.empty((8, 8))
-    triangle_id = np.empty((8, 8), dtype=np.int32)
-    rasterize_bands(setup, rows, offsets, items, BAND_ROWS, 0, 0, inv_depth, triangle_id)
-    order = np.zeros(1, dtype=np.intp)
-    paint_bands(setup, rows, offsets, items, order, BAND_ROWS, 0, 0, inv_depth, triangle_id)
-    count_coverage(setup, rows, 0, 0, np.zeros((8, 8), dtype=np.int32))
-    interpolate_values(setup, triangles, np.ones((3, 1)), triangle_id, np.zeros((8, 8, 1)))
+    bin_triangles(rows, 1, BAND_ROWS, 0)
     normals = np.zeros((3, 3))
     normals[:, 2] = 1.0
-    material = np.array([[1.0, 1.0, 1.0, 0.1, 0.7, 0.3, 32.0, 0.0]])
-    lights = np.array([[0.0, 0.0, 0.0, 5.0, 1.0, 1.0, 1.0]])
-    positions = clip[:, :3].copy()
     shade_points(
-        positions, normals, np.zeros(3, np.bool_), np.zeros(3, np.intp), material, lights,
-        np.full(3, 0.1), np.zeros(3), False, np.empty((3, 3)),
+        0, 3, clip[:, :3].copy(), normals, np.zeros(3, np.bool_), np.zeros(3, np.intp),
+        np.array([[1.0, 1.0, 1.0, 0.1, 0.7, 0.3, 32.0, 0.0]]),
+        np.array([[0.0, 0.0, 0.0, 5.0, 1.0, 1.0, 1.0]]), np.full(3, 0.1), np.zeros(3), False,
+        np.empty((3, 3)),
     )
+
+
+def warm_back() -> None:
+    """Compile the z-buffer's fused pass and the shading pass every other method runs."""
+    clip, triangles, setup, rows, offsets, items, inv_depth, triangle_id = _tiny_triangle()
+    normals = np.zeros((3, 3))
+    normals[:, 2] = 1.0
     surfaces = Surfaces(
-        setup, triangles, positions, normals, np.zeros((3, 6)), np.zeros((1, 2), dtype=np.intp),
-        np.ones((1, 3)), material, lights, np.full(3, 0.1), np.array([0.0, 0.0, 5.0]),
-        np.zeros(3), PHONG, False,
+        setup, triangles, clip[:, :3].copy(), normals, np.zeros((3, 6)),
+        np.zeros((1, 2), dtype=np.intp), np.ones((1, 3)),
+        np.array([[1.0, 1.0, 1.0, 0.1, 0.7, 0.3, 32.0, 0.0]]),
+        np.array([[0.0, 0.0, 0.0, 5.0, 1.0, 1.0, 1.0]]), np.full(3, 0.1),
+        np.array([0.0, 0.0, 5.0]), np.zeros(3), PHONG, False,
     )
     out = Buffers(
         np.zeros((8, 8, 3), dtype=np.float32),
         np.empty((8, 8), dtype=np.float32),
         np.empty((8, 8), dtype=np.int32),
     )
-    bands = np.arange(len(offsets) - 1)
+    bands = np.zeros(1, dtype=np.intp)
     render_bands(bands, setup, rows, offsets, items, BAND_ROWS, 0, 0, inv_depth, triangle_id,
                  surfaces, out)
     shade_bands(bands, BAND_ROWS, 0, 0, inv_depth, triangle_id, surfaces, out)
+
+
+def warm_scan() -> None:
+    """Compile the other scan conversions: depth test only, painting in order, coverage."""
+    _, triangles, setup, rows, offsets, items, inv_depth, triangle_id = _tiny_triangle()
+    bands = np.zeros(1, dtype=np.intp)
+    rasterize_bands(bands, setup, rows, offsets, items, BAND_ROWS, 0, 0, inv_depth, triangle_id)
+    paint_bands(bands, setup, rows, offsets, items, np.zeros(1, dtype=np.intp), BAND_ROWS, 0, 0,
+                inv_depth, triangle_id)
+    count_coverage(setup, rows, 0, 0, np.zeros((8, 8), dtype=np.int32))
+    interpolate_values(0, 8, setup, triangles, np.ones((3, 1)), triangle_id, np.zeros((8, 8, 1)))
+
+
+@register_warmup
+def warmup() -> None:
+    """Compile every raster kernel."""
+    warm_front()
+    warm_back()
+    warm_scan()

@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from pixelpath._threads import in_runs, in_threads
 from pixelpath.raster._arrays import kernel_array
 
 __all__ = ["coverage", "interpolate", "scan_convert"]
@@ -98,8 +99,11 @@ def _nearest(setup: np.ndarray, rows: np.ndarray, width: int, height: int) -> np
     triangle_id = np.empty((height, width), dtype=np.int32)
     n_bands = -(-height // _kernels.BAND_ROWS)
     offsets, items = _kernels.bin_triangles(rows, n_bands, _kernels.BAND_ROWS, 0)
-    _kernels.rasterize_bands(
-        setup, rows, offsets, items, _kernels.BAND_ROWS, 0, 0, inv_depth, triangle_id
+    in_runs(
+        lambda bands: _kernels.rasterize_bands(
+            bands, setup, rows, offsets, items, _kernels.BAND_ROWS, 0, 0, inv_depth, triangle_id
+        ),
+        np.arange(n_bands),
     )
     return triangle_id
 
@@ -179,5 +183,11 @@ def interpolate(
         )
     triangle_id = _nearest(setup, rows, width, height)
     out = np.full((height, width, table.shape[1]), np.nan)
-    _kernels.interpolate_values(setup, triangles, kernel_array(table), triangle_id, out)
+    table = kernel_array(table)
+    in_threads(
+        lambda first, stop: _kernels.interpolate_values(
+            first, stop, setup, triangles, table, triangle_id, out
+        ),
+        height,
+    )
     return out[..., 0] if single else out

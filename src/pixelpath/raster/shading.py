@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from pixelpath._threads import in_threads
 from pixelpath.raster._arrays import kernel_array
 
 __all__ = ["SHADINGS", "shade_points", "shading_mode"]
@@ -100,7 +101,7 @@ def shade_points(
     from pixelpath.raster import _kernels
 
     out = np.empty((len(points), 3))
-    _kernels.shade_points(
+    arrays = (
         kernel_array(points),
         kernel_array(normals),
         kernel_array(flip, np.bool_),
@@ -109,7 +110,9 @@ def shade_points(
         kernel_array(lights),
         kernel_array(ambient),
         kernel_array(eye),
-        bool(blinn),
-        out,
+    )
+    in_threads(
+        lambda first, stop: _kernels.shade_points(first, stop, *arrays, bool(blinn), out),
+        len(out),
     )
     return out

@@ -1,6 +1,9 @@
 """TOML scene files: ``load_scene``, and the dict form behind ``Scene.to_dict``/``Scene.from_dict``.
 
 The format is defined in :mod:`pixelpath.scene.schema` and documented in ``docs/scene-format.md``.
+The dependency runs one way: this module and the schema know the scene model, the model knows
+nothing of its file format (``pixelpath.scene`` attaches :func:`scene_to_dict` and
+:func:`scene_from_dict` to ``Scene`` as ``to_dict`` and ``from_dict``).
 Every error is a ``ValueError`` (or ``FileNotFoundError`` for missing files) whose message names
 the file, the key path (``objects[2].radius``) and, for files, the line near which the key is
 written, then says what was expected. ``tomllib`` keeps no positions for parsed values, so the
@@ -20,6 +23,7 @@ applied when the scene is built:
 from __future__ import annotations
 
 import contextlib
+import itertools
 import os
 import re
 import tomllib
@@ -30,6 +34,7 @@ from typing import Any
 
 import numpy as np
 
+from pixelpath.scene.animation import Animation, CameraKey, ObjectKey, Turntable
 from pixelpath.scene.camera import Camera
 from pixelpath.scene.lights import DirectionalLight
 from pixelpath.scene.material import Material
@@ -37,16 +42,20 @@ from pixelpath.scene.mesh import Mesh
 from pixelpath.scene.primitives import Box, Plane, Sphere
 from pixelpath.scene.scene import Scene
 from pixelpath.scene.schema import (
+    ANIMATION,
     CAMERA,
+    CAMERA_KEY,
     KINDS,
     LIGHTS,
     MATERIAL,
+    OBJECT_KEY,
     OBJECTS,
     TOP_LEVEL,
     TRANSFORM,
+    TURNTABLE,
     Key,
 )
-from pixelpath.scene.transform import transform_matrix
+from pixelpath.scene.transform import transform_matrix, transform_object
 
 KeyPath = tuple[str | int, ...]
 
@@ -94,7 +103,7 @@ def load_scene(path: str | Path) -> Scene:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise ValueError(f"{path}: invalid TOML: {exc}") from None
-    return scene_from_dict(data, base_dir=path.parent, source=_Source(str(path), text))
+    return scene_from_dict(data, path.parent, source=_Source(str(path), text))
 
 
 class _Source:
@@ -128,23 +137,29 @@ class _Source:
         return None if line is None else line + 1
 
     def _section(self, path: KeyPath) -> tuple[int | None, int, int]:
-        """Return (first line, end line, path parts consumed) of the section holding ``path``."""
+        """Return (first line, end line, path parts consumed) of the section holding ``path``.
+
+        The longest leading run of names (and the index after it) that has a header wins:
+        ``("animation", "camera", 2, "eye")`` is under the third ``[[animation.camera]]``,
+        ``("materials", "red", "ks")`` under ``[materials.red]``.
+        """
         headers = [i for i, text in enumerate(self.lines) if text.lstrip().startswith("[")]
-        if len(path) >= 2 and path[0] in ("lights", "objects") and isinstance(path[1], int):
-            pattern, occurrence, used = rf"\[\[\s*{path[0]}\s*\]\]", path[1], 2
-        elif len(path) >= 2 and path[0] == "materials":
-            name = re.escape(str(path[1]))
-            pattern, occurrence, used = rf"\[\s*materials\s*\.\s*\"?{name}\"?\s*\]", 0, 2
-        elif path and path[0] == "camera":
-            pattern, occurrence, used = r"\[\s*camera\s*\]", 0, 1
-        else:  # top-level keys live before the first header
-            return 0, headers[0] if headers else len(self.lines), 0
-        matches = [i for i in headers if re.match(pattern, self.lines[i].strip())]
-        if occurrence >= len(matches):
-            return None, 0, 0
-        start = matches[occurrence]
-        stop = next((i for i in headers if i > start), len(self.lines))
-        return start, stop, used
+        names = list(itertools.takewhile(lambda part: isinstance(part, str), path))
+        for count in range(len(names), 0, -1):
+            dotted = r"\s*\.\s*".join(rf'"?{re.escape(name)}"?' for name in names[:count])
+            indexed = count < len(path) and isinstance(path[count], int)
+            if indexed:
+                pattern, occurrence, used = rf"\[\[\s*{dotted}\s*\]\]", path[count], count + 1
+            else:
+                pattern, occurrence, used = rf"\[\s*{dotted}\s*\]", 0, count
+            matches = [i for i in headers if re.match(pattern, self.lines[i].strip())]
+            if occurrence < len(matches):
+                start = matches[occurrence]
+                stop = next((i for i in headers if i > start), len(self.lines))
+                return start, stop, used
+            if indexed:  # an array element whose header is missing: no line to point at
+                return None, 0, 0
+        return 0, headers[0] if headers else len(self.lines), 0  # top-level keys come first
 
 
 def _key_text(path: KeyPath) -> str:
@@ -161,6 +176,12 @@ def _reported(source: _Source, path: KeyPath, table: dict | None = None) -> Iter
         yield
     except (ValueError, TypeError) as exc:
         message = str(exc)
+        # "camera[2]: frame 0 is ..." names an element of an array of tables in ``table``
+        element = re.match(r"(\w+)\[(\d+)\]: ", message)
+        if element and table and isinstance(table.get(element[1]), list):
+            name, index = element[1], int(element[2])
+            path, table = (*path, name, index), table[name][index]
+            message = message[element.end() :]
         first_word = message.split(" ", 1)[0].split("[", 1)[0].rstrip(":")
         # "radius must be positive" -> objects[i].radius; "face 3 refers to ..." -> .faces
         key = next((k for k in (first_word, first_word + "s") if table and k in table), None)
@@ -196,9 +217,31 @@ def _shown(value: Any) -> str:
 
 
 def scene_from_dict(
-    data: Any, *, base_dir: str | Path | None = None, source: _Source | None = None
+    data: Any, base_dir: str | Path | None = None, *, source: _Source | None = None
 ) -> Scene:
-    """Build a Scene from the dict form of a scene file (see :meth:`Scene.from_dict`)."""
+    """Build a scene from a dict in the scene-file format (as ``tomllib`` or JSON give it).
+
+    Also reached as ``Scene.from_dict(data, base_dir=None)``.
+
+    Parameters
+    ----------
+    data : dict
+        The scene (see ``docs/scene-format.md``).
+    base_dir : str or Path, optional
+        Folder that relative mesh paths start from (default: the working directory).
+
+    Raises
+    ------
+    ValueError
+        For unknown or missing keys and invalid values, naming the key path.
+
+    Examples
+    --------
+    >>> from pixelpath.scene import Scene
+    >>> scene = Scene.from_dict({"camera": {"eye": [0, 0, 5], "target": [0, 0, 0]}})
+    >>> scene.camera.fov
+    45.0
+    """
     source = source or _Source("scene dict")
     base = Path.cwd() if base_dir is None else Path(base_dir)
     top = _checked(data, TOP_LEVEL, (), source)
@@ -215,8 +258,59 @@ def scene_from_dict(
         for i, table in enumerate(top.get("objects", []))
     ]
     extras = {name: top[name] for name in ("ambient", "background") if name in top}
+    if "animation" in top:
+        extras["animation"] = _animation(top["animation"], camera, objects, source)
     with _reported(source, (), extras):
         return Scene(camera, objects, lights, **extras)
+
+
+def _animation(table: Any, camera: Camera, objects: list, source: _Source) -> Animation:
+    """Build the ``[animation]`` table and check its keys against the scene."""
+    path: KeyPath = ("animation",)
+    values = _checked(table, ANIMATION, path, source)
+    cameras = [
+        _built(CameraKey, CAMERA_KEY, key, (*path, "camera", i), source)
+        for i, key in enumerate(values.get("camera", []))
+    ]
+    moves = [
+        _object_key(key, objects, (*path, "objects", i), source)
+        for i, key in enumerate(values.get("objects", []))
+    ]
+    turntable = values.get("turntable")
+    if turntable is not None:
+        turntable = _built(Turntable, TURNTABLE, turntable, (*path, "turntable"), source)
+    interpolation = values.get("interpolation", "linear")
+    with _reported(source, path, values):
+        animation = Animation(values["frames"], cameras, moves, turntable, interpolation)
+        animation.check_scene(camera, objects)
+    return animation
+
+
+def _object_key(table: Any, objects: list, path: KeyPath, source: _Source) -> ObjectKey:
+    values = _checked(table, OBJECT_KEY, path, source)
+    values["object"] = _object_index(values["object"], objects, (*path, "object"), source)
+    with _reported(source, path, values):
+        return ObjectKey(**values)
+
+
+def _object_index(ref: int | str, objects: list, path: KeyPath, source: _Source) -> int:
+    """Return the index of the object ``ref`` names: an index, or a unique mesh name."""
+    if isinstance(ref, int):
+        if not 0 <= ref < len(objects):
+            raise source.error(
+                path, f"no object {ref}: [[objects]] are numbered 0..{len(objects) - 1}"
+            )
+        return ref
+    found = [i for i, obj in enumerate(objects) if getattr(obj, "name", None) == ref]
+    if len(found) != 1:
+        names = sorted({obj.name for obj in objects if getattr(obj, "name", None)})
+        problem = "no object is" if not found else f"{len(found)} objects are"
+        raise source.error(
+            path,
+            f"{problem} named {ref!r}; use an index or one of the names: "
+            f"{', '.join(names) or 'none'}",
+        )
+    return found[0]
 
 
 def _built(factory: Any, keys: dict[str, Key], table: Any, path: KeyPath, source: _Source) -> Any:
@@ -278,38 +372,17 @@ def _material(
     return materials[value]
 
 
-def _sphere(values: dict, material: Material, matrix: Any, spec: dict) -> Sphere:
-    sphere = Sphere(material=material, **values)
-    if matrix is None:
-        return sphere
-    linear = matrix[:3, :3]
-    gram = linear.T @ linear
-    scale = float(np.sqrt(gram[0, 0]))
-    if not np.allclose(gram, scale**2 * np.eye(3), rtol=1e-9, atol=1e-12 * scale**2):
-        raise ValueError(
-            "transform must scale a sphere uniformly (use type = \"icosphere\" for an "
-            "ellipsoid)"
-        )
-    return Sphere(matrix[:3, :3] @ sphere.center + matrix[:3, 3], scale * sphere.radius, material)
+def _placed(factory: Any) -> Any:
+    """Return a maker that builds an analytic object, then applies its transform."""
 
+    def make(values: dict, material: Material, matrix: Any, spec: dict) -> Any:
+        obj = factory(material=material, **values)
+        if matrix is None:
+            return obj
+        moved = transform_object(obj, matrix)
+        return _tagged(moved, spec) if isinstance(moved, Mesh) else moved  # a rotated box
 
-def _plane(values: dict, material: Material, matrix: Any, spec: dict) -> Plane:
-    plane = Plane(material=material, **values)
-    if matrix is None:
-        return plane
-    normal = np.linalg.inv(matrix[:3, :3]).T @ plane.normal
-    return Plane(matrix[:3, :3] @ plane.point + matrix[:3, 3], normal, material)
-
-
-def _box(values: dict, material: Material, matrix: Any, spec: dict) -> Box | Mesh:
-    box = Box(material=material, **values)
-    if matrix is None:
-        return box
-    linear = matrix[:3, :3]
-    if np.count_nonzero(linear - np.diag(np.diag(linear))) == 0:  # no rotation: still a box
-        a, b = (linear @ corner + matrix[:3, 3] for corner in (box.minimum, box.maximum))
-        return Box(np.minimum(a, b), np.maximum(a, b), material)
-    return _tagged(box.to_mesh().transformed(matrix), spec)
+    return make
 
 
 def _generated(factory: Any) -> Any:
@@ -361,16 +434,40 @@ def _tagged(mesh: Mesh, spec: dict) -> Mesh:
 
 
 _MAKERS = {
-    "sphere": _sphere,
-    "plane": _plane,
-    "box": _box,
+    "sphere": _placed(Sphere),
+    "plane": _placed(Plane),
+    "box": _placed(Box),
     "icosphere": _generated(OBJECTS["icosphere"][0]),
     "torus": _generated(OBJECTS["torus"][0]),
 }
 
 
 def scene_to_dict(scene: Scene, base_dir: str | Path | None = None) -> dict[str, Any]:
-    """Return the dict form of ``scene`` (see :meth:`Scene.to_dict`)."""
+    """Return the scene as a dict of plain values in the scene-file format.
+
+    Also reached as ``scene.to_dict(base_dir=None)``. The dict holds only str, float, int,
+    list and dict values, so it can be written as JSON or TOML, and
+    ``Scene.from_dict(scene.to_dict())`` rebuilds an equal scene. Meshes read from a file, and
+    generated ones (icosphere, torus, rotated box) that came from a scene file, are written as
+    their file path or parameters with their transform; other meshes are written inline
+    (vertices, faces, normals). Materials other than the default are gathered under
+    ``materials`` as ``material1``, ``material2``, ...
+
+    Parameters
+    ----------
+    scene : Scene
+    base_dir : str or Path, optional
+        Write mesh paths relative to this folder (default: absolute paths).
+
+    Examples
+    --------
+    >>> from pixelpath.scene import Camera, Scene, Sphere
+    >>> scene = Scene(Camera(eye=(0, 0, 5), target=(0, 0, 0)), [Sphere((0, 0, 0), 1.0)])
+    >>> scene.to_dict()["objects"]
+    [{'type': 'sphere', 'center': [0.0, 0.0, 0.0], 'radius': 1.0}]
+    >>> Scene.from_dict(scene.to_dict()) == scene
+    True
+    """
     materials: dict[str, Material] = {}
     objects = [_object_dict(obj, materials, base_dir) for obj in scene.objects]
     ambient = scene.ambient.tolist()
@@ -386,7 +483,28 @@ def scene_to_dict(scene: Scene, base_dir: str | Path | None = None) -> dict[str,
             for name, material in materials.items()
         }
     data["objects"] = objects
+    if scene.animation is not None:
+        data["animation"] = _animation_dict(scene.animation)
     return data
+
+
+def _animation_dict(animation: Animation) -> dict[str, Any]:
+    data: dict[str, Any] = {"frames": animation.frames, "interpolation": animation.interpolation}
+    for name, keys, fields in (
+        ("camera", animation.camera, CAMERA_KEY),
+        ("objects", animation.objects, OBJECT_KEY),
+    ):
+        if keys:
+            data[name] = [_set_fields(key, fields) for key in keys]
+    if animation.turntable is not None:
+        data["turntable"] = _set_fields(animation.turntable, TURNTABLE)
+    return data
+
+
+def _set_fields(record: Any, fields: dict[str, Key]) -> dict[str, Any]:
+    """Return the fields of ``record`` that are set (not None), as plain values."""
+    values = {name: getattr(record, name) for name in fields}
+    return {name: _plain(value) for name, value in values.items() if value is not None}
 
 
 def _plain(value: Any) -> Any:

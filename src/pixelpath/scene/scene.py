@@ -7,13 +7,13 @@ channel (r, g, b) and stored as a (3,) array; ``background`` is the colour where
 from __future__ import annotations
 
 import dataclasses
-from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from pixelpath import _validate as v
 from pixelpath.scene._record import Record
+from pixelpath.scene.animation import Animation, frame_number
 from pixelpath.scene.camera import Camera
 from pixelpath.scene.lights import DirectionalLight, PointLight
 from pixelpath.scene.mesh import Mesh
@@ -40,6 +40,9 @@ class Scene(Record):
         Ambient intensity Ia (scalar or per channel), non-negative; stored as (3,).
     background : (3,) array_like
         Colour of pixels that show no object.
+    animation : Animation, optional
+        Camera and object keys over frames (see :mod:`pixelpath.scene.animation`); the scene
+        as given is frame 0, and :meth:`at_frame` returns any other frame.
 
     Examples
     --------
@@ -58,6 +61,7 @@ class Scene(Record):
     lights: Any = ()
     ambient: Any = 0.1
     background: Any = (0.0, 0.0, 0.0)
+    animation: Animation | None = None
 
     def __post_init__(self) -> None:
         self._set(
@@ -67,61 +71,73 @@ class Scene(Record):
             ambient=v.rgb_or_scalar(self.ambient, "ambient"),
             background=v.colour(self.background, "background"),
         )
+        if self.animation is not None:
+            v.instance(self.animation, "animation", Animation)
+        if self.animation is not None:
+            try:
+                self.animation.check_scene(self.camera, self.objects)
+            except ValueError as exc:
+                raise ValueError(f"animation.{exc}") from None
+        self._set(_orbit_center=self._turntable_center())
 
-    def to_dict(self, base_dir: str | Path | None = None) -> dict[str, Any]:
-        """Return the scene as a dict of plain values in the scene-file format.
+    def _turntable_center(self) -> np.ndarray | None:
+        """Return the centre of the bounds when a turntable orbits it, else None."""
+        turntable = None if self.animation is None else self.animation.turntable
+        if turntable is None or turntable.center is not None:
+            return None
+        try:
+            low, high = self.bounds()
+        except ValueError:
+            raise ValueError(
+                "animation.turntable: the scene has no bounded objects to orbit; give the "
+                "turntable a center"
+            ) from None
+        return v.frozen((low + high) / 2.0)
 
-        The dict holds only str, float, int, list and dict values, so it can be written as
-        JSON or TOML, and ``Scene.from_dict(scene.to_dict())`` rebuilds an equal scene.
-        Meshes read from a file, and generated ones (icosphere, torus, rotated box) that came
-        from a scene file, are written as their file path or parameters with their transform;
-        other meshes are written inline (vertices, faces, normals). Materials other than the
-        default are gathered under ``materials`` as ``material1``, ``material2``, ...
+    def at_frame(self, frame: int) -> Scene:
+        """Return the scene at ``frame`` of its animation: a scene without an animation.
 
-        Parameters
-        ----------
-        base_dir : str or Path, optional
-            Write mesh paths relative to this folder (default: absolute paths).
-
-        Examples
-        --------
-        >>> from pixelpath.scene import Camera, Scene, Sphere
-        >>> scene = Scene(Camera(eye=(0, 0, 5), target=(0, 0, 0)), [Sphere((0, 0, 0), 1.0)])
-        >>> scene.to_dict()["objects"]
-        [{'type': 'sphere', 'center': [0.0, 0.0, 0.0], 'radius': 1.0}]
-        >>> Scene.from_dict(scene.to_dict()) == scene
-        True
-        """
-        from pixelpath.scene.loader import scene_to_dict
-
-        return scene_to_dict(self, base_dir)
-
-    @classmethod
-    def from_dict(cls, data: dict[str, Any], base_dir: str | Path | None = None) -> Scene:
-        """Build a scene from a dict in the scene-file format (as ``tomllib`` or JSON give it).
-
-        Parameters
-        ----------
-        data : dict
-            The scene (see ``docs/scene-format.md``).
-        base_dir : str or Path, optional
-            Folder that relative mesh paths start from (default: the working directory).
+        Frame 0 is the scene as written. A scene without an animation is the same at every
+        frame (``frame`` >= 0); with one, ``frame`` must lie in ``0 .. animation.frames - 1``.
 
         Raises
         ------
         ValueError
-            For unknown or missing keys and invalid values, naming the key path.
+            A frame outside the animation, or a camera the animation makes invalid there.
 
         Examples
         --------
-        >>> from pixelpath.scene import Scene
-        >>> scene = Scene.from_dict({"camera": {"eye": [0, 0, 5], "target": [0, 0, 0]}})
-        >>> scene.camera.fov
-        45.0
+        >>> from pixelpath.scene import Camera, Scene, Sphere
+        >>> from pixelpath.scene.animation import Animation, frame_number, Turntable
+        >>> scene = Scene(
+        ...     Camera(eye=(0, 0, 5), target=(0, 0, 0)),
+        ...     [Sphere((0, 0, 0), 1.0)],
+        ...     animation=Animation(4, turntable=Turntable()),
+        ... )
+        >>> scene.at_frame(1).camera.eye.round(12).tolist()  # a quarter turn about +Y
+        [5.0, 0.0, 0.0]
         """
-        from pixelpath.scene.loader import scene_from_dict
+        if self.animation is None:
+            frame_number(frame, "frame")  # any frame >= 0: the scene is the same at every one
+            return self
+        objects = self.animation.objects_at(self.objects, frame)
+        return dataclasses.replace(
+            self, camera=self.camera_at(frame), objects=objects, animation=None
+        )
 
-        return scene_from_dict(data, base_dir=base_dir)
+    def camera_at(self, frame: int) -> Camera:
+        """Return the camera at ``frame`` (cheaper than :meth:`at_frame` when only it is needed).
+
+        Examples
+        --------
+        >>> from pixelpath.scene import Camera, Scene
+        >>> Scene(Camera(eye=(0, 0, 5), target=(0, 0, 0))).camera_at(7).eye.tolist()
+        [0.0, 0.0, 5.0]
+        """
+        if self.animation is None:
+            frame_number(frame, "frame")
+            return self.camera
+        return self.animation.camera_at(self.camera, frame, self._orbit_center)
 
     def bounds(self) -> np.ndarray:
         """Return the (2, 3) bounding box of the bounded objects (planes are infinite).

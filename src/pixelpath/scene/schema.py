@@ -20,6 +20,7 @@ import numbers
 from collections.abc import Callable
 from typing import Any
 
+from pixelpath.scene.animation import INTERPOLATIONS, Animation, Turntable
 from pixelpath.scene.camera import Camera
 from pixelpath.scene.lights import DirectionalLight, PointLight
 from pixelpath.scene.material import Material
@@ -104,6 +105,22 @@ KINDS: dict[str, Kind] = {
     "transform": Kind(
         lambda x: isinstance(x, dict), "a table of translate, rotate, scale",
         {"$ref": "#/$defs/transform"},
+    ),
+    "interpolation": Kind(
+        lambda x: x in INTERPOLATIONS,
+        " or ".join(map(repr, INTERPOLATIONS)),
+        {"enum": list(INTERPOLATIONS)},
+    ),
+    "object": Kind(
+        lambda x: _is_int(x) or isinstance(x, str),
+        "an object index (integer, from 0) or a mesh's name (string)",
+        {"oneOf": [{"type": "integer", "minimum": 0}, {"type": "string"}]},
+    ),
+    "animation": Kind(
+        lambda x: isinstance(x, dict), "a table of animation keys", {"$ref": "#/$defs/animation"}
+    ),
+    "turntable": Kind(
+        lambda x: isinstance(x, dict), "a table of turns, center", {"$ref": "#/$defs/turntable"}
     ),
     "table": Kind(lambda x: isinstance(x, dict), "a table", {"type": "object"}),
     "array": Kind(lambda x: isinstance(x, list | tuple), "an array of tables", {"type": "array"}),
@@ -212,6 +229,35 @@ OBJECTS = {
     ),
 }
 
+_KEY_COMMON = {
+    "frame": Key("integer", "the frame the values are for (1 .. frames - 1)", required=True),
+    "interpolation": Key("interpolation", "how values move to the next key"),
+}
+CAMERA_KEY = {
+    **_KEY_COMMON,
+    "eye": Key("vector3", "camera position at this frame"),
+    "target": Key("vector3", "the point looked at, at this frame"),
+    "fov": Key("number", "vertical field of view at this frame, degrees"),
+}
+OBJECT_KEY = {
+    "object": Key("object", "the object: index in [[objects]] or a mesh's name", required=True),
+    **_KEY_COMMON,
+    "translate": Key("vector3", "offset at this frame, applied last"),
+    "rotate": Key("vector3", "angles in degrees about X, then Y, then Z, at this frame"),
+    "scale": Key("intensity", "positive factor or per-axis factors at this frame"),
+}
+TURNTABLE = {
+    "turns": Key("number", "full turns of the camera over the animation (non-zero)"),
+    "center": Key("vector3", "a point on the axis (default: the centre of the scene's bounds)"),
+}
+ANIMATION = {
+    "frames": Key("integer", "number of frames, numbered from 0 (1..1000000)", required=True),
+    "interpolation": Key("interpolation", "interpolation of keys that name none"),
+    "camera": Key("array", "camera keys: [[animation.camera]]"),
+    "objects": Key("array", "object transform keys: [[animation.objects]]"),
+    "turntable": Key("turntable", "orbit the camera about the scene: [animation.turntable]"),
+}
+
 TOP_LEVEL = {
     "camera": Key("table", "the camera", required=True),
     "lights": Key("array", "light sources"),
@@ -219,6 +265,7 @@ TOP_LEVEL = {
     "objects": Key("array", "scene objects"),
     "ambient": Key("intensity", "ambient light intensity Ia, scalar or (r, g, b)"),
     "background": Key("vector3", "colour where nothing is drawn"),
+    "animation": Key("animation", "keyframes over frames; frame 0 is the scene as written"),
 }
 
 
@@ -260,6 +307,13 @@ def _typed(kind: str, factory: Callable[..., Any] | None, keys: dict[str, Key]) 
     return schema
 
 
+def _keyed(keys: dict[str, Key], *values: str) -> dict:
+    """Return the schema of a key table, which must set at least one of ``values``."""
+    schema = _section_schema(keys)
+    schema["anyOf"] = [{"required": [name]} for name in values]
+    return schema
+
+
 def scene_json_schema() -> dict[str, Any]:
     """Return the JSON Schema (draft 2020-12) of scene files and of :meth:`Scene.to_dict`.
 
@@ -267,7 +321,9 @@ def scene_json_schema() -> dict[str, Any]:
     --------
     >>> from pixelpath.scene.schema import scene_json_schema
     >>> sorted(scene_json_schema()["properties"])
-    ['ambient', 'background', 'camera', 'lights', 'materials', 'objects']
+    ['ambient', 'animation', 'background', 'camera', 'lights', 'materials', 'objects']
+    >>> sorted(scene_json_schema()["$defs"]["animation"]["properties"])
+    ['camera', 'frames', 'interpolation', 'objects', 'turntable']
     """
     objects = [_typed(name, factory, keys) for name, (factory, keys) in OBJECTS.items()]
     mesh = objects[list(OBJECTS).index("mesh")]
@@ -283,6 +339,11 @@ def scene_json_schema() -> dict[str, Any]:
     }
     top["properties"]["materials"]["additionalProperties"] = {"$ref": "#/$defs/material"}
     top["properties"]["objects"]["items"] = {"oneOf": objects}
+    animation = _section_schema(ANIMATION, Animation)
+    animation["properties"]["camera"]["items"] = _keyed(CAMERA_KEY, "eye", "target", "fov")
+    animation["properties"]["objects"]["items"] = _keyed(
+        OBJECT_KEY, "translate", "rotate", "scale"
+    )
     return {
         "$schema": "https://json-schema.org/draft/2020-12/schema",
         "$id": SCHEMA_ID,
@@ -293,5 +354,7 @@ def scene_json_schema() -> dict[str, Any]:
             "camera": _section_schema(CAMERA, Camera),
             "material": _section_schema(MATERIAL, Material),
             "transform": _section_schema(TRANSFORM, transform_matrix),
+            "animation": animation,
+            "turntable": _section_schema(TURNTABLE, Turntable),
         },
     }

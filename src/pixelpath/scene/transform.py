@@ -1,4 +1,4 @@
-"""Object transforms of scene files: scale, then rotate about X, Y and Z, then translate.
+"""Object transforms: scale, then rotate about X, Y and Z, then translate; and moving objects.
 
 ``M = T · Rz · Ry · Rx · S`` acting on column vectors, angles in degrees, right-handed (a positive
 angle turns counter-clockwise when looking down the axis towards the origin).
@@ -12,6 +12,8 @@ from typing import Any
 import numpy as np
 
 from pixelpath import _validate as v
+from pixelpath.scene.mesh import Mesh
+from pixelpath.scene.primitives import Box, Plane, Sphere
 
 
 def transform_matrix(
@@ -54,3 +56,42 @@ def _rotation(axis: int, angle: float) -> np.ndarray:
     rotation = np.eye(3)
     rotation[i, i], rotation[i, j], rotation[j, i], rotation[j, j] = c, -s, s, c
     return rotation
+
+
+def transform_object(obj: Any, matrix: Any) -> Any:
+    """Return a scene object moved by the (4, 4) affine ``matrix``; the input is left as it is.
+
+    Spheres take translation, rotation and uniform scale (a ``ValueError`` otherwise); planes
+    any transform (the point by the matrix, the normal by its inverse transpose); boxes stay
+    boxes under translation and scale and become six-quad meshes when rotated; meshes are
+    transformed vertex by vertex (:meth:`Mesh.transformed`).
+
+    Examples
+    --------
+    >>> from pixelpath.scene import Sphere, transform_matrix
+    >>> from pixelpath.scene.transform import transform_object
+    >>> moved = transform_object(Sphere((1, 0, 0), 1.0), transform_matrix((0, 2, 0), scale=3))
+    >>> moved.center.tolist(), moved.radius
+    ([3.0, 2.0, 0.0], 3.0)
+    """
+    matrix = v.float_array(matrix, "matrix", (4, 4))
+    linear, shift = matrix[:3, :3], matrix[:3, 3]
+    if isinstance(obj, Sphere):
+        gram = linear.T @ linear
+        scale = float(np.sqrt(gram[0, 0]))
+        if not np.allclose(gram, scale**2 * np.eye(3), rtol=1e-9, atol=1e-12 * scale**2):
+            raise ValueError(
+                "transform must scale a sphere uniformly (use an icosphere for an ellipsoid)"
+            )
+        return Sphere(linear @ obj.center + shift, scale * obj.radius, obj.material)
+    if isinstance(obj, Plane):
+        normal = np.linalg.inv(linear).T @ obj.normal
+        return Plane(linear @ obj.point + shift, normal, obj.material)
+    if isinstance(obj, Box):
+        if np.count_nonzero(linear - np.diag(np.diag(linear))) == 0:  # no rotation: a box still
+            a, b = (linear @ corner + shift for corner in (obj.minimum, obj.maximum))
+            return Box(np.minimum(a, b), np.maximum(a, b), obj.material)
+        return obj.to_mesh().transformed(matrix)
+    if isinstance(obj, Mesh):
+        return obj.transformed(matrix)
+    raise TypeError(f"obj must be a Sphere, Plane, Box or Mesh, got {type(obj).__name__}")

@@ -1,0 +1,233 @@
+"""Ray-tracing speed: pixelpath's BVH and tracer beside Embree and Mitsuba 3, in the same run.
+
+* Primary rays: one ray through each pixel centre of a 1024×1024 view of the Stanford bunny
+  (69,451 triangles, from ../shared/data/meshes; an icosphere of 81,920 triangles when absent),
+  nearest hits by ``pixelpath.raytrace.intersect`` beside Embree (the ``embreex`` package,
+  directly and through trimesh's ``RayMeshIntersector``), in Mrays/s, and the fraction of rays
+  on which pixelpath and Embree report the same triangle (or both a miss). The tree is built
+  before timing; its build time is reported on its own line.
+* The shadowed bunny: ``render(method="raytrace")`` at 1024² with one point light, a diffuse
+  material and one sample per pixel (primary and shadow rays, shading, the image), beside
+  Mitsuba 3's ``scalar_rgb`` variant with the ``direct`` integrator (one emitter sample, one
+  sample per pixel); Mitsuba's scene loading and kernel set-up are outside its timing.
+* The bundled showcase (a chrome and a glass sphere among analytic and mesh objects) at
+  1024×768 with ``max_depth=5``.
+
+Each figure is the best of ``--repeat`` runs after a warm-up run (compilation excluded). The
+anchors are optional (``pip install embreex mitsuba``, in the ``bench`` extra) and are skipped
+with a message when absent. Ratios are only meaningful between figures of the same run.
+
+Usage::
+
+    python benchmarks/bench_ray.py [--repeat 3] [--size 1024]
+"""
+
+from __future__ import annotations
+
+import argparse
+import dataclasses
+import importlib.util
+import time
+from pathlib import Path
+
+import numpy as np
+
+import pixelpath as pp
+from pixelpath.raytrace import BVH, intersect
+
+MESHES = Path(__file__).resolve().parents[2] / "shared" / "data" / "meshes"
+
+
+def load_bunny() -> tuple[str, pp.Mesh, Path | None]:
+    """A label, the bunny (or a stand-in of similar size) and its file when there is one."""
+    path = MESHES / "stanford-bunny.obj"
+    if path.is_file():
+        return "Stanford bunny", pp.Mesh.load(path), path
+    print(f"({path} not found: using an icosphere as a stand-in)")
+    return "icosphere (bunny stand-in)", pp.scene.icosphere(subdivisions=6), None
+
+
+def framed_camera(mesh: pp.Mesh, width: int, height: int) -> pp.Camera:
+    """The mesh seen from the front and a little above, filling most of the frame."""
+    low, high = mesh.bounds()
+    center = (low + high) / 2
+    radius = float(np.linalg.norm(high - low)) / 2
+    return pp.Camera(
+        eye=center + radius * np.array([0.0, 0.3, 2.6]),
+        target=center,
+        fov=45.0,
+        width=width,
+        height=height,
+        near=0.05 * radius,
+        far=10.0 * radius,
+    )
+
+
+def primary_rays(camera: pp.Camera) -> tuple[np.ndarray, np.ndarray]:
+    """Origins and unit directions of the rays through every pixel centre, row by row."""
+    u, v, w = camera.basis()
+    tan_y = np.tan(np.radians(camera.fov) / 2)
+    xs = (2 * (np.arange(camera.width) + 0.5) / camera.width - 1) * tan_y * camera.aspect
+    ys = (1 - 2 * (np.arange(camera.height) + 0.5) / camera.height) * tan_y
+    gx, gy = np.meshgrid(xs, ys)
+    directions = gx[..., None] * u + gy[..., None] * v - w
+    directions = directions.reshape(-1, 3)
+    directions /= np.linalg.norm(directions, axis=1, keepdims=True)
+    origins = np.broadcast_to(np.asarray(camera.eye, dtype=float), directions.shape).copy()
+    return origins, directions
+
+
+def best_of(repeat: int, call) -> tuple[float, object]:
+    """Seconds of the fastest of ``repeat`` calls after a warm-up call, and its result."""
+    result = call()
+    best = float("inf")
+    for _ in range(repeat):
+        start = time.perf_counter()
+        result = call()
+        best = min(best, time.perf_counter() - start)
+    return best, result
+
+
+def bench_primary(mesh: pp.Mesh, size: int, repeat: int) -> None:
+    camera = framed_camera(mesh, size, size)
+    origins, directions = primary_rays(camera)
+    count = len(origins)
+    build, bvh = best_of(repeat, lambda: BVH.build(mesh.vertices, mesh.triangles))
+    stats = bvh.statistics()
+    print(
+        f"  BVH build (binned SAH)  {1000 * build:8.1f} ms  ({stats['nodes']:,} nodes, depth "
+        f"{stats['depth']}, SAH cost {stats['SAH cost']:.1f})"
+    )
+    seconds, (_, face) = best_of(repeat, lambda: intersect(mesh, origins, directions))
+    hits = int(np.count_nonzero(face >= 0))
+    print(
+        f"  pixelpath intersect     {count / seconds / 1e6:8.2f} Mrays/s  ({1000 * seconds:.0f} "
+        f"ms, {hits:,} hits)"
+    )
+    rate = count / seconds
+    if importlib.util.find_spec("embreex") is None:
+        print("  Embree skipped: embreex is not installed (pip install embreex)")
+        return
+    from embreex import rtcore_scene
+    from embreex.mesh_construction import TriangleMesh
+
+    def embree_scene():
+        scene = rtcore_scene.EmbreeScene()
+        TriangleMesh(scene, mesh.vertices[mesh.triangles].astype(np.float32))
+        return scene
+
+    scene = embree_scene()
+    o32, d32 = origins.astype(np.float32), directions.astype(np.float32)
+    e_seconds, result = best_of(repeat, lambda: scene.run(o32, d32, output=1))
+    prim = np.asarray(result["primID"])
+    embree_face = np.where(prim >= 0, mesh.triangle_face[np.maximum(prim, 0)], -1)
+    same = float(np.mean(embree_face == face))
+    print(
+        f"  Embree (embreex)        {count / e_seconds / 1e6:8.2f} Mrays/s  "
+        f"({1000 * e_seconds:.0f} ms); same face on {same:.2%} of the rays"
+    )
+    print(f"  ratio pixelpath / Embree rate: {rate / (count / e_seconds):.2f}")
+    if importlib.util.find_spec("trimesh") is None:
+        print("  trimesh skipped: trimesh is not installed")
+        return
+    import trimesh
+    from trimesh.ray.ray_pyembree import RayMeshIntersector
+
+    tm = trimesh.Trimesh(mesh.vertices, mesh.triangles, process=False)
+    intersector = RayMeshIntersector(tm)
+    t_seconds, _ = best_of(repeat, lambda: intersector.intersects_first(origins, directions))
+    print(
+        f"  trimesh (Embree)        {count / t_seconds / 1e6:8.2f} Mrays/s  "
+        f"({1000 * t_seconds:.0f} ms); ratio pixelpath / trimesh {rate / (count / t_seconds):.2f}"
+    )
+
+
+def bench_shadowed(mesh: pp.Mesh, path: Path | None, size: int, repeat: int) -> None:
+    camera = framed_camera(mesh, size, size)
+    low, high = mesh.bounds()
+    center = (low + high) / 2
+    radius = float(np.linalg.norm(high - low)) / 2
+    light = center + radius * np.array([2.0, 2.5, 1.5])
+    diffuse = pp.Material(color=(0.8, 0.8, 0.8), ka=0.0, kd=1.0, ks=0.0)
+    bunny = pp.Mesh(mesh.vertices, mesh.faces, material=diffuse, normals=mesh.normals)
+    scene = pp.Scene(camera, [bunny], [pp.PointLight(light)], ambient=0.0)
+    seconds, image = best_of(repeat, lambda: pp.render(scene, "raytrace", max_depth=0))
+    print(
+        f"  pixelpath raytrace      {1000 * seconds:8.0f} ms  "
+        f"({int((image.object_id >= 0).sum()):,} pixels on the bunny)"
+    )
+    mitsuba = mitsuba_scene(mesh, path, camera, light, size)
+    if mitsuba is None:
+        return
+    mi, mi_scene = mitsuba
+    m_seconds, _ = best_of(repeat, lambda: mi.render(mi_scene, spp=1))
+    print(f"  Mitsuba 3 scalar_rgb    {1000 * m_seconds:8.0f} ms  (direct integrator, 1 spp)")
+    print(f"  ratio pixelpath / Mitsuba time: {seconds / m_seconds:.2f}")
+
+
+def mitsuba_scene(mesh, path, camera, light, size):
+    """Mitsuba's module and the same view of the mesh, or None (with the reason printed)."""
+    if importlib.util.find_spec("mitsuba") is None:
+        print("  Mitsuba skipped: mitsuba is not installed (pip install mitsuba)")
+        return None
+    import mitsuba as mi
+
+    mi.set_variant("scalar_rgb")
+    if path is None:
+        print("  Mitsuba skipped: it loads the mesh from a file and the bunny file is absent")
+        return None
+    scene = mi.load_dict({
+        "type": "scene",
+        "integrator": {"type": "direct", "emitter_samples": 1, "bsdf_samples": 0},
+        "sensor": {
+            "type": "perspective",
+            "fov": camera.fov,
+            "fov_axis": "y",
+            "near_clip": camera.near,
+            "far_clip": camera.far,
+            "to_world": mi.ScalarTransform4f().look_at(
+                origin=list(map(float, camera.eye)),
+                target=list(map(float, camera.target)),
+                up=list(map(float, camera.up)),
+            ),
+            "film": {"type": "hdrfilm", "width": size, "height": size, "rfilter": {"type": "box"}},
+            "sampler": {"type": "independent", "sample_count": 1},
+        },
+        "bunny": {
+            "type": "obj",
+            "filename": str(path),
+            "bsdf": {"type": "diffuse", "reflectance": {"type": "rgb", "value": [0.8] * 3}},
+        },
+        "light": {"type": "point", "position": list(map(float, light)), "intensity": 1.0},
+    })
+    return mi, scene
+
+
+def bench_showcase(width: int, height: int, repeat: int) -> None:
+    scene = pp.load_scene(pp.scene.bundled_scene("showcase"))
+    scene = dataclasses.replace(scene, camera=scene.camera.with_size(width, height))
+    seconds, image = best_of(repeat, lambda: pp.render(scene, "raytrace", max_depth=5))
+    print(
+        f"  pixelpath raytrace      {1000 * seconds:8.0f} ms  ({image.stats['reflected rays']:,} "
+        f"reflected, {image.stats['refracted rays']:,} refracted, "
+        f"{image.stats['shadow rays']:,} shadow rays)"
+    )
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--repeat", type=int, default=3, help="timed runs per figure (best)")
+    parser.add_argument("--size", type=int, default=1024, help="image side in pixels")
+    args = parser.parse_args()
+    label, mesh, path = load_bunny()
+    print(f"\n{label}: {len(mesh.triangles):,} triangles, {args.size}² primary rays")
+    bench_primary(mesh, args.size, args.repeat)
+    print(f"\nshadowed {label} at {args.size}²: one point light, diffuse, one sample")
+    bench_shadowed(mesh, path, args.size, args.repeat)
+    height = args.size * 3 // 4
+    print(f"\nshowcase (chrome and glass spheres) at {args.size}x{height}, max_depth 5")
+    bench_showcase(args.size, height, args.repeat)
+
+
+if __name__ == "__main__":
+    main()

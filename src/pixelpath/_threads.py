@@ -1,0 +1,73 @@
+"""Run a serial kernel on parts of its work from several threads at once.
+
+The render kernels are compiled without ``parallel=True``: Numba's parallel loops cost seconds
+more to compile on a first run, for no speed a thread pool does not give. The kernels release
+the GIL (``nogil``), so runs of the work handed to them from Python threads go on in parallel.
+"""
+
+from __future__ import annotations
+
+import concurrent.futures
+import threading
+from collections.abc import Callable, Sequence
+
+import numpy as np
+
+__all__ = ["in_runs", "in_threads"]
+
+RUNS_PER_THREAD = 4  # in_threads() hands out this many runs per thread: uneven work evens out
+_EXECUTORS: dict[int, concurrent.futures.ThreadPoolExecutor] = {}
+_EXECUTORS_LOCK = threading.Lock()
+
+
+def in_threads(work: Callable[[int, int], object], count: int) -> None:
+    """Call ``work(start, stop)`` on runs of ``range(count)`` from several threads at once.
+
+    As many threads as Numba's (``numba.get_num_threads()``, so ``NUMBA_NUM_THREADS`` and
+    ``numba.set_num_threads`` apply), each taking runs in turn as it finishes one. The runs
+    must write disjoint parts of the output. An exception in a run is raised here.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from pixelpath._threads import in_threads
+    >>> out = np.zeros(10)
+    >>> def fill(start, stop):
+    ...     out[start:stop] = np.arange(start, stop)
+    >>> in_threads(fill, 10)
+    >>> out.tolist() == list(range(10))
+    True
+    """
+    import numba
+
+    threads = numba.get_num_threads()
+    if threads == 1 or count <= 1:
+        work(0, count)
+        return
+    runs = min(count, RUNS_PER_THREAD * threads)
+    bounds = np.linspace(0, count, runs + 1).astype(int).tolist()
+    with _EXECUTORS_LOCK:
+        executor = _EXECUTORS.get(threads)
+        if executor is None:
+            executor = concurrent.futures.ThreadPoolExecutor(threads, "pixelpath")
+            _EXECUTORS[threads] = executor
+    for _ in executor.map(work, bounds[:-1], bounds[1:]):
+        pass  # re-raises a run's exception here
+
+
+def in_runs(work: Callable[[Sequence], object], items: Sequence) -> None:
+    """Call ``work(run)`` on consecutive runs of ``items`` from several threads at once.
+
+    List the items so that every run holds a fair share of the work (the raster methods list
+    their bands of rows interleaved, even ones then odd ones, so each run spans the image).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from pixelpath._threads import in_runs
+    >>> seen = []
+    >>> in_runs(lambda run: seen.extend(run.tolist()), np.arange(6))
+    >>> sorted(seen)
+    [0, 1, 2, 3, 4, 5]
+    """
+    in_threads(lambda start, stop: work(items[start:stop]), len(items))

@@ -1,0 +1,254 @@
+"""Compile the kernels a command needs before it runs, on every core at once.
+
+Numba compiles a kernel in the process that first calls it, one kernel at a time (its compiler
+holds a global lock), and on a first run that is most of the time a render takes. A kernel
+compiled in another process lands in the same disk cache, and a later call here loads it in
+milliseconds. So the kernels are split into *groups* that compile independently (each group's
+warm-up builds its inputs by hand, without another group's kernels), and on a cold start the
+groups a command needs are compiled in parallel worker processes, this one taking a share.
+
+A group is known to be compiled when its marker exists: a file named after the group in a
+folder of the cache named after a hash of pixelpath's sources and the Python and Numba
+versions, so that any change to the code makes every group cold again (loading unchanged
+kernels from the cache is quick). The marker holds the seconds the group took to compile.
+
+Run as ``python -m pixelpath._warm GROUP...`` a worker compiles the groups named and prints
+their seconds as JSON.
+"""
+
+from __future__ import annotations
+
+import functools
+import hashlib
+import importlib
+import json
+import os
+import subprocess
+import sys
+import time
+from collections.abc import Iterable, Sequence
+from pathlib import Path
+
+__all__ = [
+    "GROUPS",
+    "cold_groups",
+    "compile_groups",
+    "estimate_seconds",
+    "groups_for",
+]
+
+# Group name -> (warm-up function as "module:function", seconds it took to compile on the
+# 2-core machine pixelpath is developed on; only used to share out work and to say how long a
+# first run will take, before anything was measured here).
+GROUPS: dict[str, tuple[str, float]] = {
+    "front": ("pixelpath.raster._kernels:warm_front", 5.0),
+    "back": ("pixelpath.raster._kernels:warm_back", 6.5),
+    "scan": ("pixelpath.raster._kernels:warm_scan", 1.5),
+    "scanline": ("pixelpath.hsr._kernels.scanline:warmup", 4.5),
+    "warnock": ("pixelpath.hsr._kernels.warnock:warmup", 5.0),
+    "lighting": ("pixelpath.lighting._kernels:warmup", 1.5),
+    "clip": ("pixelpath.clip._kernels:warmup", 4.0),
+    "color": ("pixelpath.color._kernels:warmup", 4.0),
+    "raytrace-bvh": ("pixelpath.raytrace._kernels:warmup", 9.0),
+    # The tracer's warm-up packs a one-pixel scene with the renderer's own code (BVH build,
+    # back-face test), so it also compiles those kernels if no other process did.
+    "raytrace": ("pixelpath.raytrace._whitted_kernels:warmup", 15.0),
+}
+
+# The groups a render with each hidden-surface method calls.
+METHOD_GROUPS: dict[str, tuple[str, ...]] = {
+    "zbuffer": ("front", "back"),
+    "scanline": ("front", "back", "scanline"),
+    "warnock": ("front", "back", "warnock"),
+    "raytrace": ("lighting", "raytrace-bvh", "raytrace"),
+}
+
+
+def groups_for(methods: Iterable[str]) -> tuple[str, ...]:
+    """Return the groups that renders with ``methods`` need, each once, in a stable order.
+
+    Examples
+    --------
+    >>> from pixelpath._warm import groups_for
+    >>> groups_for(["zbuffer", "scanline"])
+    ('front', 'back', 'scanline')
+    """
+    needed = {group for method in methods for group in METHOD_GROUPS.get(method, ())}
+    return tuple(group for group in GROUPS if group in needed)
+
+
+@functools.cache
+def _stamp() -> str:
+    """Hash of every source file of pixelpath and of the Python and Numba versions."""
+    import numba
+
+    digest = hashlib.sha256(f"{sys.version}|{numba.__version__}".encode())
+    package = Path(__file__).resolve().parent
+    for path in sorted(package.rglob("*.py")):
+        digest.update(path.relative_to(package).as_posix().encode())
+        digest.update(path.read_bytes())
+    return digest.hexdigest()[:16]
+
+
+def _marker_folder() -> Path | None:
+    """Return the markers' folder, in the folder the kernels are cached in; None without one."""
+    from pixelpath._cache import writable_cache_dir
+
+    root = writable_cache_dir()
+    return None if root is None else root / "warm" / _stamp()
+
+
+def _jit_enabled() -> bool:
+    import numba
+
+    return not numba.config.DISABLE_JIT
+
+
+def cold_groups(groups: Iterable[str]) -> list[str]:
+    """Return those of ``groups`` not yet compiled into the disk cache (in their order).
+
+    Empty when Numba's JIT is disabled (nothing to compile) and when no cache folder can be
+    written (worker processes could not hand their code over: each kernel compiles on first
+    use, as without this module).
+
+    Examples
+    --------
+    >>> from pixelpath._warm import cold_groups
+    >>> set(cold_groups(["front", "back"])) <= {"front", "back"}
+    True
+    """
+    folder = _marker_folder() if _jit_enabled() else None
+    if folder is None:
+        return []
+    return [group for group in groups if not (folder / group).is_file()]
+
+
+def _recorded_seconds(group: str, folder: Path | None) -> float:
+    if folder is None:
+        return GROUPS[group][1]
+    try:
+        return float((folder / group).read_text())
+    except (OSError, ValueError):
+        return GROUPS[group][1]
+
+
+def estimate_seconds(groups: Sequence[str], processes: int | None = None) -> float:
+    """Return about how long compiling ``groups`` on ``processes`` processes takes.
+
+    From the seconds each group took when last compiled here, else the built-in estimate.
+
+    Examples
+    --------
+    >>> from pixelpath._warm import estimate_seconds
+    >>> estimate_seconds([]) == 0
+    True
+    """
+    folder = _marker_folder() if groups else Path()
+    shares = _share_out(groups, processes or _cores(), folder)
+    return max((sum(_recorded_seconds(g, folder) for g in share) for share in shares), default=0)
+
+
+def _cores() -> int:
+    try:
+        return len(os.sched_getaffinity(0))
+    except AttributeError:  # not on Linux
+        return os.cpu_count() or 1
+
+
+def _share_out(groups: Sequence[str], processes: int, folder: Path | None) -> list[list[str]]:
+    """Split ``groups`` into at most ``processes`` shares of about equal compile time."""
+    shares: list[list[str]] = [[] for _ in range(max(1, min(processes, len(groups))))]
+    loads = [0.0] * len(shares)
+    for group in sorted(groups, key=lambda g: -_recorded_seconds(g, folder)):
+        lightest = loads.index(min(loads))
+        shares[lightest].append(group)
+        loads[lightest] += _recorded_seconds(group, folder)
+    return [share for share in shares if share]
+
+
+def _compile_here(groups: Iterable[str]) -> dict[str, float]:
+    """Run the groups' warm-ups in this process; return the seconds each took."""
+    seconds = {}
+    for group in groups:
+        module_name, function_name = GROUPS[group][0].split(":")
+        start = time.perf_counter()
+        getattr(importlib.import_module(module_name), function_name)()
+        seconds[group] = time.perf_counter() - start
+    return seconds
+
+
+def compile_groups(groups: Sequence[str], processes: int | None = None) -> dict[str, float]:
+    """Compile ``groups`` into the disk cache, on up to ``processes`` processes at once.
+
+    This process compiles one share itself; the others go to worker processes started with
+    the same Python. A worker that fails leaves its groups to this process. Each compiled
+    group's marker is written afterwards (when the cache folder is writable).
+
+    Parameters
+    ----------
+    groups : sequence of str
+        Names from :data:`GROUPS`.
+    processes : int, optional
+        How many processes compile at once (default: the cores this process may use).
+
+    Returns
+    -------
+    dict of str to float
+        Seconds each group took to compile (or load from the cache).
+
+    Examples
+    --------
+    >>> from pixelpath._warm import compile_groups
+    >>> sorted(compile_groups(["lighting"], processes=1))
+    ['lighting']
+    """
+    unknown = sorted(set(groups) - set(GROUPS))
+    if unknown:
+        raise ValueError(f"unknown kernel groups {unknown}; known: {sorted(GROUPS)}")
+    folder = _marker_folder()
+    if folder is None:  # no disk cache: what workers compiled would not reach this process
+        return _compile_here(groups)
+    shares = _share_out(list(groups), processes or _cores(), folder)
+    if not shares:
+        return {}
+    workers = [_start_worker(share) for share in shares[1:]]
+    seconds = _compile_here(shares[0])
+    for share, worker in zip(shares[1:], workers, strict=True):
+        seconds.update(_finish_worker(share, worker))
+    _write_markers(folder, seconds)
+    return seconds
+
+
+def _start_worker(share: list[str]) -> subprocess.Popen:
+    return subprocess.Popen(
+        [sys.executable, "-m", "pixelpath._warm", *share],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.DEVNULL,
+        text=True,
+    )
+
+
+def _finish_worker(share: list[str], worker: subprocess.Popen) -> dict[str, float]:
+    """Wait for a worker; compile its share here instead if it failed."""
+    output, _ = worker.communicate()
+    try:
+        seconds = json.loads(output) if worker.returncode == 0 else None
+    except json.JSONDecodeError:
+        seconds = None
+    if not isinstance(seconds, dict) or set(seconds) != set(share):
+        return _compile_here(share)
+    return {group: float(value) for group, value in seconds.items()}
+
+
+def _write_markers(folder: Path, seconds: dict[str, float]) -> None:
+    """Record each compiled group; an unwritable cache only means the next run checks again."""
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+        for group, value in seconds.items():
+            (folder / group).write_text(f"{value:.3f}\n")
+    except OSError:
+        pass
+
+
+if __name__ == "__main__":
+    sys.stdout.write(json.dumps(_compile_here(sys.argv[1:])) + "\n")

@@ -1,0 +1,208 @@
+"""``render_frames``: many frames (and tiles of frames), in this process or on a Dask cluster.
+
+Each task is one of the pure functions of :mod:`pixelpath.frames.work` applied to the scene,
+a frame number and the render options. In this process they run one after another (each frame
+uses Numba's threads on every core). With a ``dask.distributed`` client the scene is scattered
+to every worker once, before any task, and tasks name it by its key; a task lost with a worker
+that died is run again on another (Dask retries it up to its ``allowed-failures``). Files are
+written here, atomically, as frames complete: tasks return the encoded bytes, or tiles that are
+stitched here, so workers need no shared disk.
+"""
+
+from __future__ import annotations
+
+import os
+import uuid
+from collections.abc import Callable, Iterable
+from pathlib import Path
+from typing import Any
+
+from pixelpath.frames import work
+from pixelpath.frames.plan import FramePlan, plan_frames
+from pixelpath.image import Image
+from pixelpath.scene import Scene
+
+Progress = Callable[[int], None]
+
+
+def render_frames(
+    scene: Scene,
+    frames: Iterable[int] | None,
+    client: Any = None,
+    out: str | os.PathLike | None = None,
+    *,
+    tiles: tuple[int, int] = (1, 1),
+    resume: bool = False,
+    gamma: float | None = None,
+    progress: Progress | None = None,
+    **options: Any,
+) -> list[Image] | list[Path]:
+    """Render many frames of an animated scene, here or on a Dask cluster.
+
+    Parameters
+    ----------
+    scene : Scene
+        The scene; frame ``n`` is ``scene.at_frame(n)`` (every frame is the same scene when it
+        has no animation).
+    frames : iterable of int, or None
+        Frame numbers, each once (``range(120)``); None for every frame of the animation.
+    client : dask.distributed.Client, optional
+        Run on this client's cluster; default: in this process, one frame after another.
+    out : str or path-like, optional
+        Write each frame to ``out.format(frame=n)`` (``"out/frame_{frame:04d}.png"``),
+        atomically, creating folders as needed; default: return the images.
+    tiles : (columns, rows)
+        Split each frame into tiles rendered as separate tasks and stitched; the result is
+        identical to the untiled frame.
+    resume : bool
+        Skip frames whose file already holds a whole image of the right size (each is read
+        back to make sure); needs ``out``.
+    gamma : float, optional
+        Display gamma the files are encoded with, as ``Image.save``.
+    progress : callable, optional
+        Called with 1 each time a task (a frame, or a tile) completes.
+    **options
+        Keywords of :func:`pixelpath.render`: ``method``, ``shading``, ``backface_cull``,
+        ``ssaa``, ``blinn``, ``style``, ``max_depth``, ``samples``.
+
+    Returns
+    -------
+    list of Path or list of Image
+        In the order of ``frames``: the files (skipped ones included) when ``out`` is given,
+        else the images.
+
+    Raises
+    ------
+    ValueError, TypeError
+        For a frame outside the animation, an ``out`` without ``{frame}`` for several frames,
+        tiles smaller than a pixel or bad render options, before any work starts.
+
+    Examples
+    --------
+    >>> import pixelpath as pp
+    >>> from pixelpath.scene import Animation, Turntable
+    >>> scene = pp.Scene(
+    ...     pp.Camera(eye=(0, 1, 5), target=(0, 0, 0), width=32, height=24),
+    ...     [pp.Box((-1, -1, -1), (1, 1, 1))],
+    ...     [pp.PointLight((3, 4, 5))],
+    ...     animation=Animation(8, turntable=Turntable()),
+    ... )
+    >>> images = pp.render_frames(scene, range(0, 8, 2), shading="flat")
+    >>> [image.shape for image in images] == [(24, 32, 3)] * 4
+    True
+    >>> paths = pp.render_frames(scene, [0, 4], out="spin/f_{frame:02d}.png")
+    >>> [path.as_posix() for path in paths]
+    ['spin/f_00.png', 'spin/f_04.png']
+    """
+    plan = plan_frames(
+        scene, frames, out, tiles=tiles, resume=resume, gamma=gamma, options=options
+    )
+    return run_plan(plan, client, progress)
+
+
+def run_plan(plan: FramePlan, client: Any = None, progress: Progress | None = None) -> list:
+    """Carry out a :class:`~pixelpath.frames.plan.FramePlan`; see :func:`render_frames`."""
+    frames = _Frames(plan)
+    advance = progress or (lambda steps: None)
+    tasks = _tasks(plan)
+    if client is None:
+        for function, frame, tile, args in tasks:
+            frames.add(frame, tile, function(plan.scene, frame, *args))
+            advance(1)
+    else:
+        _run_on(client, plan.scene, plan.options, tasks, frames, advance)
+    if plan.paths is None:
+        return [frames.images[frame] for frame in plan.frames]
+    return [plan.paths[frame] for frame in plan.frames]
+
+
+def _tasks(plan: FramePlan) -> list[tuple[Callable, int, int, tuple]]:
+    """Return (function, frame, tile index, further arguments) for every task, frame by frame."""
+    tasks = []
+    for frame in plan.todo:
+        if len(plan.regions) == 1 and plan.paths is not None:
+            args = (plan.options, plan.paths[frame].suffix, plan.gamma)
+            tasks.append((work.frame_file, frame, 0, args))
+            continue
+        tiled = len(plan.regions) > 1
+        for tile, region in enumerate(plan.regions):
+            args = (plan.options, region if tiled else None)
+            tasks.append((work.render_frame, frame, tile, args))
+    return tasks
+
+
+class _Frames:
+    """Gathers task results; finishes (stitches, writes) each frame when its last tile is in."""
+
+    def __init__(self, plan: FramePlan) -> None:
+        self.plan = plan
+        self.images: dict[int, Image] = {}
+        self.pending: dict[int, dict[int, Any]] = {}
+        if plan.paths is not None:
+            for path in {plan.paths[frame].parent for frame in plan.todo}:
+                path.mkdir(parents=True, exist_ok=True)
+
+    def add(self, frame: int, tile: int, result: Any) -> None:
+        parts = self.pending.setdefault(frame, {})
+        parts[tile] = result
+        if len(parts) < len(self.plan.regions):
+            return
+        del self.pending[frame]
+        if isinstance(result, bytes):
+            self._write(frame, result)
+            return
+        image = result
+        if len(self.plan.regions) > 1:
+            image = work.stitch([parts[i] for i in range(len(parts))], self.plan.regions)
+        if self.plan.paths is None:
+            self.images[frame] = image
+        else:
+            self._write(frame, work.encode(image, self.plan.paths[frame].suffix, self.plan.gamma))
+
+    def _write(self, frame: int, data: bytes) -> None:
+        from pixelpath.io.images import write_bytes
+
+        write_bytes(self.plan.paths[frame], data)
+
+
+def _run_on(
+    client: Any,
+    scene: Scene,
+    options: dict[str, Any],
+    tasks: list,
+    frames: _Frames,
+    advance: Progress,
+) -> None:
+    """Run ``tasks`` on a Dask cluster; the scene goes to each worker once, before them."""
+    from distributed import as_completed
+
+    from pixelpath.frames.cluster import warm_workers
+
+    warm_workers(client, options)
+    run = uuid.uuid4().hex[:8]
+    shared = client.scatter(scene, broadcast=True, hash=False)
+    futures = {}
+    try:
+        for function, frame, tile, args in tasks:
+            key = f"pixelpath-{run}-frame-{frame}-tile-{tile}"
+            future = client.submit(function, shared, frame, *args, key=key, pure=False)
+            futures[future] = (frame, tile)
+        for future in as_completed(futures):
+            frame, tile = futures[future]
+            frames.add(frame, tile, _result(future, frame))
+            future.release()
+            advance(1)
+    finally:
+        client.cancel([*futures, shared])
+
+
+def _result(future: Any, frame: int) -> Any:
+    from distributed import KilledWorker
+
+    try:
+        return future.result()
+    except KilledWorker as exc:
+        raise RuntimeError(
+            f"frame {frame} was lost with a worker too many times ({exc}); see Dask's "
+            f"distributed.scheduler.allowed-failures"
+        ) from None

@@ -1,0 +1,114 @@
+"""The work of one task: pure, picklable functions of (scene, frame, options).
+
+They are module-level functions of plain arguments, so any process that has pixelpath can run
+them (Dask pickles them by reference) and the same arguments always give the same result: a
+frame rendered on a worker is the frame rendered here, to the byte.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Any
+
+import numpy as np
+
+from pixelpath.image import Image
+from pixelpath.scene import Scene
+
+
+def render_frame(
+    scene: Scene,
+    frame: int,
+    options: dict[str, Any],
+    region: tuple[int, int, int, int] | None = None,
+) -> Image:
+    """Render ``frame`` of ``scene`` (or the ``region`` of it) with ``render``'s ``options``.
+
+    Examples
+    --------
+    >>> import pixelpath as pp
+    >>> from pixelpath.frames import render_frame
+    >>> scene = pp.Scene(pp.Camera(eye=(0, 0, 5), target=(0, 0, 0), width=8, height=6))
+    >>> render_frame(scene, 0, {"shading": "flat"}, region=(0, 0, 4, 6)).shape
+    (6, 4, 3)
+    """
+    from pixelpath.renderer import render
+
+    return render(scene.at_frame(frame), region=region, **options)
+
+
+def frame_file(
+    scene: Scene, frame: int, options: dict[str, Any], suffix: str, gamma: float | None
+) -> bytes:
+    """Return the bytes of ``frame``'s image file (format by ``suffix``, e.g. ``".png"``).
+
+    Examples
+    --------
+    >>> import pixelpath as pp
+    >>> from pixelpath.frames import frame_file
+    >>> scene = pp.Scene(pp.Camera(eye=(0, 0, 5), target=(0, 0, 0), width=8, height=6))
+    >>> frame_file(scene, 0, {}, ".png", None)[1:4]
+    b'PNG'
+    """
+    return encode(render_frame(scene, frame, options), suffix, gamma)
+
+
+def warm_up(options: dict[str, Any]) -> None:
+    """Render a tiny scene of every kind of object with ``options``, compiling what they need.
+
+    Numba compiles a kernel for the types of its arguments, not their values, so this compiles
+    (or loads from the disk cache) every kernel that frames rendered with ``options`` call.
+
+    Examples
+    --------
+    >>> from pixelpath.frames.work import warm_up
+    >>> warm_up({"shading": "gouraud"})
+    """
+    from pixelpath.renderer import render
+    from pixelpath.scene import Box, Camera, DirectionalLight, Plane, PointLight, Sphere
+    from pixelpath.scene.procedural import icosphere
+
+    scene = Scene(
+        Camera(eye=(0, 1, 4), target=(0, 0, 0), width=8, height=6),
+        [
+            Plane((0, -1, 0), (0, 1, 0)),
+            Sphere((-1, 0, 0), 0.5),
+            Box((0, -0.5, -0.5), (1, 0.5, 0.5)),
+            icosphere(subdivisions=0, radius=0.3, center=(0, 1, 0)),
+        ],
+        [PointLight((2, 3, 4)), DirectionalLight((-1, -1, -1))],
+    )
+    render(scene, **options)
+
+
+def encode(image: Image, suffix: str, gamma: float | None) -> bytes:
+    """Return ``image`` encoded as ``Image.save`` would write it."""
+    from pixelpath.io.images import encode_image
+
+    return encode_image(image.rgb, suffix, gamma=gamma)
+
+
+def stitch(tiles: Sequence[Image], regions: Sequence[tuple[int, int, int, int]]) -> Image:
+    """Return the image the ``tiles`` (rendered over ``regions``) cover, buffers included.
+
+    The stitched image has no ``stats``: counts of separate tiles do not add up to a frame's.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from pixelpath import Image
+    >>> from pixelpath.frames.work import stitch
+    >>> left, right = Image(np.zeros((2, 1, 3))), Image(np.ones((2, 2, 3)))
+    >>> np.asarray(stitch([left, right], [(0, 0, 1, 2), (1, 0, 3, 2)]))[:, :, 0].tolist()
+    [[0.0, 1.0, 1.0], [0.0, 1.0, 1.0]]
+    """
+    width = max(region[2] for region in regions)
+    height = max(region[3] for region in regions)
+    rgb = np.empty((height, width, 3), np.float32)
+    depth = np.empty((height, width), np.float32)
+    object_id = np.empty((height, width), np.int32)
+    for tile, (x0, y0, x1, y1) in zip(tiles, regions, strict=True):
+        rgb[y0:y1, x0:x1] = tile.rgb
+        depth[y0:y1, x0:x1] = tile.depth
+        object_id[y0:y1, x0:x1] = tile.object_id
+    return Image(rgb, depth, object_id)

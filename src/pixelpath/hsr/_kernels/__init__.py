@@ -1,0 +1,1 @@
+"""Compiled kernels of the hidden-surface methods, one module per method."""

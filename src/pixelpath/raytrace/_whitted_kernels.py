@@ -1,0 +1,594 @@
+"""Compiled Whitted ray tracing: one pixel's tree of rays, followed with an explicit stack.
+
+The colour a ray brings back is the notes' sum, ``I = I_local + kr I_R + kt I_T``: the local
+Phong light where it hits (each light's share scaled by what its shadow ray lets through), plus
+the light of the reflected ray weighted by ``reflectivity`` and that of the refracted ray
+weighted by ``transparency``. Unrolled, a pixel is a sum over the tree of rays of
+``weight × I_local``, where a ray's weight is the product of the coefficients on its way from
+the eye. So the tree is walked depth first with a stack of pending rays, each carrying its
+weight, and every ray adds its share as it is traced: no recursion, no values passed back up.
+
+* Primary rays start at the eye with a direction whose component along the viewing axis is 1,
+  so t is the depth the rasterizer stores; they see what lies between the camera's near and far
+  planes and, when back faces are culled, only the faces the rasterizer keeps (a mesh polygon
+  or plane facing away from the eye, a sphere's far side).
+* Secondary rays (shadow, reflected, refracted) see both sides of everything. They start at the
+  hit point moved ``epsilon`` along the geometric normal, to the side they leave towards, so
+  they never hit the surface they start on (no shadow acne, no black glass).
+* Refraction follows Snell's law with the notes' T = ηd + (η cos θi − cos θt)N; a ray leaving an
+  object (its direction along the outward normal) goes from ``ior`` back to 1. When T does not
+  exist (total internal reflection) the transmitted share is reflected instead; with Schlick's
+  Fresnel term F the transmitted share is split into F reflected and 1 − F transmitted.
+* Shadow rays are any-hit queries: an opaque object blocks the light, a transparent one lets
+  its ``transparency`` through (no bending of the light: no caustics).
+* A ray is traced only when its depth is at most ``max_depth`` and its weight at least
+  ``MIN_WEIGHT``.
+
+``trace_pixel`` can record every ray it traces into a log (``ray_tree`` reads it); the
+renderer passes an empty log.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+
+from pixelpath._jit import njit, register_warmup
+from pixelpath.lighting._kernels import light_direction, shade_point
+from pixelpath.raytrace._kernels import (
+    MISS,
+    any_triangle,
+    closest_triangle,
+    plane_t,
+    reflect_direction,
+    refract_direction,
+    slab_nan_allowed,
+    sphere_roots,
+    sphere_t,
+)
+
+# A ray whose weight falls below this is not traced: it could move no 8-bit pixel value unless
+# the light it carries exceeded 16 (Hall and Greenberg's adaptive depth control).
+MIN_WEIGHT = 1.0 / 4096.0
+
+# Material rows of the tracer: Material.packed() (8 values), then these three.
+REFLECTIVITY = 8
+TRANSPARENCY = 9
+IOR = 10
+MATERIAL_FIELDS = 11
+
+# Kinds of ray (log field KIND) and of primitive (log field PRIMITIVE).
+PRIMARY, REFLECTED, REFRACTED = 0, 1, 2
+SPHERE, PLANE, TRIANGLE = 0, 1, 2
+
+# Counters of a row of pixels.
+COUNT_PRIMARY, COUNT_SHADOW, COUNT_REFLECTED, COUNT_REFRACTED = 0, 1, 2, 3
+COUNT_MISSED, COUNT_TOTAL_REFLECTION, COUNT_NODES, COUNT_TESTS = 4, 5, 6, 7
+COUNTS = 8
+
+# Fields of a logged ray.
+PARENT, KIND, DEPTH, WEIGHT, ORIGIN, DIRECTION, T = 0, 1, 2, 3, 4, 7, 10
+OBJECT, PRIMITIVE, PRIMITIVE_INDEX, POINT, NORMAL, GEOMETRIC = 11, 12, 13, 14, 17, 20
+ENTERING, LOCAL, KR, KT, TOTAL_REFLECTION, FRESNEL, ETA, SAMPLE = 23, 24, 27, 28, 29, 30, 31, 32
+LOG_FIELDS = 33
+
+# Pending rays on the stack: origin, direction, weight, depth, kind, log index of the parent.
+RAY_FIELDS = 10
+
+
+class TraceScene(NamedTuple):
+    """Everything the tracer intersects and shades, packed by :mod:`pixelpath.raytrace.tracer`."""
+
+    spheres: np.ndarray  # (S, 4) centre and radius
+    sphere_object: np.ndarray  # (S,) intp object index
+    planes: np.ndarray  # (P, 6) point and unit normal
+    plane_object: np.ndarray  # (P,) intp
+    plane_back: np.ndarray  # (P,) bool: seen from behind by the eye (culled for primary rays)
+    bounds: np.ndarray  # (N, 6) BVH node boxes
+    links: np.ndarray  # (N, 2) intp BVH (first, count)
+    tris: np.ndarray  # (T, 9) triangle corners, in leaf order
+    tri_normals: np.ndarray  # (T, 9) unit vertex normals at the corners
+    tri_flat: np.ndarray  # (T, 3) unit normal of the polygon each triangle comes from
+    tri_object: np.ndarray  # (T,) intp
+    tri_source: np.ndarray  # (T,) intp triangle index in the scene's order (ties, reports)
+    tri_back: np.ndarray  # (T,) bool: faces away from the eye (culled for primary rays)
+    tri_pass: np.ndarray  # (T,) float64 transparency of each triangle's object
+    materials: np.ndarray  # (O, MATERIAL_FIELDS)
+    lights: np.ndarray  # (L, 7) packed lights
+    ambient: np.ndarray  # (3,)
+    background: np.ndarray  # (3,)
+    camera: np.ndarray  # (12,) eye, right (u tan_x), up (v tan_y), forward (-w)
+
+
+class Settings(NamedTuple):
+    """The scalar choices of a render."""
+
+    max_depth: int
+    samples: int
+    blinn: bool
+    flat: bool
+    fresnel: bool
+    cull: bool  # back faces culled for primary rays
+    epsilon: float  # offset of secondary ray origins along the normal
+    near: float
+    far: float
+    image_width: int  # of the whole (supersampled) image: pixel numbers seed the sampling
+    image_height: int
+
+
+class Work(NamedTuple):
+    """Scratch space of one thread, and the optional log of rays."""
+
+    stack: np.ndarray  # (BVH depth + 1,) intp
+    stack_t: np.ndarray  # (BVH depth + 1,)
+    rays: np.ndarray  # (max_depth + 2, RAY_FIELDS) pending rays
+    lights: np.ndarray  # (L, 7) the lights a shadow ray reaches, scaled by what gets through
+    shaded: np.ndarray  # (3,)
+    counts: np.ndarray  # (COUNTS,) int64
+    log: np.ndarray  # (M, LOG_FIELDS) logged rays; M = 0 logs nothing
+    log_lights: np.ndarray  # (M, L, 2) per logged ray and light: light let through, blocker
+    logged: np.ndarray  # (1,) intp rays logged (may exceed M: the rest were not written)
+
+
+@njit
+def new_work(scene, settings, bvh_depth, log_size):
+    """Return the scratch space of one thread (with room for ``log_size`` logged rays)."""
+    lights = scene.lights.shape[0]
+    return Work(
+        np.empty(bvh_depth + 1, dtype=np.intp),
+        np.empty(bvh_depth + 1),
+        np.empty((settings.max_depth + 2, RAY_FIELDS)),
+        np.empty((lights, 7)),
+        np.empty(3),
+        np.zeros(COUNTS, dtype=np.int64),
+        np.empty((log_size, LOG_FIELDS)),
+        np.empty((log_size, lights, 2)),
+        np.zeros(1, dtype=np.intp),
+    )
+
+
+@njit(inline="always")
+def _mul32(x, c):
+    """Return x·c mod 2³² for x, c < 2³², in products below 2⁴⁹ (no int64 overflow)."""
+    low = x * (c & 0xFFFF)
+    high = ((x * (c >> 16)) & 0xFFFF) << 16
+    return (low + high) & 0xFFFFFFFF
+
+
+@njit(inline="always")
+def _hash32(x):
+    """Return a 32-bit integer hash of x (Wellons' lowbias32), in int64 arithmetic."""
+    x &= 0xFFFFFFFF
+    x ^= x >> 16
+    x = _mul32(x, 0x7FEB352D)
+    x ^= x >> 15
+    x = _mul32(x, 0x846CA68B)
+    x ^= x >> 16
+    return x
+
+
+@njit(inline="always")
+def _uniform(pixel, sample, axis):
+    """Return a number in [0, 1) fixed by (pixel, sample, axis): the same in every run."""
+    h = _hash32(pixel ^ _hash32(2 * sample + axis + 0x9E3779B9))
+    return (h >> 8) * (1.0 / 16777216.0)
+
+
+@njit(inline="always")
+def sample_position(pixel, sample, samples):
+    """Return where sample ``sample`` of ``samples`` lies in its pixel, (0.5, 0.5) for one.
+
+    Stratified: the pixel is cut into columns × rows = samples cells (the most square
+    factorization, wider than tall), one jittered sample per cell.
+    """
+    if samples == 1:
+        return 0.5, 0.5
+    rows = int(math.sqrt(samples))
+    while samples % rows != 0:
+        rows -= 1
+    columns = samples // rows
+    cx = sample % columns
+    cy = sample // columns
+    return (cx + _uniform(pixel, sample, 0)) / columns, (cy + _uniform(pixel, sample, 1)) / rows
+
+
+@njit(inline="always")
+def primary_direction(camera, px, py, width, height):
+    """Return the direction through image point (px, py) (pixels; row 0 at the top).
+
+    Its component along the viewing axis is 1, so the t of a hit is its depth.
+    """
+    ndc_x = 2.0 * px / width - 1.0
+    ndc_y = 1.0 - 2.0 * py / height
+    return (
+        camera[9] + ndc_x * camera[3] + ndc_y * camera[6],
+        camera[10] + ndc_x * camera[4] + ndc_y * camera[7],
+        camera[11] + ndc_x * camera[5] + ndc_y * camera[8],
+    )
+
+
+@njit(inline="always")
+def nearest_hit(scene, ox, oy, oz, dx, dy, dz, t_min, t_max, primary_cull, work):
+    """Return (t, primitive kind, index, w1, w2) of the nearest hit; index MISS when none.
+
+    ``primary_cull`` skips what back-face culling removes for the eye's rays.
+    """
+    spheres = scene.spheres  # each field read once: a read is a reference count update
+    planes = scene.planes
+    plane_back = scene.plane_back
+    best_t = t_max
+    kind = SPHERE
+    index = MISS
+    w1 = 0.0
+    w2 = 0.0
+    for s in range(spheres.shape[0]):
+        t0, t1 = sphere_roots(
+            ox, oy, oz, dx, dy, dz, spheres[s, 0], spheres[s, 1], spheres[s, 2], spheres[s, 3]
+        )
+        t = sphere_t(t0, t1, t_min, best_t, primary_cull)
+        if t < best_t:
+            best_t, kind, index = t, SPHERE, s
+    for p in range(planes.shape[0]):
+        if primary_cull and plane_back[p]:
+            continue
+        t = plane_t(
+            ox, oy, oz, dx, dy, dz, planes[p, 0], planes[p, 1], planes[p, 2], planes[p, 3],
+            planes[p, 4], planes[p, 5],
+        )
+        if t_min < t < best_t:
+            best_t, kind, index = t, PLANE, p
+    t, i, b1, b2, nodes, tests = closest_triangle(
+        scene.bounds, scene.links, scene.tris, scene.tri_source, scene.tri_back, primary_cull,
+        ox, oy, oz, dx, dy, dz, t_min, best_t, work.stack, work.stack_t,
+    )
+    counts = work.counts
+    counts[COUNT_NODES] += nodes
+    counts[COUNT_TESTS] += tests
+    if i != MISS:
+        best_t, kind, index, w1, w2 = t, TRIANGLE, i, b1, b2
+    return best_t, kind, index, w1, w2
+
+
+@njit(inline="always")
+def light_let_through(scene, ox, oy, oz, dx, dy, dz, t_max, work):
+    """Return (fraction of light let through, blocking object or MISS) along a shadow ray."""
+    through = 1.0
+    for s in range(scene.spheres.shape[0]):
+        t0, t1 = sphere_roots(
+            ox, oy, oz, dx, dy, dz, scene.spheres[s, 0], scene.spheres[s, 1],
+            scene.spheres[s, 2], scene.spheres[s, 3],
+        )
+        obj = scene.sphere_object[s]
+        for t in (t0, t1):
+            if 0.0 < t < t_max:
+                through *= scene.materials[obj, TRANSPARENCY]
+                if through == 0.0:
+                    return 0.0, obj
+    for p in range(scene.planes.shape[0]):
+        t = plane_t(
+            ox, oy, oz, dx, dy, dz, scene.planes[p, 0], scene.planes[p, 1], scene.planes[p, 2],
+            scene.planes[p, 3], scene.planes[p, 4], scene.planes[p, 5],
+        )
+        if 0.0 < t < t_max:
+            obj = scene.plane_object[p]
+            through *= scene.materials[obj, TRANSPARENCY]
+            if through == 0.0:
+                return 0.0, obj
+    fraction, blocker, nodes, tests = any_triangle(
+        scene.bounds, scene.links, scene.tris, scene.tri_pass, ox, oy, oz, dx, dy, dz, 0.0,
+        t_max, work.stack,
+    )
+    work.counts[COUNT_NODES] += nodes
+    work.counts[COUNT_TESTS] += tests
+    if blocker != MISS:
+        return 0.0, scene.tri_object[blocker]
+    return through * fraction, MISS
+
+
+@njit(inline="always")
+def _unit(x, y, z):
+    length = math.sqrt(x * x + y * y + z * z)
+    inv = 1.0 / length if length > 0.0 else 0.0
+    return x * inv, y * inv, z * inv
+
+
+@njit(inline="always")
+def surface(scene, settings, kind, index, w1, w2, px, py, pz):
+    """Return (object, geometric normal, shading normal) at a hit; outward unit normals."""
+    if kind == SPHERE:
+        radius = scene.spheres[index, 3]
+        gx = (px - scene.spheres[index, 0]) / radius
+        gy = (py - scene.spheres[index, 1]) / radius
+        gz = (pz - scene.spheres[index, 2]) / radius
+        gx, gy, gz = _unit(gx, gy, gz)
+        return scene.sphere_object[index], gx, gy, gz, gx, gy, gz
+    if kind == PLANE:
+        nx, ny, nz = scene.planes[index, 3], scene.planes[index, 4], scene.planes[index, 5]
+        return scene.plane_object[index], nx, ny, nz, nx, ny, nz
+    t = scene.tris
+    e1x, e1y, e1z = t[index, 3] - t[index, 0], t[index, 4] - t[index, 1], t[index, 5] - t[index, 2]
+    e2x, e2y, e2z = t[index, 6] - t[index, 0], t[index, 7] - t[index, 1], t[index, 8] - t[index, 2]
+    gx, gy, gz = _unit(e1y * e2z - e1z * e2y, e1z * e2x - e1x * e2z, e1x * e2y - e1y * e2x)
+    if settings.flat:
+        sx, sy, sz = scene.tri_flat[index, 0], scene.tri_flat[index, 1], scene.tri_flat[index, 2]
+    else:
+        w0 = 1.0 - w1 - w2
+        n = scene.tri_normals
+        sx, sy, sz = _unit(
+            w0 * n[index, 0] + w1 * n[index, 3] + w2 * n[index, 6],
+            w0 * n[index, 1] + w1 * n[index, 4] + w2 * n[index, 7],
+            w0 * n[index, 2] + w1 * n[index, 5] + w2 * n[index, 8],
+        )
+    if sx == 0.0 and sy == 0.0 and sz == 0.0:
+        sx, sy, sz = gx, gy, gz
+    return scene.tri_object[index], gx, gy, gz, sx, sy, sz
+
+
+@njit(inline="always")
+def _offset(px, py, pz, gx, gy, gz, dx, dy, dz, epsilon):
+    """Return p moved epsilon along the geometric normal g, to the side direction d leaves to."""
+    side = epsilon if gx * dx + gy * dy + gz * dz >= 0.0 else -epsilon
+    return px + side * gx, py + side * gy, pz + side * gz
+
+
+@njit
+def local_light(scene, settings, obj, px, py, pz, gx, gy, gz, nx, ny, nz, ex, ey, ez, work,
+                logged):
+    """Write the local Phong intensity at p into work.shaded, with a shadow ray per light.
+
+    (g: geometric normal, n: shading normal, both on the side the ray came from; e: where the
+    ray came from, the "eye" of the model.) A light behind the surface (N·L <= 0) contributes
+    nothing and needs no shadow ray; each other light enters the model scaled by the light its
+    shadow ray lets through. Logs each light's fraction and blocker in row ``logged`` when
+    that row exists.
+    """
+    lights = scene.lights
+    log = logged < work.log.shape[0]
+    count = 0
+    for k in range(lights.shape[0]):
+        lx, ly, lz = light_direction(lights, k, px, py, pz)
+        through = -1.0  # not tested
+        blocker = MISS
+        if nx * lx + ny * ly + nz * lz > 0.0:
+            work.counts[COUNT_SHADOW] += 1
+            sx, sy, sz = _offset(px, py, pz, gx, gy, gz, lx, ly, lz, settings.epsilon)
+            if lights[k, 0] == 0.0:  # a point light: the segment up to it, t in (0, 1)
+                dx, dy, dz = lights[k, 1] - sx, lights[k, 2] - sy, lights[k, 3] - sz
+                t_max = 1.0
+            else:
+                dx, dy, dz = lx, ly, lz
+                t_max = math.inf
+            through, blocker = light_let_through(scene, sx, sy, sz, dx, dy, dz, t_max, work)
+            if through > 0.0:
+                for field in range(4):
+                    work.lights[count, field] = lights[k, field]
+                for field in range(4, 7):
+                    work.lights[count, field] = lights[k, field] * through
+                count += 1
+        if log:
+            work.log_lights[logged, k, 0] = through
+            work.log_lights[logged, k, 1] = blocker
+    shade_point(
+        px, py, pz, nx, ny, nz, ex, ey, ez, scene.materials[obj], work.lights[:count],
+        scene.ambient, settings.blinn, work.shaded,
+    )
+
+
+@njit(inline="always")
+def _schlick(cos_i, cos_t, eta, ior):
+    """Return Schlick's reflectance for the interface, using the cosine on the thinner side."""
+    r0 = (1.0 - ior) / (1.0 + ior)
+    r0 *= r0
+    cosine = cos_t if eta > 1.0 else cos_i
+    m = 1.0 - cosine
+    return r0 + (1.0 - r0) * m * m * m * m * m
+
+
+@njit(inline="always")
+def _push(rays, top, ox, oy, oz, dx, dy, dz, weight, depth, kind, parent):
+    rays[top, 0], rays[top, 1], rays[top, 2] = ox, oy, oz
+    rays[top, 3], rays[top, 4], rays[top, 5] = dx, dy, dz
+    rays[top, 6], rays[top, 7], rays[top, 8], rays[top, 9] = weight, depth, kind, parent
+    return top + 1
+
+
+@njit
+def trace(scene, settings, ox, oy, oz, dx, dy, dz, sample, work):
+    """Trace one eye ray and its tree; return (r, g, b unclamped, depth, object)."""
+    rays = work.rays
+    top = _push(rays, 0, ox, oy, oz, dx, dy, dz, 1.0, 0.0, float(PRIMARY), -1.0)
+    red = green = blue = 0.0
+    first_t = math.inf
+    first_object = MISS
+    while top > 0:
+        top -= 1
+        ox, oy, oz = rays[top, 0], rays[top, 1], rays[top, 2]
+        dx, dy, dz = rays[top, 3], rays[top, 4], rays[top, 5]
+        weight, depth, kind, parent = rays[top, 6], int(rays[top, 7]), rays[top, 8], rays[top, 9]
+        primary = depth == 0
+        if primary:  # the eye's ray: between the near and far planes, culled like the raster
+            work.counts[COUNT_PRIMARY] += 1
+            t_min, t_max, cull = settings.near, settings.far, settings.cull
+        else:
+            work.counts[COUNT_REFLECTED if kind == REFLECTED else COUNT_REFRACTED] += 1
+            t_min, t_max, cull = 0.0, math.inf, False
+        t, hit_kind, index, w1, w2 = nearest_hit(
+            scene, ox, oy, oz, dx, dy, dz, t_min, t_max, cull, work
+        )
+        logged = work.logged[0]
+        work.logged[0] += 1
+        log = logged < work.log.shape[0]
+        if log:
+            _log_ray(work.log, logged, parent, kind, depth, weight, ox, oy, oz, dx, dy, dz, sample)
+        if index == MISS:
+            work.counts[COUNT_MISSED] += 1
+            red += weight * scene.background[0]
+            green += weight * scene.background[1]
+            blue += weight * scene.background[2]
+            if log:
+                _log_miss(work.log, logged, scene.background)
+            continue
+        px, py, pz = ox + t * dx, oy + t * dy, oz + t * dz
+        obj, gx, gy, gz, nx, ny, nz = surface(scene, settings, hit_kind, index, w1, w2, px, py, pz)
+        entering = gx * dx + gy * dy + gz * dz < 0.0
+        if not entering:  # seen from behind (or from inside): turn the normals towards the ray
+            gx, gy, gz, nx, ny, nz = -gx, -gy, -gz, -nx, -ny, -nz
+        if primary:
+            first_t, first_object = t, obj
+        local_light(scene, settings, obj, px, py, pz, gx, gy, gz, nx, ny, nz, ox, oy, oz, work,
+                    logged)
+        red += weight * work.shaded[0]
+        green += weight * work.shaded[1]
+        blue += weight * work.shaded[2]
+        material = scene.materials[obj]
+        kr = material[REFLECTIVITY]
+        kt = material[TRANSPARENCY]
+        total = False
+        fresnel = 0.0
+        eta = 1.0
+        ux, uy, uz = _unit(dx, dy, dz)
+        tx = ty = tz = 0.0
+        if depth < settings.max_depth and kt > 0.0:
+            eta = 1.0 / material[IOR] if entering else material[IOR]
+            tx, ty, tz, exists = refract_direction(ux, uy, uz, nx, ny, nz, eta)
+            if not exists:
+                total = True
+                work.counts[COUNT_TOTAL_REFLECTION] += 1
+                kr, kt = kr + kt, 0.0
+            elif settings.fresnel:
+                cos_i = -(ux * nx + uy * ny + uz * nz)
+                cos_t = -(tx * nx + ty * ny + tz * nz)
+                fresnel = _schlick(cos_i, cos_t, eta, material[IOR])
+                kr, kt = kr + kt * fresnel, kt * (1.0 - fresnel)
+        if log:
+            _log_hit(work.log, logged, t, obj, hit_kind, index, scene.tri_source, px, py, pz,
+                     nx, ny, nz, gx, gy, gz, entering, work.shaded, kr, kt, total, fresnel, eta)
+        if depth >= settings.max_depth:
+            continue
+        if kt > 0.0 and weight * kt >= MIN_WEIGHT:
+            sx, sy, sz = _offset(px, py, pz, gx, gy, gz, tx, ty, tz, settings.epsilon)
+            top = _push(rays, top, sx, sy, sz, tx, ty, tz, weight * kt, depth + 1.0,
+                        float(REFRACTED), float(logged))
+        if kr > 0.0 and weight * kr >= MIN_WEIGHT:
+            rx, ry, rz = reflect_direction(ux, uy, uz, nx, ny, nz)
+            sx, sy, sz = _offset(px, py, pz, gx, gy, gz, rx, ry, rz, settings.epsilon)
+            top = _push(rays, top, sx, sy, sz, rx, ry, rz, weight * kr, depth + 1.0,
+                        float(REFLECTED), float(logged))
+    return red, green, blue, first_t, first_object
+
+
+@njit
+def _log_ray(log, row, parent, kind, depth, weight, ox, oy, oz, dx, dy, dz, sample):
+    log[row, PARENT] = parent
+    log[row, KIND] = kind
+    log[row, DEPTH] = depth
+    log[row, WEIGHT] = weight
+    log[row, ORIGIN], log[row, ORIGIN + 1], log[row, ORIGIN + 2] = ox, oy, oz
+    log[row, DIRECTION], log[row, DIRECTION + 1], log[row, DIRECTION + 2] = dx, dy, dz
+    log[row, SAMPLE] = sample
+
+
+@njit
+def _log_miss(log, row, background):
+    log[row, T] = math.inf
+    log[row, OBJECT] = MISS
+    log[row, PRIMITIVE] = MISS
+    for c in range(3):
+        log[row, LOCAL + c] = background[c]
+
+
+@njit
+def _log_hit(log, row, t, obj, kind, index, source, px, py, pz, nx, ny, nz, gx, gy, gz,
+             entering, shaded, kr, kt, total, fresnel, eta):
+    log[row, T] = t
+    log[row, OBJECT] = obj
+    log[row, PRIMITIVE] = kind
+    log[row, PRIMITIVE_INDEX] = source[index] if kind == TRIANGLE else index
+    log[row, POINT], log[row, POINT + 1], log[row, POINT + 2] = px, py, pz
+    log[row, NORMAL], log[row, NORMAL + 1], log[row, NORMAL + 2] = nx, ny, nz
+    log[row, GEOMETRIC], log[row, GEOMETRIC + 1], log[row, GEOMETRIC + 2] = gx, gy, gz
+    log[row, ENTERING] = 1.0 if entering else 0.0
+    for c in range(3):
+        log[row, LOCAL + c] = shaded[c]
+    log[row, KR] = kr
+    log[row, KT] = kt
+    log[row, TOTAL_REFLECTION] = 1.0 if total else 0.0
+    log[row, FRESNEL] = fresnel
+    log[row, ETA] = eta
+
+
+@njit(inline="always")
+def _clamp01(value):
+    return min(max(value, 0.0), 1.0)
+
+
+@njit
+def trace_pixel(scene, settings, x, y, work):
+    """Return pixel (x, y) of the whole image: (r, g, b clamped, depth, object).
+
+    The colour is the mean of the clamped colours of its samples; depth and object come from
+    the nearest sample that hit something.
+    """
+    pixel = y * settings.image_width + x
+    red = green = blue = 0.0
+    depth = math.inf
+    obj = MISS
+    camera = scene.camera
+    for s in range(settings.samples):
+        sx, sy = sample_position(pixel, s, settings.samples)
+        dx, dy, dz = primary_direction(
+            camera, x + sx, y + sy, settings.image_width, settings.image_height
+        )
+        r, g, b, t, hit = trace(scene, settings, camera[0], camera[1], camera[2], dx, dy, dz,
+                                s, work)
+        red += _clamp01(r)
+        green += _clamp01(g)
+        blue += _clamp01(b)
+        if t < depth:
+            depth, obj = t, hit
+    scale = 1.0 / settings.samples
+    return red * scale, green * scale, blue * scale, depth, obj
+
+
+@njit
+def render_rows(rows, scene, settings, bvh_depth, x0, y0, rgb, depth, object_id, counts):
+    """Trace the listed rows of the region whose top-left pixel is (x0, y0) of the image.
+
+    Writes rgb (h, w, 3) float32, depth (h, w) float32 (inf where nothing was hit), object_id
+    (h, w) int32 (-1 there) and each row's counters into counts (h, COUNTS). Serial: the
+    caller runs disjoint lists of rows from several threads (the kernel releases the GIL).
+    """
+    width = rgb.shape[1]
+    work = new_work(scene, settings, bvh_depth, np.intp(0))  # no log (not a literal 0)
+    for k in range(rows.shape[0]):
+        row = rows[k]
+        for c in range(COUNTS):
+            work.counts[c] = 0
+        for i in range(width):
+            r, g, b, t, obj = trace_pixel(scene, settings, x0 + i, y0 + row, work)
+            rgb[row, i, 0] = r
+            rgb[row, i, 1] = g
+            rgb[row, i, 2] = b
+            depth[row, i] = t
+            object_id[row, i] = obj
+        for c in range(COUNTS):
+            counts[row, c] = work.counts[c]
+
+
+@register_warmup
+def warmup() -> None:
+    """Compile the tracer on a one-pixel scene holding a sphere, a plane and a triangle."""
+    from pixelpath.raytrace.tracer import warmup_scene
+
+    scene, settings, bvh_depth = warmup_scene()
+    rgb = np.empty((1, 1, 3), dtype=np.float32)
+    depth = np.empty((1, 1), dtype=np.float32)
+    ids = np.empty((1, 1), dtype=np.int32)
+    counts = np.empty((1, COUNTS), dtype=np.int64)
+    with slab_nan_allowed():
+        render_rows(np.zeros(1, dtype=np.intp), scene, settings, bvh_depth, 0, 0, rgb, depth,
+                    ids, counts)
+        work = new_work(scene, settings, bvh_depth, 8)
+        trace_pixel(scene, settings, 0, 0, work)

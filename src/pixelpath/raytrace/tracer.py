@@ -1,0 +1,360 @@
+"""Ray tracing as a rendering method: ``pixelpath.render(scene, method="raytrace")``.
+
+The notes' recursive ray tracer (section 8): a primary ray through each pixel centre (or
+``samples`` stratified, seeded points of the pixel), the nearest hit over the analytic spheres
+and infinite planes and the triangles of boxes and meshes (under a BVH), the Phong model with a
+shadow ray per light, reflected and refracted rays to ``max_depth``. How one pixel's tree of rays
+is followed is described in :mod:`pixelpath.raytrace._whitted_kernels`.
+
+**Same pixels as the rasterizer.** Primary rays come from the same :class:`~pixelpath.Camera`
+through the same pixel centres (``x + 0.5``, ``y + 0.5``, row 0 at the top) with a direction whose
+component along the viewing axis is 1, so a hit's t is the depth the z-buffer stores. Like the
+rasterizer, they see only what lies between the camera's near and far planes and, with
+``backface_cull`` on, only front faces: the polygons :func:`pixelpath.hsr.backface.front_facing`
+keeps (the very test the rasterizer runs), a plane only from its normal's side, a sphere only
+where the ray enters it. So ``Image.object_id`` and ``Image.depth`` agree with the z-buffer's
+except on silhouettes (the rasterizer draws a sphere as 5120 triangles, the ray tracer exactly).
+Shadow, reflected and refracted rays see both sides of everything; a face seen from behind is lit
+with its normal turned towards the ray (a two-sided surface, as the rasterizer does without
+culling).
+
+**Shading.** ``"phong"`` evaluates the model at each hit with the interpolated vertex normal of
+a mesh; ``"flat"`` with the normal of the polygon hit (spheres and planes have one exact normal
+either way). Gouraud shading interpolates vertex intensities, which a ray tracer has no use for:
+``shading="gouraud"`` is refused.
+
+**Epsilon.** Secondary rays start ``epsilon = EPSILON_SCALE × extent`` off the surface along its
+geometric normal, extent being the largest coordinate (in absolute value) of the eye, the
+target distance and the bounded objects: far above the rounding error of a hit point
+(a few units in the last place of those coordinates), far below anything visible.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from typing import Any
+
+import numpy as np
+
+from pixelpath.raster.tessellate import _IdentityCache
+from pixelpath.raytrace.bvh import BVH
+from pixelpath.renderer import Frame, RenderOptions, View
+from pixelpath.scene import Box, Camera, Mesh, Plane, Scene, Sphere
+
+__all__ = ["EPSILON_SCALE", "STEPS", "render_frame"]
+
+EPSILON_SCALE = 1e-9
+TRACE_SLICES = 16  # progress steps while tracing (each a share of the rows, run on several threads)
+STEPS = 1 + TRACE_SLICES  # packing the scene (and building the BVH), then tracing
+
+
+@dataclasses.dataclass(frozen=True)
+class SceneTriangles:
+    """The triangles of a scene's boxes and meshes under one BVH, in the tree's leaf order."""
+
+    bvh: BVH
+    normals: np.ndarray  # (T, 9) unit vertex normals at the three corners
+    flat: np.ndarray  # (T, 3) unit normal of the polygon each triangle comes from
+    objects: np.ndarray  # (T,) intp object index
+    polygon: np.ndarray  # (T,) intp polygon (over all meshes) each triangle comes from
+    polygon_normals: np.ndarray  # (P, 3)
+    polygon_points: np.ndarray  # (P, 3) first corner of each polygon
+
+
+_TRIANGLES = _IdentityCache(8)  # per tuple of scene objects (kept when only the camera changes)
+
+
+def scene_triangles(scene: Scene) -> SceneTriangles:
+    """Return the BVH and leaf-ordered triangle data of a scene's boxes and meshes (cached).
+
+    Examples
+    --------
+    >>> from pixelpath.scene import Box, Camera, Scene, Sphere
+    >>> from pixelpath.raytrace.tracer import scene_triangles
+    >>> scene = Scene(Camera(eye=(0, 0, 5), target=(0, 0, 0)),
+    ...               [Sphere((0, 0, 0), 1.0), Box((2, 0, 0), (3, 1, 1))])
+    >>> triangles = scene_triangles(scene)
+    >>> triangles.bvh.triangle_count, sorted(set(triangles.objects.tolist()))
+    (12, [1])
+    """
+    return _TRIANGLES.get(scene.objects, _build_triangles)
+
+
+def _build_triangles(objects: tuple[Any, ...]) -> SceneTriangles:
+    meshes = [(k, o if isinstance(o, Mesh) else o.to_mesh()) for k, o in enumerate(objects)
+              if isinstance(o, Mesh | Box)]
+    corners, normals, flat, owner, polygon = [], [], [], [], []
+    polygon_normals, polygon_points = [], []
+    polygons = 0
+    for k, mesh in meshes:
+        tri = mesh.triangles
+        corners.append(mesh.vertices[tri].reshape(-1, 9))
+        normals.append(mesh.vertex_normals[tri].reshape(-1, 9))
+        flat.append(mesh.face_normals[mesh.triangle_face])
+        owner.append(np.full(len(tri), k, dtype=np.intp))
+        polygon.append(mesh.triangle_face + polygons)
+        polygon_normals.append(mesh.face_normals)
+        polygon_points.append(mesh.vertices[mesh.face_indices[mesh.face_offsets[:-1]]])
+        polygons += mesh.face_count
+
+    def stacked(parts, width, dtype=np.float64):
+        shape = (0, width) if width else (0,)
+        return np.ascontiguousarray(np.concatenate(parts), dtype=dtype) if parts else np.empty(
+            shape, dtype=dtype
+        )
+
+    bvh = BVH._from_corners(stacked(corners, 9))
+    order = bvh.order
+    return SceneTriangles(
+        bvh=bvh,
+        normals=np.ascontiguousarray(stacked(normals, 9)[order]),
+        flat=np.ascontiguousarray(stacked(flat, 3)[order]),
+        objects=np.ascontiguousarray(stacked(owner, 0, np.intp)[order]),
+        polygon=np.ascontiguousarray(stacked(polygon, 0, np.intp)[order]),
+        polygon_normals=stacked(polygon_normals, 3),
+        polygon_points=stacked(polygon_points, 3),
+    )
+
+
+def scene_materials(scene: Scene) -> np.ndarray:
+    """Return (O, 11) rows: ``Material.packed()`` then reflectivity, transparency, ior.
+
+    The first 8 values are the rasterizer's layout, so the lighting kernel reads a row as it is.
+
+    Examples
+    --------
+    >>> from pixelpath.scene import Camera, Material, Scene, Sphere
+    >>> from pixelpath.raytrace.tracer import scene_materials
+    >>> glass = Material(transparency=0.9, ior=1.5)
+    >>> scene = Scene(Camera(eye=(0, 0, 5), target=(0, 0, 0)), [Sphere((0, 0, 0), 1, glass)])
+    >>> scene_materials(scene)[0, 8:].tolist()
+    [0.0, 0.9, 1.5]
+    """
+    rows = [
+        [*o.material.packed(), o.material.reflectivity, o.material.transparency, o.material.ior]
+        for o in scene.objects
+    ]
+    return np.array(rows, dtype=np.float64).reshape(len(rows), 11)
+
+
+def scene_extent(scene: Scene) -> float:
+    """Return the length ``epsilon`` is a fraction of: the scene's largest coordinate.
+
+    The largest absolute coordinate of the eye, of the bounded objects and of the planes'
+    points, and at least the eye's distance to its target.
+
+    Examples
+    --------
+    >>> from pixelpath.scene import Camera, Scene, Sphere
+    >>> from pixelpath.raytrace.tracer import scene_extent
+    >>> scene_extent(Scene(Camera(eye=(0, 0, 5), target=(0, 0, 0)), [Sphere((0, 9, 0), 1)]))
+    10.0
+    """
+    camera = scene.camera
+    values = [np.abs(camera.eye).max(), float(np.linalg.norm(camera.eye - camera.target))]
+    for obj in scene.objects:
+        box = obj.bounds() if not isinstance(obj, Plane) else obj.point[None]
+        values.append(float(np.abs(box).max()))
+    return float(max(values))
+
+
+def pack(scene: Scene, camera: Camera, options: RenderOptions):
+    """Return what the kernels read: (TraceScene, Settings, BVH depth, SceneTriangles)."""
+    from pixelpath.hsr.backface import front_facing
+    from pixelpath.lighting import pack_lights
+    from pixelpath.raster._arrays import kernel_array
+    from pixelpath.raytrace import _whitted_kernels as wk
+
+    if options.shading not in ("phong", "flat"):
+        raise ValueError(
+            "method='raytrace' evaluates the model at every hit: shading must be 'phong' "
+            f"(interpolated normals) or 'flat' (polygon normals), got {options.shading!r}"
+        )
+    triangles = scene_triangles(scene)
+    spheres = [(k, o) for k, o in enumerate(scene.objects) if isinstance(o, Sphere)]
+    planes = [(k, o) for k, o in enumerate(scene.objects) if isinstance(o, Plane)]
+    eye = kernel_array(camera.eye)
+    plane_normals = np.array([p.normal for _, p in planes]).reshape(-1, 3)
+    plane_points = np.array([p.point for _, p in planes]).reshape(-1, 3)
+    polygon_back = ~front_facing(triangles.polygon_normals, triangles.polygon_points, eye)
+    materials = scene_materials(scene)
+    u, v, w = camera.basis()
+    tan_y = np.tan(np.radians(camera.fov) / 2.0)
+    world = wk.TraceScene(
+        spheres=np.array([[*s.center, s.radius] for _, s in spheres]).reshape(-1, 4),
+        sphere_object=np.array([k for k, _ in spheres], dtype=np.intp),
+        planes=np.ascontiguousarray(np.hstack([plane_points, plane_normals])),
+        plane_object=np.array([k for k, _ in planes], dtype=np.intp),
+        plane_back=~front_facing(plane_normals, plane_points, eye),
+        bounds=triangles.bvh.bounds,
+        links=triangles.bvh.links,
+        tris=triangles.bvh.corners,
+        tri_normals=triangles.normals,
+        tri_flat=triangles.flat,
+        tri_object=triangles.objects,
+        tri_source=triangles.bvh.order,
+        tri_back=np.ascontiguousarray(polygon_back[triangles.polygon]),
+        tri_pass=np.ascontiguousarray(materials[triangles.objects, wk.TRANSPARENCY]),
+        materials=materials,
+        lights=pack_lights(scene.lights),
+        ambient=kernel_array(scene.ambient),
+        background=kernel_array(scene.background),
+        camera=np.concatenate([eye, u * tan_y * camera.aspect, v * tan_y, -w]),
+    )
+    settings = wk.Settings(
+        max_depth=options.max_depth,
+        samples=options.samples,
+        blinn=bool(options.blinn),
+        flat=options.shading == "flat",
+        fresnel=bool(options.fresnel),
+        cull=bool(options.backface_cull),
+        epsilon=EPSILON_SCALE * scene_extent(scene),
+        near=float(camera.near),
+        far=float(camera.far),
+        image_width=camera.width,
+        image_height=camera.height,
+    )
+    return world, settings, max(triangles.bvh.depth, 1), triangles
+
+
+def spread(count: int) -> np.ndarray:
+    """Return 0..count-1 in bit-reversed order: every run of it samples the whole range.
+
+    Threads take contiguous runs of the rows they are given; in this order each run holds rows
+    from all over the image, so each thread gets its share of busy and empty rows.
+
+    Examples
+    --------
+    >>> from pixelpath.raytrace.tracer import spread
+    >>> spread(8).tolist()
+    [0, 4, 2, 6, 1, 5, 3, 7]
+    """
+    bits = max(int(count - 1).bit_length(), 1)
+    keys = np.zeros(count, dtype=np.int64)
+    index = np.arange(count, dtype=np.int64)
+    for bit in range(bits):
+        keys |= ((index >> bit) & 1) << (bits - 1 - bit)
+    return np.argsort(keys, kind="stable").astype(np.intp)
+
+
+def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
+    """Ray-trace ``view`` of ``scene``.
+
+    Parameters
+    ----------
+    scene : Scene
+        What to draw.
+    view : View
+        Camera (already scaled for ssaa) and the region of its image to render.
+    options : RenderOptions
+        Shading ("phong" or "flat"), culling of back faces for primary rays, Blinn-Phong,
+        Fresnel, ``max_depth``, ``samples``, progress (``STEPS`` steps), explain.
+
+    Returns
+    -------
+    Frame
+        Colours, depth along the viewing axis, object ids, the ray counts as ``stats`` and,
+        with ``explain``, a :class:`~pixelpath.report.Report`.
+
+    Examples
+    --------
+    >>> from pixelpath.scene import Camera, Plane, PointLight, Scene, Sphere
+    >>> from pixelpath.renderer import RenderOptions, View
+    >>> from pixelpath.raytrace.tracer import render_frame
+    >>> scene = Scene(Camera(eye=(0, 1, 5), target=(0, 0, 0), width=32, height=24),
+    ...               [Sphere((0, 0, 0), 1), Plane((0, -1, 0), (0, 1, 0))],
+    ...               lights=[PointLight((0, 5, 0))])
+    >>> frame = render_frame(scene, View.whole(scene.camera), RenderOptions())
+    >>> int(frame.object_id[12, 16]), frame.stats["primary rays"], frame.stats["shadow rays"] > 0
+    (0, 768, True)
+    """
+    from pixelpath._threads import in_runs
+    from pixelpath.raster import _pool
+    from pixelpath.raytrace import _whitted_kernels as wk
+    from pixelpath.raytrace._kernels import slab_nan_allowed
+
+    world, settings, bvh_depth, triangles = pack(scene, view.camera, options)
+    options.progress(1)
+    shape = (view.height, view.width)
+    rgb = _pool.empty((*shape, 3), np.float32)
+    depth = _pool.empty(shape, np.float32)
+    object_id = _pool.empty(shape, np.int32)
+    counts = np.zeros((view.height, wk.COUNTS), dtype=np.int64)
+    rows = spread(view.height)
+    def trace(run: np.ndarray) -> None:
+        with slab_nan_allowed():
+            wk.render_rows(run, world, settings, bvh_depth, view.x0, view.y0, rgb, depth,
+                           object_id, counts)
+
+    for part in np.array_split(rows, TRACE_SLICES):
+        if len(part):
+            in_runs(trace, part)
+        options.progress(1)
+    stats = _stats(world, counts.sum(axis=0))
+    report = _report(stats, triangles, settings) if options.explain else None
+    return Frame(rgb, depth, object_id, stats, report)
+
+
+def _stats(world, totals: np.ndarray) -> dict[str, int]:
+    from pixelpath.raytrace import _whitted_kernels as wk
+
+    return {
+        "spheres": len(world.spheres),
+        "planes": len(world.planes),
+        "triangles": len(world.tris),
+        "BVH nodes": len(world.links),
+        "primary rays": int(totals[wk.COUNT_PRIMARY]),
+        "shadow rays": int(totals[wk.COUNT_SHADOW]),
+        "reflected rays": int(totals[wk.COUNT_REFLECTED]),
+        "refracted rays": int(totals[wk.COUNT_REFRACTED]),
+        "rays that hit nothing": int(totals[wk.COUNT_MISSED]),
+        "total internal reflections": int(totals[wk.COUNT_TOTAL_REFLECTION]),
+        "BVH nodes visited": int(totals[wk.COUNT_NODES]),
+        "triangle tests": int(totals[wk.COUNT_TESTS]),
+    }
+
+
+def _report(stats: dict[str, int], triangles: SceneTriangles, settings) -> Any:
+    from pixelpath.report import Report, Table
+
+    tree = triangles.bvh.statistics()
+    traced = stats["primary rays"] + stats["shadow rays"] + stats["reflected rays"]
+    traced += stats["refracted rays"]
+    summary = {
+        **stats,
+        "rays traced": traced,
+        "BVH nodes visited per ray": stats["BVH nodes visited"] / max(traced, 1),
+        "triangle tests per ray": stats["triangle tests"] / max(traced, 1),
+        "epsilon (offset of secondary rays)": settings.epsilon,
+    }
+    bvh = Table(
+        "bounding-volume hierarchy (binned SAH)",
+        ("triangles", "nodes", "leaves", "depth", "triangles per leaf", "SAH cost", "build ms"),
+        [(tree["triangles"], tree["nodes"], tree["leaves"], tree["depth"],
+          tree["triangles per leaf"], tree["SAH cost"], 1000.0 * tree["build seconds"])],
+    )
+    return Report(
+        method="raytrace",
+        summary=summary,
+        tables=(bvh,),
+        notes=(
+            "object space: each ray is tested against the spheres and planes and, through the "
+            "BVH, the triangles; the nearest hit is shaded with a shadow ray per light",
+            f"max_depth {settings.max_depth}, {settings.samples} sample(s) per pixel; rays "
+            "weighing less than 1/4096 are not traced",
+        ),
+    )
+
+
+def warmup_scene():
+    """Return a one-pixel scene with every kind of object and light, packed for the kernels."""
+    from pixelpath.scene import DirectionalLight, Material, PointLight
+
+    glass = Material(reflectivity=0.1, transparency=0.8, ior=1.5)
+    scene = Scene(
+        Camera(eye=(0, 1, 5), target=(0, 0, 0), width=1, height=1),
+        [Sphere((0, 0, 0), 1, glass), Plane((0, -1, 0), (0, 1, 0)), Box((2, 0, 0), (3, 1, 1))],
+        lights=[PointLight((0, 5, 0)), DirectionalLight((0, -1, 0))],
+    )
+    world, settings, depth, _ = pack(scene, scene.camera, RenderOptions())
+    return world, settings, depth

@@ -1,0 +1,59 @@
+"""The first-run notice: on a terminal before kernels compile, never when piped or quiet."""
+
+from __future__ import annotations
+
+import io
+
+import pytest
+
+from pixelpath import _warm
+from pixelpath.cli._common import compile_kernels
+
+
+class Terminal(io.StringIO):
+    """A text stream that says it is a terminal."""
+
+    def isatty(self) -> bool:
+        return True
+
+
+@pytest.fixture
+def compiled(monkeypatch):
+    """Stand-ins for the group compiler: every group cold, compiling records the request."""
+    for variable in ("FORCE_COLOR", "TTY_INTERACTIVE", "TTY_COMPATIBLE"):
+        monkeypatch.delenv(variable, raising=False)  # rich would take them over isatty()
+    requests = []
+    monkeypatch.setattr(_warm, "cold_groups", lambda groups: list(groups))
+    monkeypatch.setattr(_warm, "estimate_seconds", lambda groups: 12.4)
+    monkeypatch.setattr(_warm, "compile_groups", requests.append)
+    return requests
+
+
+@pytest.mark.parametrize(
+    ("stream", "quiet", "shown"),
+    [(Terminal(), False, True), (io.StringIO(), False, False), (Terminal(), True, False)],
+    ids=["terminal", "piped", "terminal-quiet"],
+)
+def test_the_notice_shows_only_on_a_terminal_and_the_kernels_compile_either_way(
+    compiled, monkeypatch, stream, quiet, shown
+):
+    monkeypatch.setattr("sys.stderr", stream)
+    compile_kernels(["warnock"], quiet=quiet)
+    expected = "compiling kernels for the first run, about 12 s; later runs are instant\n"
+    assert stream.getvalue() == (expected if shown else "")
+    assert compiled == [["front", "back", "warnock"]]
+
+
+def test_a_warm_cache_means_no_notice_and_no_compiling(compiled, monkeypatch):
+    monkeypatch.setattr(_warm, "cold_groups", lambda groups: [])
+    terminal = Terminal()
+    monkeypatch.setattr("sys.stderr", terminal)
+    compile_kernels(["zbuffer"])
+    assert terminal.getvalue() == ""
+    assert compiled == []
+
+
+def test_without_a_writable_cache_no_group_counts_as_cold(monkeypatch):
+    monkeypatch.setattr(_warm, "_marker_folder", lambda: None)
+    assert _warm.cold_groups(["front", "back"]) == []
+    assert _warm.estimate_seconds(["front"], processes=1) == _warm.GROUPS["front"][1]

@@ -1,0 +1,61 @@
+"""Small animated scenes for the frame tests, and a scene that counts how often it is unpickled.
+
+Worker processes import this module by name (they inherit the test process's ``sys.path``).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+
+import pixelpath as pp
+from pixelpath.scene import Animation, CameraKey, ObjectKey, Turntable
+
+# How many scenes this process has unpickled (a worker receiving the scattered scene).
+UNPICKLED = 0
+
+
+def animated_scene(frames: int = 6, width: int = 32, height: int = 24) -> pp.Scene:
+    """A box, an icosphere and a floor; the camera moves in, the box slides, all turning."""
+    icosphere = pp.scene.icosphere(subdivisions=1, radius=0.6, center=(1.4, 0.6, 0.5))
+    return pp.Scene(
+        camera=pp.Camera(eye=(0, 2, 6), target=(0, 0.5, 0), width=width, height=height),
+        objects=[
+            pp.Plane((0, 0, 0), (0, 1, 0)),
+            pp.Box((-1.5, 0, -0.5), (-0.5, 1, 0.5), pp.Material(color=(0.9, 0.2, 0.1))),
+            icosphere,
+        ],
+        lights=[pp.PointLight((3, 5, 4))],
+        animation=Animation(
+            frames,
+            camera=[CameraKey(frames - 1, eye=(0, 2.5, 4.5), fov=50)],
+            objects=[ObjectKey(1, frames - 1, translate=(0.5, 0, 0), rotate=(0, 90, 0))],
+            turntable=Turntable(turns=0.5),
+            interpolation="smooth",
+        ),
+    )
+
+
+def unpickled_count() -> int:
+    """Return how many scenes this process has unpickled (run on workers by client.run)."""
+    return UNPICKLED
+
+
+def _rebuild(fields: dict) -> CountingScene:
+    global UNPICKLED
+    UNPICKLED += 1
+    return CountingScene(**fields)
+
+
+@dataclasses.dataclass(frozen=True, eq=False)
+class CountingScene(pp.Scene):
+    """A Scene that counts, in the receiving process, each time it is unpickled."""
+
+    def __reduce__(self):
+        fields = {field.name: getattr(self, field.name) for field in dataclasses.fields(self)}
+        return _rebuild, (fields,)
+
+
+def counting(scene: pp.Scene) -> CountingScene:
+    """Return ``scene`` as a CountingScene."""
+    fields = {field.name: getattr(scene, field.name) for field in dataclasses.fields(scene)}
+    return CountingScene(**fields)

@@ -1,0 +1,109 @@
+"""render_frames on a real Dask LocalCluster of two worker processes.
+
+Frames must be byte-identical to the serial render, tiles must stitch exactly, the scene must
+reach each worker once, and a worker killed in the middle of a run must cost no frame.
+"""
+
+from __future__ import annotations
+
+import os
+import signal
+
+import numpy as np
+import pytest
+from frame_scenes import animated_scene, counting, unpickled_count
+
+import pixelpath as pp
+from pixelpath.frames.cluster import connect, local_client
+
+
+@pytest.fixture(scope="module")
+def client():
+    client = local_client(2)
+    yield client
+    client.close()
+
+
+def _serial_files(scene, frames, folder, **options):
+    paths = pp.render_frames(scene, frames, out=folder / "f_{frame:03d}.png", **options)
+    return {path.name: path.read_bytes() for path in paths}
+
+
+def test_cluster_frames_are_byte_identical_to_serial(client, tmp_path):
+    scene = animated_scene(frames=8)
+    serial = _serial_files(scene, range(8), tmp_path / "serial", shading="gouraud")
+    paths = pp.render_frames(
+        scene, range(8), client, out=tmp_path / "dask" / "f_{frame:03d}.png", shading="gouraud"
+    )
+    assert {path.name: path.read_bytes() for path in paths} == serial
+
+
+def test_cluster_returns_images_in_frame_order(client):
+    scene = animated_scene()
+    images = pp.render_frames(scene, [5, 0, 3], client)
+    for frame, image in zip([5, 0, 3], images, strict=True):
+        assert np.array_equal(np.asarray(image), np.asarray(pp.render(scene.at_frame(frame))))
+
+
+def test_tiles_rendered_by_workers_stitch_exactly(client, tmp_path):
+    scene = animated_scene(width=41, height=29)
+    serial = _serial_files(scene, [2, 5], tmp_path / "serial", ssaa=2)
+    paths = pp.render_frames(
+        scene, [2, 5], client, out=tmp_path / "tiles" / "f_{frame:03d}.png", ssaa=2, tiles=(3, 2)
+    )
+    assert {path.name: path.read_bytes() for path in paths} == serial
+
+
+def test_the_scene_reaches_each_worker_once(client):
+    scene = counting(animated_scene(frames=12))
+    before = client.run(unpickled_count)
+    images = pp.render_frames(scene, range(12), client, tiles=(2, 1))
+    after = client.run(unpickled_count)
+    assert len(images) == 12  # 24 tasks, each naming the scene
+    assert sorted(after) == sorted(before) and len(after) == 2
+    assert all(after[worker] - before[worker] == 1 for worker in after)
+
+
+def test_resume_on_the_cluster_renders_only_missing_frames(client, tmp_path):
+    scene = animated_scene()
+    pattern = tmp_path / "f_{frame}.png"
+    pp.render_frames(scene, [0, 2, 4], client, out=pattern)
+    (tmp_path / "f_2.png").write_bytes(b"\x89PNG\r\n\x1a\n")  # a frame cut short
+    done = []
+    pp.render_frames(scene, range(6), client, out=pattern, resume=True, progress=done.append)
+    assert len(done) == 4  # frames 1, 2, 3 and 5
+    assert _serial_files(scene, range(6), tmp_path / "serial") == {
+        f"f_{frame:03d}.png": (tmp_path / f"f_{frame}.png").read_bytes() for frame in range(6)
+    }
+
+
+def test_an_unreachable_scheduler_is_a_quick_clear_error():
+    with pytest.raises(ConnectionError, match=r"could not reach the Dask scheduler at tcp://"):
+        connect("tcp://127.0.0.1:9", timeout=1)
+
+
+@pytest.mark.slow
+def test_a_worker_killed_mid_run_costs_no_frame(tmp_path):
+    scene = animated_scene(frames=16, width=240, height=160)
+    serial = _serial_files(scene, range(16), tmp_path / "serial", ssaa=2)
+    killed = []
+    with local_client(2) as client:
+        pids = client.run(os.getpid)
+
+        def kill_a_busy_worker(steps):
+            if killed:
+                return
+            busy = [worker for worker, keys in client.processing().items() if keys]
+            killed.append(pids[busy[0]])
+            os.kill(pids[busy[0]], signal.SIGKILL)
+
+        paths = pp.render_frames(
+            scene,
+            range(16),
+            client,
+            out=tmp_path / "dask" / "f_{frame:03d}.png",
+            ssaa=2,
+            progress=kill_a_busy_worker,
+        )
+        assert killed and killed[0] not in client.run(os.getpid).values()  # it did die
+    assert {path.name: path.read_bytes() for path in paths} == serial

@@ -1,0 +1,169 @@
+"""render_frames in this process: same bytes as render(), tiles, resume, and errors up front."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+from frame_scenes import animated_scene
+
+import pixelpath as pp
+from pixelpath.frames import frame_is_complete, plan_frames, render_frame
+
+# Every method the renderer implements today; each one that lands joins this list (a method
+# that is not implemented must fail here, not be skipped).
+METHODS = ["zbuffer", "raytrace"]
+
+
+def test_frames_equal_render_of_each_frame():
+    scene = animated_scene()
+    images = pp.render_frames(scene, range(6), shading="gouraud")
+    for frame, image in enumerate(images):
+        expected = pp.render(scene.at_frame(frame), shading="gouraud")
+        assert np.array_equal(np.asarray(image), np.asarray(expected))
+        assert np.array_equal(image.object_id, expected.object_id)
+    assert not np.array_equal(np.asarray(images[0]), np.asarray(images[5]))  # it moves
+
+
+def test_files_are_the_bytes_image_save_writes(tmp_path):
+    scene = animated_scene()
+    paths = pp.render_frames(scene, [0, 3], out=tmp_path / "out" / "f_{frame:02d}.png")
+    assert [path.name for path in paths] == ["f_00.png", "f_03.png"]
+    for frame, path in zip([0, 3], paths, strict=True):
+        pp.render(scene.at_frame(frame)).save(tmp_path / "expected.png")
+        assert path.read_bytes() == (tmp_path / "expected.png").read_bytes()
+    assert not list((tmp_path / "out").glob("*.tmp"))  # atomic writes leave no temporaries
+
+
+@pytest.mark.parametrize("method", METHODS)
+def test_tiles_stitch_to_the_untiled_frame(method, tmp_path):
+    scene = animated_scene(width=37, height=23)
+    whole = pp.render(scene.at_frame(4), method, ssaa=2)
+    tiled = pp.render_frames(scene, [4], method=method, ssaa=2, tiles=(3, 4))[0]
+    assert np.array_equal(np.asarray(tiled), np.asarray(whole))
+    assert np.array_equal(tiled.depth, whole.depth)
+    assert np.array_equal(tiled.object_id, whole.object_id)
+    path = pp.render_frames(
+        scene, [4], out=tmp_path / "t.png", method=method, ssaa=2, tiles=(3, 4)
+    )[0]
+    whole.save(tmp_path / "w.png")
+    assert path.read_bytes() == (tmp_path / "w.png").read_bytes()
+
+
+def test_interrupted_run_resumes_with_the_missing_frames_only(tmp_path):
+    scene = animated_scene()
+    pattern = str(tmp_path / "f_{frame}.png")
+    done = []
+
+    def interrupt(steps):
+        done.append(steps)
+        if len(done) == 2:
+            raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        pp.render_frames(scene, range(6), out=pattern, progress=interrupt)
+    first = {path.name: path.stat().st_ino for path in tmp_path.glob("f_*.png")}
+    assert sorted(first) == ["f_0.png", "f_1.png"]
+    rendered = []
+    pp.render_frames(scene, range(6), out=pattern, resume=True, progress=rendered.append)
+    assert len(rendered) == 4
+    for name, inode in first.items():  # the complete frames were not written again
+        assert (tmp_path / name).stat().st_ino == inode
+    reference = pp.render_frames(scene, range(6))
+    for frame in range(6):
+        assert np.array_equal(
+            pp.io.read_image(tmp_path / f"f_{frame}.png"), _as_file(reference[frame], tmp_path)
+        )
+
+
+def test_a_truncated_frame_is_rendered_again(tmp_path):
+    scene = animated_scene()
+    pattern = str(tmp_path / "f_{frame}.png")
+    paths = pp.render_frames(scene, range(3), out=pattern)
+    good = paths[1].read_bytes()
+    paths[1].write_bytes(good[: len(good) // 2])
+    assert not frame_is_complete(paths[1], 32, 24)
+    assert frame_is_complete(paths[0], 32, 24)
+    assert not frame_is_complete(paths[0], 33, 24)  # a frame of another size is not complete
+    rendered = []
+    pp.render_frames(scene, range(3), out=pattern, resume=True, progress=rendered.append)
+    assert len(rendered) == 1 and paths[1].read_bytes() == good
+
+
+def test_render_frame_is_a_pure_picklable_function():
+    import pickle
+
+    scene = animated_scene()
+    function, copy = pickle.loads(pickle.dumps((render_frame, scene)))
+    again = function(copy, 2, {"shading": "flat"})
+    expected = render_frame(scene, 2, {"shading": "flat"})
+    assert np.array_equal(np.asarray(again), np.asarray(expected))
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "error", "match"),
+    [
+        ({"frames": range(5, 7)}, ValueError, r"frame 6 is outside the animation \(frames 0..5\)"),
+        ({"frames": [1, 1]}, ValueError, "frame 1 is listed twice"),
+        ({"frames": 3}, TypeError, r"range\(120\)"),
+        ({"frames": []}, ValueError, "empty"),
+        ({"out": "f.png"}, ValueError, r"put \{frame\} in it"),
+        ({"out": "f_{n}.png"}, ValueError, r"only \{frame\} may be used"),
+        ({"out": "f_{frame}.xyz"}, ValueError, "unknown image extension"),
+        ({"tiles": (33, 1)}, ValueError, "at least one pixel wide"),
+        ({"tiles": (1, 0)}, ValueError, "at least one pixel high"),
+        ({"resume": True}, ValueError, "needs out="),
+        ({"method": "zbufer"}, ValueError, "method must be one of"),
+        ({"explain": True}, TypeError, "unknown render option"),
+        ({"gamma": -1}, ValueError, "gamma"),
+    ],
+)
+def test_bad_requests_fail_before_any_work(kwargs, error, match, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    options = {"frames": range(3), **kwargs}
+    with pytest.raises(error, match=match):
+        pp.render_frames(animated_scene(), **options)
+    assert not list(tmp_path.iterdir())
+
+
+def test_a_frame_too_large_for_one_render_asks_for_tiles():
+    scene = animated_scene(frames=2, width=16384, height=8192)
+    with pytest.raises(ValueError, match="split the frame into more tiles"):
+        plan_frames(scene, [0])  # 16384 x 8192 = 2^27 samples, twice the limit
+    plan = plan_frames(scene, [0], tiles=(2, 1))
+    assert plan.regions == ((0, 0, 8192, 8192), (8192, 0, 16384, 8192))
+
+
+def test_a_camera_the_animation_breaks_between_keys_is_found_before_work():
+    from pixelpath.scene import Animation, CameraKey
+
+    scene = animated_scene()  # the camera looks at (0, 0.5, 0)
+    through_target = Animation(
+        9, camera=[CameraKey(4, eye=(0, 0.5, 2)), CameraKey(8, eye=(0, 0.5, -2))]
+    )
+    moving = pp.Scene(scene.camera, scene.objects, animation=through_target)  # keys are valid
+    assert plan_frames(moving, range(6)).todo == tuple(range(6))
+    with pytest.raises(ValueError, match=r"frames: .*must differ|frames: .*eye"):
+        plan_frames(moving, range(9))  # at frame 6 the eye reaches the target
+
+
+def test_rendering_one_image_does_not_import_dask():
+    code = (
+        "import sys, pixelpath as pp\n"
+        "s = pp.Scene(pp.Camera(eye=(0, 0, 5), target=(0, 0, 0), width=8, height=6),"
+        " [pp.Sphere((0, 0, 0), 1.0)])\n"
+        "pp.render(s)\n"
+        "pp.render_frames(s, [0, 1])\n"
+        "print(sorted(m for m in sys.modules if m.split('.')[0] in ('dask', 'distributed')))\n"
+    )
+    result = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, check=True
+    )
+    assert result.stdout.strip() == "[]"
+
+
+def _as_file(image, folder):
+    image.save(folder / "reference.png")
+    return pp.io.read_image(folder / "reference.png")

@@ -1,0 +1,248 @@
+"""pixelpath in the environments users run it in: cache settings, one thread, no JIT, a read-only
+home. Each variation runs in a fresh interpreter, since Numba reads its environment variables
+when it is first imported; nothing pixelpath does may leak into the user's own Numba code."""
+
+from __future__ import annotations
+
+import json
+import os
+import stat
+import subprocess
+import sys
+import textwrap
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+CACHE_VARIABLES = {"PIXELPATH_CACHE_DIR": None, "NUMBA_CACHE_DIR": None}
+JIT_ON = {"NUMBA_DISABLE_JIT": None}  # the disk cache only exists for compiled kernels
+
+
+def run_python(code: str, cwd: Path | None = None, **changes: str | None) -> dict:
+    """Run ``code`` in a fresh interpreter with this environment changed (None unsets).
+
+    ``code`` prints one JSON object as its last line, which is returned with the child's stderr
+    under ``"stderr"``. A crash fails the test with the child's traceback.
+    """
+    env = dict(os.environ)
+    for name, value in changes.items():
+        if value is None:
+            env.pop(name, None)
+        else:
+            env[name] = value
+    result = subprocess.run(
+        [sys.executable, "-c", textwrap.dedent(code)],
+        capture_output=True,
+        text=True,
+        env=env,
+        cwd=cwd,
+        timeout=300,
+    )
+    assert result.returncode == 0, result.stderr
+    return {**json.loads(result.stdout.splitlines()[-1]), "stderr": result.stderr}
+
+
+def one_kernel(before: str = "") -> str:
+    """A script that runs ``before``, then the smallest kernel, and reports on its disk cache.
+
+    The kernel compiles in about half a second when its cache is cold.
+    """
+    return f"""
+import json
+from pathlib import Path
+import numpy as np
+import platformdirs
+{before}
+from pixelpath.clip import _kernels
+status = _kernels.check_subject(np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]))
+stats = _kernels.check_subject.stats
+folder = Path(stats.cache_path or "")  # None when there is no disk cache
+print(json.dumps({{
+    "status": int(status),
+    "cache_path": stats.cache_path,
+    "hits": sum(stats.cache_hits.values()),
+    "index_files": sorted(p.name for p in folder.glob("*.nbi")) if stats.cache_path else [],
+    "platform_cache": platformdirs.user_cache_dir("pixelpath"),
+}}))
+"""
+
+
+@pytest.mark.parametrize(
+    ("settings", "expected"),
+    [
+        ({"PIXELPATH_CACHE_DIR": "pp"}, "pp/numba"),
+        ({"NUMBA_CACHE_DIR": "nb"}, "nb/pixelpath"),
+        ({"PIXELPATH_CACHE_DIR": "pp", "NUMBA_CACHE_DIR": "nb"}, "pp/numba"),
+    ],
+)
+def test_kernels_cache_in_the_folder_the_variables_choose(tmp_path, settings, expected):
+    env = CACHE_VARIABLES | JIT_ON | {name: str(tmp_path / f) for name, f in settings.items()}
+    result = run_python(one_kernel(), **env)
+    assert result["status"] == 0
+    assert Path(result["cache_path"]).parent == tmp_path / expected
+    assert any(name.startswith("_kernels.check_subject-") for name in result["index_files"])
+    assert "Warning" not in result["stderr"]
+
+
+def test_a_second_process_loads_the_kernels_from_the_cache(tmp_path):
+    env = CACHE_VARIABLES | JIT_ON | {"PIXELPATH_CACHE_DIR": str(tmp_path)}
+    first = run_python(one_kernel(), **env)
+    again = run_python(one_kernel(), **env)
+    assert (first["hits"], again["hits"]) == (0, 1)
+    assert first["cache_path"] == again["cache_path"]
+
+
+def test_by_default_kernels_cache_in_the_platforms_user_cache_folder(tmp_path):
+    env = CACHE_VARIABLES | JIT_ON | {"HOME": str(tmp_path), "XDG_CACHE_HOME": None}
+    result = run_python(one_kernel(), **env)
+    assert Path(result["cache_path"]).parent == Path(result["platform_cache"]) / "numba"
+    assert Path(result["platform_cache"]).is_relative_to(tmp_path)
+    assert result["index_files"] and "Warning" not in result["stderr"]
+
+
+def unwritable_home(tmp_path: Path, how: str) -> Path:
+    """Return a home directory in which nothing can be created, made one of two ways."""
+    if how == "read-only":
+        home = tmp_path / "home"
+        home.mkdir()
+        home.chmod(stat.S_IRUSR | stat.S_IXUSR)
+        try:
+            (home / "probe").mkdir()
+        except OSError:
+            return home
+        pytest.skip("this user (root?) writes through read-only permissions")
+    blocker = tmp_path / "not-a-folder"
+    blocker.write_text("a file where the home directory's parent should be")
+    return blocker / "home"
+
+
+@pytest.mark.parametrize("how", ["read-only", "under a file"])
+def test_unwritable_home_falls_back_to_a_private_temporary_folder_with_one_warning(tmp_path, how):
+    temporary = tmp_path / "tmp"
+    temporary.mkdir()
+    home = unwritable_home(tmp_path, how)
+    env = CACHE_VARIABLES | JIT_ON
+    env |= {"HOME": str(home), "XDG_CACHE_HOME": None, "TMPDIR": str(temporary)}
+    # Kernels of two modules load: the folder is chosen, and the warning given, once.
+    result = run_python(one_kernel(before="import pixelpath.color._kernels"), **env)
+    folder = Path(result["cache_path"]).parent
+    assert folder.name == "numba" and folder.parent.parent == temporary
+    if hasattr(os, "getuid"):
+        assert folder.parent.name == f"pixelpath-{os.getuid()}"
+        assert stat.S_IMODE(folder.parent.stat().st_mode) == 0o700
+    assert result["index_files"], "the fallback folder holds the compiled kernel"
+    assert result["stderr"].count("CacheWarning") == 1, result["stderr"]
+    assert str(folder) in result["stderr"] and "Traceback" not in result["stderr"]
+
+
+def test_without_any_writable_folder_kernels_compile_without_a_disk_cache(tmp_path):
+    blocker = tmp_path / "not-a-folder"
+    blocker.write_text("nothing can be created under a file")
+    env = CACHE_VARIABLES | JIT_ON | {"PIXELPATH_CACHE_DIR": str(blocker / "cache")}
+    # tempfile.tempdir is how a program picks its temporary folder; this one cannot be made.
+    no_temporary = f"import tempfile; tempfile.tempdir = {str(blocker / 'tmp')!r}"
+    result = run_python(one_kernel(before=no_temporary), **env)
+    assert result["status"] == 0
+    assert result["cache_path"] is None and result["hits"] == 0
+    assert result["stderr"].count("CacheWarning") == 1, result["stderr"]
+    assert "compile again in every new process" in result["stderr"]
+    assert "Traceback" not in result["stderr"]
+
+
+USER_MODULE = """
+import numba
+
+
+@numba.njit(cache=True)
+def add(a, b):
+    return a + b
+"""
+
+
+def user_script(with_pixelpath: bool) -> str:
+    """A user's script: maybe pixelpath runs a kernel, then the user's cached function runs."""
+    pixelpath_part = "import pixelpath\n" + one_kernel() if with_pixelpath else ""
+    return f"""
+import json, os
+before = dict(os.environ)
+{pixelpath_part}
+import numba
+import user_kernels
+user_kernels.add(1, 2)
+print(json.dumps({{
+    "environ_unchanged": dict(os.environ) == before,
+    "numba_cache_dir": numba.config.CACHE_DIR,
+    "user_cache": user_kernels.add.stats.cache_path,
+    "kernel_cache": stats.cache_path if {with_pixelpath} else None,
+}}))
+"""
+
+
+@pytest.mark.parametrize("numba_cache_dir", [None, "numba-cache"])
+def test_pixelpath_changes_nothing_for_the_users_own_numba_code(tmp_path, numba_cache_dir):
+    (tmp_path / "user_kernels.py").write_text(USER_MODULE)
+    env = CACHE_VARIABLES | JIT_ON
+    if numba_cache_dir:
+        env["NUMBA_CACHE_DIR"] = str(tmp_path / numba_cache_dir)
+    alone = run_python(user_script(with_pixelpath=False), cwd=tmp_path, **env)
+    together = run_python(user_script(with_pixelpath=True), cwd=tmp_path, **env)
+    assert together["environ_unchanged"]
+    assert together["numba_cache_dir"] == alone["numba_cache_dir"]
+    assert together["user_cache"] == alone["user_cache"] != together["kernel_cache"]
+    assert list(Path(together["user_cache"]).glob("user_kernels.add-*.nbi"))
+    if numba_cache_dir:
+        assert Path(together["kernel_cache"]).parent == tmp_path / numba_cache_dir / "pixelpath"
+
+
+def test_cache_doctests_pass_whatever_cache_variables_are_set(tmp_path):
+    code = """
+        import doctest, json
+        import pixelpath._cache, pixelpath._jit
+        results = [doctest.testmod(m) for m in (pixelpath._cache, pixelpath._jit)]
+        print(json.dumps({"failed": sum(r.failed for r in results),
+                          "attempted": sum(r.attempted for r in results)}))
+    """
+    for variable in ("NUMBA_CACHE_DIR", "PIXELPATH_CACHE_DIR"):
+        result = run_python(code, **{variable: str(tmp_path / variable)})
+        assert result["failed"] == 0 and result["attempted"] > 0, result["stderr"]
+
+
+# The parallel kernels (more than one chunk of work each) write their results to OUT.
+KERNEL_RESULTS = """
+    import json
+    import numpy as np
+    import numba
+    from pixelpath import clip, color
+    image = np.random.default_rng(7).random((100, 120, 3))
+    hsv = color.rgb_to_hsv(image)
+    back = color.hsl_to_rgb(color.rgb_to_hsl(image.astype(np.float32)))
+    rings = [np.array([[0.0, 0.0], [9.0, 1.0], [4.0, 8.0]]) + k for k in range(200)]
+    clipped = clip.clip_polygons(rings, clip.Rect(2, 2, 60, 60))
+    np.savez(OUT, hsv=hsv, back=back, clipped=np.concatenate(clipped))
+    print(json.dumps({"threads": numba.config.NUMBA_NUM_THREADS,
+                      "jit": not numba.config.DISABLE_JIT}))
+"""
+
+
+@pytest.fixture(scope="module")
+def baseline_results(tmp_path_factory) -> Path:
+    """The kernels' results computed in this test run's own environment."""
+    out = tmp_path_factory.mktemp("baseline") / "results.npz"
+    run_python(KERNEL_RESULTS.replace("OUT", repr(str(out))))
+    return out
+
+
+@pytest.mark.parametrize("variable", ["NUMBA_NUM_THREADS", "NUMBA_DISABLE_JIT"])
+def test_kernels_give_identical_results_with_one_thread_or_without_jit(
+    tmp_path, variable, baseline_results
+):
+    out = tmp_path / "results.npz"
+    varied = run_python(KERNEL_RESULTS.replace("OUT", repr(str(out))), **{variable: "1"})
+    if variable == "NUMBA_NUM_THREADS":
+        assert varied["threads"] == 1
+    else:
+        assert not varied["jit"]
+    with np.load(baseline_results) as expected, np.load(out) as got:
+        for name in expected.files:
+            np.testing.assert_array_equal(got[name], expected[name], err_msg=name)

@@ -1,0 +1,122 @@
+"""Compiling kernel groups ahead of a first run, in parallel processes."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+import textwrap
+
+import numba
+import pytest
+
+from pixelpath import _warm
+from pixelpath.renderer import METHOD_NAMES
+
+needs_jit = pytest.mark.skipif(numba.config.DISABLE_JIT, reason="needs Numba's JIT")
+
+
+def test_every_method_groups_name_known_groups():
+    for method, groups in _warm.METHOD_GROUPS.items():
+        assert method in METHOD_NAMES
+        assert set(groups) <= set(_warm.GROUPS)
+
+
+def test_groups_for_lists_each_group_once_in_table_order():
+    assert _warm.groups_for(["warnock", "zbuffer", "warnock"]) == ("front", "back", "warnock")
+    assert _warm.groups_for([]) == ()
+
+
+def test_shares_balance_the_estimated_seconds(tmp_path):
+    groups = ["front", "back", "scan", "clip", "color"]  # 5.0, 6.5, 1.5, 4.0, 4.0
+    shares = _warm._share_out(groups, 2, tmp_path)
+    assert sorted(g for share in shares for g in share) == sorted(groups)
+    loads = [sum(_warm.GROUPS[g][1] for g in share) for share in shares]
+    assert loads == [10.5, 10.5]  # back+clip, front+color+scan: the greedy split is even here
+    assert _warm._share_out(groups, 8, tmp_path) == [[g] for g in sorted(
+        groups, key=lambda g: -_warm.GROUPS[g][1])]
+    assert _warm._share_out([], 4, tmp_path) == []
+
+
+def test_recorded_seconds_replace_the_estimate(tmp_path):
+    (tmp_path / "front").write_text("0.250\n")
+    (tmp_path / "back").write_text("not a number\n")
+    assert _warm._recorded_seconds("front", tmp_path) == 0.25
+    assert _warm._recorded_seconds("back", tmp_path) == _warm.GROUPS["back"][1]
+
+
+def test_unknown_groups_are_refused():
+    with pytest.raises(ValueError, match="unknown kernel groups"):
+        _warm.compile_groups(["front", "nonsense"])
+
+
+def test_a_failed_worker_leaves_its_share_to_this_process(monkeypatch):
+    ran = []
+    monkeypatch.setattr(_warm, "_compile_here", lambda share: ran.extend(share) or {
+        g: 0.0 for g in share})
+    failing = subprocess.Popen([sys.executable, "-c", "import sys; sys.exit(3)"],
+                               stdout=subprocess.PIPE, text=True)
+    assert _warm._finish_worker(["scan"], failing) == {"scan": 0.0}
+    garbled = subprocess.Popen([sys.executable, "-c", "print('[1, 2]')"],
+                               stdout=subprocess.PIPE, text=True)
+    assert _warm._finish_worker(["clip"], garbled) == {"clip": 0.0}
+    assert ran == ["scan", "clip"]
+
+
+def test_the_stamp_changes_with_the_sources(monkeypatch, tmp_path):
+    first = _warm._stamp()
+    assert first == _warm._stamp() and len(first) == 16
+    assert first in str(_warm._marker_folder())
+
+
+# Compile every method's groups into an empty cache in worker processes, then render each
+# method and shading in a fresh process: nothing may compile there. This proves that the
+# groups' hand-made warm-up inputs have the very types the render path passes.
+_RENDER_EVERY_METHOD = textwrap.dedent(
+    """
+    import dataclasses, json, sys
+    from numba.core import event
+    compiled = []
+
+    class Count(event.Listener):
+        def on_start(self, e):
+            compiled.append(e.data["dispatcher"].py_func.__qualname__)
+
+        def on_end(self, e):
+            pass
+
+    event.register("numba:compile", Count())
+    import pixelpath as pp
+    from pixelpath.scene import bundled_scenes, load_scene
+    scene = load_scene(bundled_scenes()["showcase"])
+    scene = dataclasses.replace(scene, camera=scene.camera.with_size(64, 40))
+    for method in sys.argv[1:]:
+        for shading in ("flat", "gouraud", "phong"):
+            if (method, shading) != ("raytrace", "gouraud"):  # a ray tracer has no Gouraud
+                pp.render(scene, method=method, shading=shading)
+    print(json.dumps(compiled))
+    """
+)
+
+
+@needs_jit
+@pytest.mark.slow
+def test_after_compiling_the_groups_a_render_compiles_nothing(tmp_path):
+    env = {**os.environ, "PIXELPATH_CACHE_DIR": str(tmp_path)}
+    env.pop("NUMBA_CACHE_DIR", None)
+    methods = sorted(_warm.METHOD_GROUPS)
+    warm = (
+        "from pixelpath import _warm; import json, sys; "
+        "groups = _warm.groups_for(sys.argv[1:]); "
+        "print(json.dumps([_warm.cold_groups(groups), sorted(_warm.compile_groups(groups, 2)), "
+        "_warm.cold_groups(groups)]))"
+    )
+    result = subprocess.run([sys.executable, "-c", warm, *methods], env=env, check=True,
+                            capture_output=True, text=True)
+    cold_before, compiled, cold_after = json.loads(result.stdout)
+    groups = list(_warm.groups_for(methods))
+    assert cold_before == groups and compiled == sorted(groups) and cold_after == []
+    result = subprocess.run([sys.executable, "-c", _RENDER_EVERY_METHOD, *methods], env=env,
+                            check=True, capture_output=True, text=True)
+    assert json.loads(result.stdout) == []
