@@ -217,7 +217,7 @@ def gif_bytes(frames: Iterable[Image.Image], durations: Sequence[int]) -> bytes:
         duration=list(durations),
         loop=0,
         disposal=1,
-        optimize=False,
+        optimize=True,
     )
     return buffer.getvalue()
 
