@@ -70,7 +70,7 @@ def test_blinn_changes_only_highlights():
     assert np.allclose(phong[0, 0], blinn[0, 0])
 
 
-@pytest.mark.parametrize("method", ["painter", "bsp", "octree"])
+@pytest.mark.parametrize("method", ["painter", "bsp"])
 def test_methods_of_later_versions_say_so(method):
     with pytest.raises(NotImplementedError, match=method):
         pp.render(small_scene(), method=method)

@@ -42,6 +42,8 @@ _KERNEL_MODULES = (
     "pixelpath.clip._kernels",
     "pixelpath.lighting._kernels",
     "pixelpath.raster._kernels",
+    "pixelpath.raster._line_kernels",
+    "pixelpath.hsr._kernels.octree",
     "pixelpath.hsr._kernels.scanline",
     "pixelpath.hsr._kernels.warnock",
     "pixelpath.raytrace._kernels",

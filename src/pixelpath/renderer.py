@@ -226,8 +226,14 @@ def _draw(module, scene: Scene, view: View, style: str, options: RenderOptions) 
     from pixelpath.hsr import hidden_line
 
     if style == "wireframe":
-        return hidden_line.wireframe(scene, view, options)
-    return hidden_line.hidden_lines(scene, view, options, module.render_frame(scene, view, options))
+        frame = hidden_line.wireframe(scene, view, options)
+        options.progress(module.STEPS)  # the method's steps, none of which was needed
+        return frame
+    # The surface is rendered a pixel beyond the region, so that its depth slopes there (which
+    # decide the lines' visibility) are the whole image's: tiles stitch without seams.
+    surface = hidden_line.surface_view(view)
+    frame = module.render_frame(scene, surface, options)
+    return hidden_line.hidden_lines(scene, view, options, frame, surface)
 
 
 def render_steps(method: str = "zbuffer") -> int:

@@ -16,7 +16,7 @@ from agreement import KINDS, check_agreement, scene_of
 import pixelpath as pp
 
 # The methods that decide visibility their own way (the z-buffer is the reference).
-METHODS: list[str] = ["scanline", "warnock"]
+METHODS: list[str] = ["scanline", "warnock", "octree"]
 ALL_METHODS = ["zbuffer", *METHODS]
 
 
