@@ -15,6 +15,8 @@ demo
 steps
   step  count
   a     1
+>>> "<td>triangles</td><td>2</td>" in report._repr_html_()
+True
 """
 
 from __future__ import annotations
@@ -75,6 +77,20 @@ class Report:
         for table in self.tables:
             lines += ["", str(table)]
         return "\n".join(lines)
+
+    def _repr_html_(self) -> str:
+        """Return the report as HTML tables, for Jupyter's rich display."""
+        from html import escape
+
+        from pixelpath.figures.html import table
+
+        parts = [table(self.method, ("", ""), [(k, _text(v)) for k, v in self.summary.items()])]
+        parts += [f"<p>{escape(note)}</p>" for note in self.notes]
+        parts += [
+            table(t.title, t.columns, [[_text(value) for value in row] for row in t.rows])
+            for t in self.tables
+        ]
+        return "".join(parts)
 
 
 def _text(value: Any) -> str:

@@ -27,6 +27,7 @@ def register(subparsers) -> None:
             'pixelpath clip "1,1 9,1 9,7 1,7" --window 2,2,8,6 --plot stages.png',
             'pixelpath clip "0,0 6,0 6,6 0,6 0,4 4,4 4,2 0,2" --window=-1,-1,3,7 '
             "--method weiler-atherton",
+            'pixelpath clip "1,1 9,1 9,7 1,7" --window 2,2,8,6 --animate steps.gif',
         ],
         run=run,
     )
@@ -45,6 +46,12 @@ def register(subparsers) -> None:
         metavar="PNG",
         help="draw each stage (Sutherland-Hodgman) or both methods' results (Weiler-Atherton)",
     )
+    parser.add_argument(
+        "--animate",
+        metavar="GIF",
+        help="write an animated GIF: one frame per (S, E) step (Sutherland-Hodgman) or per "
+        "piece of boundary walked (Weiler-Atherton)",
+    )
 
 
 def run(args: argparse.Namespace) -> int:
@@ -57,12 +64,13 @@ def run(args: argparse.Namespace) -> int:
     if args.method == "weiler-atherton":
         if args.trace:
             raise CommandError("--trace shows Sutherland-Hodgman's stages; drop --method")
-        pieces = weiler_atherton(subject, window)
+        pieces, walk = weiler_atherton(subject, window, trace=True)
         for k, piece in enumerate(pieces, start=1):
             out.print(f"piece {k}: {_format(piece)}")
         if not pieces:
             out.print("nothing is left: the polygons do not overlap")
         _plot(args.plot, "plot_bridges", subject, window)
+        _animate(args.animate, walk)
         return 0
     result, trace = sutherland_hodgman(subject, window, trace=True)
     if args.trace:
@@ -75,6 +83,7 @@ def run(args: argparse.Namespace) -> int:
             "joining pieces of a concave subject); --method weiler-atherton gives the pieces"
         )
     _plot(args.plot, "plot_trace", trace)
+    _animate(args.animate, trace)
     return 0
 
 
@@ -114,6 +123,16 @@ def _plot(path: str | None, function: str, *args) -> None:
     try:
         written = getattr(plot, function)(*args, path)
     except ImportError as exc:  # matplotlib missing
+        raise CommandError(str(exc)) from None
+    error_console().print(f"wrote {written}")
+
+
+def _animate(path: str | None, trace) -> None:
+    if not path:
+        return
+    try:
+        written = trace.animate(path)
+    except (ValueError, FileNotFoundError) as exc:  # not a .gif, or no such folder
         raise CommandError(str(exc)) from None
     error_console().print(f"wrote {written}")
 

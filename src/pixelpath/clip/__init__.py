@@ -19,6 +19,7 @@ from pixelpath.clip.sutherland_hodgman import (
     zero_width_bridges,
 )
 from pixelpath.clip.weiler_atherton import weiler_atherton
+from pixelpath.clip.weiler_atherton_trace import WalkStep, WeilerAthertonTrace
 from pixelpath.clip.window import Rect
 
 __all__ = [
@@ -26,6 +27,8 @@ __all__ = [
     "ClipStep",
     "ClipTrace",
     "Rect",
+    "WalkStep",
+    "WeilerAthertonTrace",
     "ZeroWidthBridgeWarning",
     "clip_flat",
     "clip_polygons",

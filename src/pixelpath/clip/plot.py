@@ -21,6 +21,7 @@ from pixelpath.clip.sutherland_hodgman import (
 )
 from pixelpath.clip.weiler_atherton import weiler_atherton
 from pixelpath.clip.window import Rect, as_window
+from pixelpath.io.images import write_bytes
 
 __all__ = ["plot_bridges", "plot_trace"]
 
@@ -181,12 +182,5 @@ def _save(fig, axes, path: str | os.PathLike) -> Path:
         fig.savefig(png, format="png", dpi=100)
     finally:
         plt.close(fig)
-    path = Path(path)
-    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
-    try:
-        tmp.write_bytes(png.getvalue())
-        os.replace(tmp, path)
-    except BaseException:
-        tmp.unlink(missing_ok=True)
-        raise
-    return path
+    write_bytes(path, png.getvalue())
+    return Path(path)

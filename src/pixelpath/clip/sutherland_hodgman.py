@@ -25,8 +25,10 @@ warns with :class:`ZeroWidthBridgeWarning`, :func:`zero_width_bridges` lists the
 
 from __future__ import annotations
 
+import os
 import warnings
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Literal, overload
 
 import numpy as np
@@ -143,6 +145,82 @@ class ClipTrace:
         else:
             lines.append("Clipped polygon: nothing is left (fewer than 3 vertices)")
         return "\n".join(lines)
+
+    def frames(self) -> list:
+        """One picture per (S, E) step, then the result (see :mod:`pixelpath.figures`).
+
+        Each step's frame shows the current boundary with its inside shaded, the stage's
+        input, the S -> E edge, what earlier steps emitted and, highlighted in red, what this
+        step emits, beside the stage's table up to this row.
+
+        Returns
+        -------
+        list of PIL.Image.Image
+
+        Examples
+        --------
+        >>> from pixelpath.clip import Rect, sutherland_hodgman
+        >>> _, trace = sutherland_hodgman([(1, 1), (9, 1), (9, 7), (1, 7)], Rect(2, 2, 8, 6),
+        ...                               trace=True)
+        >>> len(trace.frames())  # 4 stages of 4 steps each, then the clipped polygon
+        17
+        """
+        from pixelpath.figures.clipping import clip_frames
+
+        return clip_frames(self)
+
+    def animate(self, path: str | os.PathLike) -> Path:
+        """Write :meth:`frames` as an animated GIF (atomically); return the path.
+
+        Examples
+        --------
+        >>> from pixelpath.clip import Rect, sutherland_hodgman
+        >>> _, trace = sutherland_hodgman([(1, 1), (9, 1), (9, 7), (1, 7)], Rect(2, 2, 8, 6),
+        ...                               trace=True)
+        >>> trace.animate("steps.gif").name
+        'steps.gif'
+        """
+        from pixelpath.figures.clipping import animate_clip
+
+        return animate_clip(self, path)
+
+    def figure(self):
+        """Return the subject and window, then each stage's output, side by side (a PIL image).
+
+        Examples
+        --------
+        >>> from pixelpath.clip import Rect, sutherland_hodgman
+        >>> _, trace = sutherland_hodgman([(1, 1), (9, 1), (9, 7), (1, 7)], Rect(2, 2, 8, 6),
+        ...                               trace=True)
+        >>> trace.figure().height  # 200-pixel panels under their captions
+        238
+        """
+        from pixelpath.figures.clipping import clip_figure
+
+        return clip_figure(self)
+
+    def _repr_png_(self) -> bytes:
+        from pixelpath.figures._canvas import png_bytes
+
+        return png_bytes(self.figure())
+
+    def _repr_html_(self) -> str:
+        from pixelpath.figures.html import table
+
+        parts = []
+        for stage, row in zip(self.stages, self.window.table, strict=True):
+            rows = [
+                (_point(step.s), _point(step.e), step.case,
+                 _points(step.emitted) if len(step.emitted) else "nothing")
+                for step in stage.steps
+            ]
+            caption = (
+                f"Clip against the {stage.boundary} boundary ({_describe(row)}); "
+                f"input {_points(stage.input)}; output {_points(stage.output)}"
+            )
+            parts.append(table(caption, ("S", "E", "case", "output"), rows))
+        result = " → ".join(_point(p) for p in self.result) or "nothing is left"
+        return "".join(parts) + f"<p>Clipped polygon: {result}</p>"
 
 
 @overload

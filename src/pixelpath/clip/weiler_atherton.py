@@ -37,10 +37,12 @@ from __future__ import annotations
 
 import itertools
 from fractions import Fraction
+from typing import Literal, overload
 
 import numpy as np
 
 from pixelpath.clip import _validate
+from pixelpath.clip.weiler_atherton_trace import WeilerAthertonTrace
 from pixelpath.clip.window import ConvexWindow, Rect
 
 __all__ = ["weiler_atherton"]
@@ -51,7 +53,17 @@ Segment = tuple[Point, Point]
 VERTEX, EDGE_INTERIOR = 0, 1  # where a contact point lies on a polygon
 
 
-def weiler_atherton(subject: np.ndarray, window: object) -> list[np.ndarray]:
+@overload
+def weiler_atherton(
+    subject: np.ndarray, window: object, trace: Literal[False] = False
+) -> list[np.ndarray]: ...
+@overload
+def weiler_atherton(
+    subject: np.ndarray, window: object, trace: Literal[True]
+) -> tuple[list[np.ndarray], WeilerAthertonTrace]: ...
+def weiler_atherton(
+    subject: np.ndarray, window: object, trace: bool = False
+) -> list[np.ndarray] | tuple[list[np.ndarray], WeilerAthertonTrace]:
     """Clip a polygon against a window, either of them concave, into separate pieces.
 
     Parameters
@@ -60,12 +72,16 @@ def weiler_atherton(subject: np.ndarray, window: object) -> list[np.ndarray]:
         A simple polygon (no self-intersection), either orientation.
     window : Rect or (K, 2) array_like
         A :class:`~pixelpath.clip.Rect` or a simple polygon, either orientation.
+    trace : bool, optional
+        Also return a :class:`~pixelpath.clip.WeilerAthertonTrace` of the walk.
 
     Returns
     -------
     list of (Mi, 2) ndarray
         The pieces of the intersection, each counter-clockwise; an empty list when the
         polygons do not overlap. Pieces that touch only at a vertex are separate.
+    WeilerAthertonTrace
+        Only with ``trace=True``.
 
     Raises
     ------
@@ -96,11 +112,22 @@ def weiler_atherton(subject: np.ndarray, window: object) -> list[np.ndarray]:
     shared = [p for p in subject_pieces if p in window_set]
     opposed = [p for p in subject_pieces if (p[1], p[0]) in window_set]
     on_both = {*shared, *opposed, *((b, a) for a, b in opposed)}
-    kept = shared  # both interiors on the same side: kept once
-    kept += _inside_pieces(subject_pieces, window_ring, on_window, on_both)
-    kept += _inside_pieces(window_pieces, subject_ring, on_subject, on_both)
-    loops = [_drop_straight_vertices(loop) for loop in _link(kept)]
-    return sorted((_float_ring(loop) for loop in loops), key=lambda a: (a[0, 0], a[0, 1]))
+    # Shared pieces (both interiors on the same side) are kept once.
+    subject_kept = _inside_pieces(subject_pieces, window_ring, on_window, on_both)
+    window_kept = _inside_pieces(window_pieces, subject_ring, on_subject, on_both)
+    walked = _link(shared + subject_kept + window_kept)
+    loops = [_drop_straight_vertices(loop) for loop in walked]
+    pieces = sorted((_float_ring(loop) for loop in loops), key=lambda a: (a[0, 0], a[0, 1]))
+    if not trace:
+        return pieces
+    along = {
+        **dict.fromkeys(window_kept, "window"),
+        **dict.fromkeys(subject_kept, "subject"),
+        **dict.fromkeys(shared, "both"),
+    }
+    contacts = on_window.keys() | on_subject.keys()
+    walk = WeilerAthertonTrace.from_walk(subject_ring, window_ring, contacts, walked, along, pieces)
+    return pieces, walk
 
 
 def _exact_ring(polygon: object, name: str) -> list[Point]:
