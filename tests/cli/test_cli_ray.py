@@ -10,6 +10,7 @@ import pytest
 import pixelpath as pp
 from pixelpath.cli import main
 from pixelpath.io import read_image
+from pixelpath.renderer import METHOD_NAMES
 
 SCENE = textwrap.dedent(
     """\
@@ -98,9 +99,12 @@ def test_render_refuses_samples_for_a_raster_method(scene_file, tmp_path, capsys
     assert "raytrace" in capsys.readouterr().err
 
 
-def test_demo_raytrace_writes_a_traced_picture_of_each_scene(tmp_path):
-    assert main(["demo", "-o", str(tmp_path), "--raytrace", "--size", "32x20", "-q"]) == 0
+def test_demo_ray_traces_the_showcase_and_draws_every_method(tmp_path):
+    assert main(["demo", "-o", str(tmp_path), "--size", "32x20", "--ssaa", "1", "-q"]) == 0
     traced = read_image(tmp_path / "showcase-raytrace.png")
     plain = read_image(tmp_path / "showcase.png")
     assert traced.shape == plain.shape == (20, 32, 3)
     assert not np.array_equal(traced, plain)  # shadows, mirror and glass
+    # Seven methods in rows of four, each row: gap 8, caption 22, a 150-pixel picture, gap 8.
+    assert len(METHOD_NAMES) == 7
+    assert read_image(tmp_path / "methods.png").shape[0] == 2 * (8 + 22 + 150 + 8)

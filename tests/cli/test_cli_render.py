@@ -100,7 +100,8 @@ def test_render_into_a_missing_folder_fails_cleanly(scene_file, tmp_path, capsys
 
 def test_demo_renders_every_bundled_scene(tmp_path, capsys):
     folder = tmp_path / "demo"
-    assert main(["demo", "-o", str(folder), "--size", "32x20", "--ssaa", "1", "-q"]) == 0
+    assert main(["demo", "-o", str(folder), "--size", "32x20", "--ssaa", "1", "--quick",
+                 "-q"]) == 0
     written = sorted(p.name for p in folder.iterdir())
     assert written == sorted(f"{name}.png" for name in bundled_scenes())
     assert len(written) >= 2
@@ -113,7 +114,7 @@ def test_demo_renders_every_bundled_scene(tmp_path, capsys):
 def test_demo_all_shadings(tmp_path):
     folder = tmp_path / "all"
     assert main(["demo", "-o", str(folder), "--shading", "all", "--size", "16x12",
-                 "--ssaa", "1", "-q"]) == 0
+                 "--ssaa", "1", "--quick", "-q"]) == 0
     names = {p.name for p in folder.iterdir()}
     for scene in bundled_scenes():
         assert {f"{scene}-{s}.png" for s in ("flat", "gouraud", "phong")} <= names

@@ -3,12 +3,15 @@
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import time
 from pathlib import Path
 from typing import Any
 
 from pixelpath.cli._common import CommandError, add_command, compile_kernels, console
 from pixelpath.raster.shading import SHADINGS
+
+METHODS_PICTURE_SIZE = (240, 150)  # each method's picture in methods.png
 
 
 def register(subparsers: Any) -> None:
@@ -22,13 +25,14 @@ def register(subparsers: Any) -> None:
             "icospheres on a floor; see 'pixelpath info showcase') with the z-buffer and write "
             "one PNG per scene into DIR (created if needed). '--shading all' writes one image "
             "per shading mode, named SCENE-flat.png, SCENE-gouraud.png, SCENE-phong.png. "
-            "--raytrace also ray-traces each scene (SCENE-raytrace.png: shadows, mirror, glass); "
-            "its first run compiles the ray tracer, which takes a while once."
+            "Then the showcase ray-traced (showcase-raytrace.png: shadows, a mirror, glass) "
+            "and drawn by every hidden-surface method side by side (methods.png); --quick "
+            "leaves these two out (their first run compiles every method's kernels once)."
         ),
         examples=[
             "pixelpath demo -o demo",
+            "pixelpath demo -o demo --quick",
             "pixelpath demo -o demo --shading all --ssaa 2",
-            "pixelpath demo -o demo --raytrace",
         ],
         run=run,
     )
@@ -39,13 +43,14 @@ def register(subparsers: Any) -> None:
     parser.add_argument("--size", help="image size WIDTHxHEIGHT (default: each scene's own)")
     parser.add_argument("--ssaa", type=int, default=2, help="supersampling per side (default 2)")
     parser.add_argument(
-        "--raytrace", action="store_true", help="also ray-trace each scene (4 samples, depth 5)"
+        "--quick", action="store_true",
+        help="only the bundled scenes with the z-buffer (no ray tracing, no methods figure)",
     )
     parser.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
 
 
 def run(args: argparse.Namespace) -> int:
-    """Render each bundled scene in the chosen shading mode(s); list the files written."""
+    """Render each bundled scene, then the ray-traced and the methods pictures; list the files."""
     from pixelpath.cli.render import load_scene_sized, render_to_file
     from pixelpath.scene import bundled_scenes
 
@@ -62,6 +67,7 @@ def run(args: argparse.Namespace) -> int:
     )
     start = time.perf_counter()
     compile_kernels([options.method], quiet=args.quiet)
+    count = 0
     for name, path in scenes.items():
         scene = load_scene_sized(str(path), args.size)
         for shading in shadings:
@@ -72,14 +78,34 @@ def run(args: argparse.Namespace) -> int:
             console().print(
                 f"wrote {output} ({camera.width}x{camera.height}, {shading}) in {seconds:.2f} s"
             )
-        if args.raytrace:
-            traced = argparse.Namespace(
-                **{**vars(options), "method": "raytrace", "shading": "phong", "ssaa": 1},
-                samples=4, max_depth=5,
-            )
-            output = folder / f"{name}-raytrace.png"
-            _, _, seconds = render_to_file(scene, output, traced, f"{name} (ray traced)")
-            console().print(f"wrote {output} (ray traced, 4 samples) in {seconds:.2f} s")
-    count = len(scenes) * (len(shadings) + bool(args.raytrace))
+            count += 1
+    if not args.quick:
+        showcase = load_scene_sized(str(scenes["showcase"]), args.size)
+        count += _showcase_extras(showcase, folder, options)
     console().print(f"{count} images in {time.perf_counter() - start:.1f} s")
     return 0
+
+
+def _showcase_extras(scene: Any, folder: Path, options: argparse.Namespace) -> int:
+    """Ray-trace the showcase and draw it with every method side by side; return 2."""
+    from pixelpath.cli.render import render_to_file
+    from pixelpath.figures._canvas import save
+    from pixelpath.figures.methods import methods_side_by_side
+    from pixelpath.renderer import METHOD_NAMES
+
+    compile_kernels(METHOD_NAMES, quiet=options.quiet)
+    traced = argparse.Namespace(
+        **{**vars(options), "method": "raytrace", "shading": "phong", "ssaa": 1},
+        samples=4, max_depth=5,
+    )
+    output = folder / "showcase-raytrace.png"
+    _, _, seconds = render_to_file(scene, output, traced, "showcase (ray traced)")
+    console().print(f"wrote {output} (ray traced, 4 samples, depth 5) in {seconds:.2f} s")
+    began = time.perf_counter()
+    small = dataclasses.replace(scene, camera=scene.camera.with_size(*METHODS_PICTURE_SIZE))
+    output = save(methods_side_by_side(small, METHOD_NAMES), folder / "methods.png")
+    console().print(
+        f"wrote {output} (the showcase by each of {len(METHOD_NAMES)} methods) in "
+        f"{time.perf_counter() - began:.2f} s"
+    )
+    return 2

@@ -192,6 +192,22 @@ def paste_row(images: Sequence[Image.Image], captions: Sequence[str], gap: int =
     return sketch.image
 
 
+def paste_grid(images: Sequence[Image.Image], captions: Sequence[str],
+               columns: int) -> Image.Image:
+    """Place captioned pictures in rows of ``columns`` (:func:`paste_row`), row under row."""
+    rows = [
+        paste_row(images[start : start + columns], captions[start : start + columns])
+        for start in range(0, len(images), columns)
+    ]
+    grid = Image.new("RGB", (max(row.width for row in rows), sum(row.height for row in rows)),
+                     "white")
+    top = 0
+    for row in rows:
+        grid.paste(row, (0, top))
+        top += row.height
+    return grid
+
+
 def _palette_image() -> Image.Image:
     """Return a 'P' image whose palette is the figure colours, their half-tones and greys."""
     entries = list(COLOURS.values())
