@@ -4,9 +4,10 @@
 
 Each cold run gets a new, empty compile cache (``PIXELPATH_CACHE_DIR`` set to a fresh temporary
 folder), so it compiles every kernel the command needs, as on a fresh installation; the warm
-runs that follow reuse that cache. Two commands are timed, wall clock, process start to exit:
+runs that follow reuse that cache. Three commands are timed, wall clock, process start to exit:
 
-* ``pixelpath demo -o DIR`` (the three bundled scenes);
+* ``pixelpath demo -o DIR --quick`` (the three bundled scenes, z-buffer);
+* ``pixelpath demo -o DIR`` (those, then the showcase ray-traced and by every method);
 * ``pixelpath render facets --size 160x120 -o out.png`` (a small bundled scene).
 
 Beside them, from the same run, the floor every Python CLI pays: ``python -c pass`` (the
@@ -26,6 +27,7 @@ import tempfile
 import time
 
 COMMANDS = {
+    "pixelpath demo --quick": ["demo", "-o", "{out}/quick", "--quick"],
     "pixelpath demo": ["demo", "-o", "{out}/demo"],
     "pixelpath render (160x120)": ["render", "facets", "--size", "160x120", "-o", "{out}/r.png"],
 }
