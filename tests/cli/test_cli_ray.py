@@ -99,6 +99,7 @@ def test_render_refuses_samples_for_a_raster_method(scene_file, tmp_path, capsys
     assert "raytrace" in capsys.readouterr().err
 
 
+@pytest.mark.slow  # every method on the showcase, the BSP build included: minutes without JIT
 def test_demo_ray_traces_the_showcase_and_draws_every_method(tmp_path):
     assert main(["demo", "-o", str(tmp_path), "--size", "32x20", "--ssaa", "1", "-q"]) == 0
     traced = read_image(tmp_path / "showcase-raytrace.png")
