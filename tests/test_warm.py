@@ -64,10 +64,29 @@ def test_a_failed_worker_leaves_its_share_to_this_process(monkeypatch):
     assert ran == ["scan", "clip"]
 
 
-def test_the_stamp_changes_with_the_sources(monkeypatch, tmp_path):
-    first = _warm._stamp()
-    assert first == _warm._stamp() and len(first) == 16
-    assert first in str(_warm._marker_folder())
+def _stamp_of_copy(root) -> str:
+    """The stamp seen by a pixelpath imported from the copy of the package under ``root``."""
+    code = "from pixelpath import _warm; print(_warm._stamp())"
+    env = {**os.environ, "PYTHONPATH": str(root)}
+    return subprocess.run([sys.executable, "-c", code], env=env, check=True,
+                          capture_output=True, text=True).stdout.strip()
+
+
+def test_the_stamp_follows_the_install_location_and_the_sources(tmp_path):
+    import shutil
+
+    import pixelpath
+
+    here = _warm._stamp()
+    assert here == _warm._stamp() and len(here) == 16
+    assert here in str(_warm._marker_folder())
+    copy = tmp_path / "pixelpath"
+    shutil.copytree(os.path.dirname(pixelpath.__file__), copy,
+                    ignore=shutil.ignore_patterns("__pycache__"))
+    elsewhere = _stamp_of_copy(tmp_path)
+    assert elsewhere != here  # same code, another place: its kernels are cached apart
+    (copy / "_threads.py").write_text((copy / "_threads.py").read_text() + "\n# edited\n")
+    assert _stamp_of_copy(tmp_path) not in (here, elsewhere)
 
 
 # Compile every method's groups into an empty cache in worker processes, then render each

@@ -88,11 +88,15 @@ def groups_for(methods: Iterable[str]) -> tuple[str, ...]:
 
 @functools.cache
 def _stamp() -> str:
-    """Hash of every source file of pixelpath and of the Python and Numba versions."""
+    """Hash of where pixelpath is installed, its source files and the Python and Numba versions.
+
+    The kernels' cache is kept per source path, so a second installation of the same code
+    (another virtual environment, a fresh clone) has its own markers.
+    """
     import numba
 
-    digest = hashlib.sha256(f"{sys.version}|{numba.__version__}".encode())
     package = Path(__file__).resolve().parent
+    digest = hashlib.sha256(f"{sys.version}|{numba.__version__}|{package}".encode())
     for path in sorted(package.rglob("*.py")):
         digest.update(path.relative_to(package).as_posix().encode())
         digest.update(path.read_bytes())
