@@ -389,7 +389,13 @@ def _above(xa, ya, xb, yb):
     return ya < yb or (ya == yb and xa < xb)
 
 
-MIN_AREA2 = float(np.finfo(np.float64).tiny)  # smallest normal: its inverse (4.5e307) is finite
+# A triangle thinner than this (twice its area, in square pixels) draws nothing, and an edge
+# rising less than MIN_EDGE_RISE pixels counts as horizontal: their plane coefficients and
+# slopes would overflow (a warning without the JIT, inf and NaN spans with it), for shapes that
+# could hold a pixel centre only by exact coincidence. Every method shares this set-up, so they
+# all agree on such triangles.
+MIN_AREA2 = 1e-200
+MIN_EDGE_RISE = 1e-200
 
 
 @njit
@@ -409,8 +415,7 @@ def setup_triangles(screen, triangles, row_first, row_stop, setup, rows):
         area2 = (xb - xa) * (yc - ya) - (xc - xa) * (yb - ya)
         rows[t, 0] = 0
         rows[t, 1] = 0
-        # Degenerate, non-finite, or so thin that 1/area overflows (a subnormal area): no
-        # pixel. Tested on |area| rather than on 1/area, which would warn without the JIT.
+        # Degenerate, non-finite, or too thin for its planes (MIN_AREA2): no pixel.
         if not (math.isfinite(area2) and abs(area2) >= MIN_AREA2):
             continue
         inv = 1.0 / area2
@@ -441,7 +446,7 @@ def setup_triangles(screen, triangles, row_first, row_stop, setup, rows):
 @njit(inline="always")
 def _slope(x_top, y_top, x_bottom, y_bottom):
     """Return dx/dy of an edge from its upper end to its lower end (0 when horizontal)."""
-    if y_bottom == y_top:
+    if y_bottom - y_top < MIN_EDGE_RISE:
         return 0.0
     return (x_bottom - x_top) / (y_bottom - y_top)
 
