@@ -36,22 +36,6 @@ _LAZY_NAMES = {
     "render_frames": "pixelpath.frames",
 }
 
-# Modules whose import registers their kernels' warm-up functions.
-_KERNEL_MODULES = (
-    "pixelpath.color._kernels",
-    "pixelpath.clip._kernels",
-    "pixelpath.lighting._kernels",
-    "pixelpath.raster._kernels",
-    "pixelpath.raster._line_kernels",
-    "pixelpath.hsr._kernels.octree",
-    "pixelpath.hsr._kernels.scanline",
-    "pixelpath.hsr._kernels.painter",
-    "pixelpath.hsr._kernels.bsp",
-    "pixelpath.hsr._kernels.warnock",
-    "pixelpath.raytrace._kernels",
-    "pixelpath.raytrace._whitted_kernels",
-)
-
 __all__ = [
     "Box",
     "Camera",
@@ -118,7 +102,7 @@ def warmup() -> int:
     Returns
     -------
     int
-        The number of warm-up routines that ran.
+        The number of kernel modules warmed up.
 
     Examples
     --------
@@ -126,8 +110,6 @@ def warmup() -> int:
     >>> pp.warmup() > 0
     True
     """
-    from pixelpath._jit import run_warmups
+    from pixelpath._warm import run_warmups
 
-    for module in _KERNEL_MODULES:
-        importlib.import_module(module)
     return len(run_warmups())

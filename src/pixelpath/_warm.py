@@ -27,19 +27,24 @@ import subprocess
 import sys
 import time
 from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
 from pathlib import Path
 
 __all__ = [
     "GROUPS",
+    "WarmupReport",
     "cold_groups",
     "compile_groups",
     "estimate_seconds",
     "groups_for",
+    "kernel_modules",
+    "run_warmups",
 ]
 
-# Group name -> (warm-up function as "module:function", seconds it took to compile on the
-# 2-core machine pixelpath is developed on; only used to share out work and to say how long a
-# first run will take, before anything was measured here).
+# Every kernel module's warm-up, the one registry of them. Group name -> (warm-up function as
+# "module:function", seconds it took to compile on the 2-core machine pixelpath is developed
+# on; only used to share out work and to say how long a first run will take, before anything
+# was measured here).
 GROUPS: dict[str, tuple[str, float]] = {
     "front": ("pixelpath.raster._kernels:warm_front", 5.0),
     "back": ("pixelpath.raster._kernels:warm_back", 6.5),
@@ -71,6 +76,79 @@ METHOD_GROUPS: dict[str, tuple[str, ...]] = {
     "wireframe": ("lines",),
     "hidden-line": ("lines",),
 }
+
+
+@dataclass(frozen=True)
+class WarmupReport:
+    """What one kernel module's warm-up did: its module, seconds taken, specializations.
+
+    ``compiled`` counts the specializations Numba compiled, ``loaded`` those it loaded from the
+    disk cache (both 0 with ``NUMBA_DISABLE_JIT=1``, where nothing compiles).
+
+    Examples
+    --------
+    >>> from pixelpath._warm import WarmupReport
+    >>> WarmupReport("pixelpath.color._kernels", seconds=4.2, compiled=12, loaded=0).compiled
+    12
+    """
+
+    module: str
+    seconds: float
+    compiled: int
+    loaded: int
+
+
+def _module_of(group: str) -> str:
+    return GROUPS[group][0].split(":")[0]
+
+
+def kernel_modules() -> tuple[str, ...]:
+    """Return every module that holds compiled kernels, each once, in :data:`GROUPS` order.
+
+    Examples
+    --------
+    >>> from pixelpath._warm import kernel_modules
+    >>> kernel_modules()[:2]
+    ('pixelpath.raster._kernels', 'pixelpath.hsr._kernels.scanline')
+    """
+    return tuple(dict.fromkeys(_module_of(group) for group in GROUPS))
+
+
+def _specializations(module_name: str) -> tuple[int, int]:
+    """Return (compiled, loaded from cache) over the kernels defined in module ``module_name``."""
+    from numba.core.dispatcher import Dispatcher
+
+    compiled = loaded = 0
+    for value in vars(sys.modules[module_name]).values():
+        if isinstance(value, Dispatcher) and value.py_func.__module__ == module_name:
+            compiled += sum(value.stats.cache_misses.values())
+            loaded += sum(value.stats.cache_hits.values())
+    return compiled, loaded
+
+
+def run_warmups() -> list[WarmupReport]:
+    """Run every group's warm-up in this process, module by module; report each module.
+
+    Afterwards every group is in the disk cache, so its marker is written too: a first render
+    then starts no worker processes. ``pixelpath warmup`` prints these reports (its test
+    checks that a second run compiles nothing); compiling everything takes minutes, so the
+    example of :class:`WarmupReport` only shows their shape.
+    """
+    reports = []
+    seconds: dict[str, float] = {}
+    for module in kernel_modules():
+        importlib.import_module(module)
+        before = _specializations(module)
+        start = time.perf_counter()
+        seconds.update(_compile_here(g for g in GROUPS if _module_of(g) == module))
+        elapsed = time.perf_counter() - start
+        compiled, loaded = (now - then for now, then in zip(_specializations(module), before,
+                                                            strict=True))
+        reports.append(WarmupReport(module, elapsed, compiled, loaded))
+    folder = _marker_folder() if _jit_enabled() else None
+    if folder is not None:
+        _write_markers(folder, seconds)
+    return reports
 
 
 def groups_for(methods: Iterable[str]) -> tuple[str, ...]:

@@ -27,21 +27,12 @@ def register(subparsers) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Compile every kernel; print per kernel module the time and what compiled, and the cache."""
-    import importlib
-
-    import pixelpath
     from pixelpath._cache import writable_cache_dir
-    from pixelpath._jit import run_warmups
-    from pixelpath._warm import GROUPS, cold_groups, compile_groups
+    from pixelpath._warm import run_warmups
 
     start = time.perf_counter()
-    for module in pixelpath._KERNEL_MODULES:
-        importlib.import_module(module)
     reports = run_warmups()
     total = time.perf_counter() - start
-    # Every group is compiled now: record them, so a first render does not start workers (its
-    # warm-ups load from the cache in this process, in about a second).
-    compile_groups(cold_groups(GROUPS), processes=1)
     out = console()
     out.print(f"{'kernel module':34s} {'seconds':>8s} {'compiled':>9s} {'from cache':>11s}")
     for report in reports:

@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from pixelpath._jit import njit, prange, register_warmup
+from pixelpath._jit import njit, prange
 
 LEFT, RIGHT, BOTTOM, TOP, EDGE, PLANE = 0, 1, 2, 3, 4, 5
 
@@ -420,7 +420,6 @@ def clip_many(coords, offsets, table, chunks, slot_scale=1):
     return out, out_offsets, status
 
 
-@register_warmup
 def warmup() -> None:
     """Compile every clipping kernel on a tiny input."""
     square = np.array([[1.0, 1.0], [9.0, 1.0], [9.0, 7.0], [1.0, 7.0]])

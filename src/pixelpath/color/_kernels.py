@@ -32,7 +32,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from pixelpath._jit import njit, prange, register_warmup
+from pixelpath._jit import njit, prange
 
 AFFINE = 0
 RGB_TO_HSV = 1
@@ -242,7 +242,6 @@ def convert_pixels(src, dst, src_channels, dst_channels, scale, op, matrix, offs
     return bad.any()
 
 
-@register_warmup
 def warmup() -> None:
     """Compile the kernel for every pair of input and result dtypes the public API passes it."""
     matrix = np.eye(3)

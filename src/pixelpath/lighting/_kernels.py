@@ -20,7 +20,7 @@ import math
 
 import numpy as np
 
-from pixelpath._jit import njit, prange, register_warmup
+from pixelpath._jit import njit, prange
 
 POINT_LIGHT = 0.0
 DIRECTIONAL_LIGHT = 1.0
@@ -217,7 +217,6 @@ def shade_many(points, normals, eye, material, lights, ambient, blinn, out):
         )
 
 
-@register_warmup
 def warmup() -> None:
     """Compile ``shade_many`` (and with it ``shade_point``) for both models."""
     points = np.zeros((1, 3))

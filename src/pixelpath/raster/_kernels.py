@@ -33,7 +33,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from pixelpath._jit import njit, register_warmup
+from pixelpath._jit import njit
 from pixelpath.clip._kernels import PLANE, clip_stage
 from pixelpath.lighting._kernels import shade_planar, shade_point
 
@@ -968,11 +968,3 @@ def warm_scan() -> None:
                 inv_depth, triangle_id)
     count_coverage(setup, rows, 0, 0, np.zeros((8, 8), dtype=np.int32))
     interpolate_values(0, 8, setup, triangles, np.ones((3, 1)), triangle_id, np.zeros((8, 8, 1)))
-
-
-@register_warmup
-def warmup() -> None:
-    """Compile every raster kernel."""
-    warm_front()
-    warm_back()
-    warm_scan()

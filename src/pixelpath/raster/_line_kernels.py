@@ -17,7 +17,7 @@ import math
 
 import numpy as np
 
-from pixelpath._jit import njit, register_warmup
+from pixelpath._jit import njit
 from pixelpath.raster._kernels import FRUSTUM_PLANES
 
 # Columns of a screen segment: both ends' (x, y, 1/w) in pixels.
@@ -189,7 +189,6 @@ def _along(coordinate, start, stop):
     return min(max((coordinate - start) / (stop - start), 0.0), 1.0)
 
 
-@register_warmup
 def warmup() -> None:
     """Compile the line kernels on one segment crossing the near plane."""
     matrix = np.eye(4)

@@ -35,7 +35,7 @@ import math
 
 import numpy as np
 
-from pixelpath._jit import njit, register_warmup
+from pixelpath._jit import njit
 
 EPS = float(np.finfo(np.float64).eps)
 # An origin whose |o − C|² − r² is within this fraction of |o − C|² + r² lies on the sphere.
@@ -572,7 +572,6 @@ def refract_many(directions, normals, eta, out):
         out[r, 2] = tz if ok else math.nan
 
 
-@register_warmup
 def warmup() -> None:
     """Compile the BVH build, both traversals and the public batch kernels on one triangle."""
     tris = np.array([[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0]])

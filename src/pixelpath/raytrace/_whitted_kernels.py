@@ -35,7 +35,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from pixelpath._jit import njit, register_warmup
+from pixelpath._jit import njit
 from pixelpath.lighting._kernels import light_direction, shade_point
 from pixelpath.raytrace._kernels import (
     MISS,
@@ -577,7 +577,6 @@ def render_rows(rows, scene, settings, bvh_depth, x0, y0, rgb, depth, object_id,
             counts[row, c] = work.counts[c]
 
 
-@register_warmup
 def warmup() -> None:
     """Compile the tracer on a one-pixel scene holding a sphere, a plane and a triangle."""
     from pixelpath.raytrace.tracer import warmup_scene

@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from pixelpath._jit import njit, register_warmup
+from pixelpath._jit import njit
 from pixelpath.raster._kernels import _grown, _grown_rows, cut_triangle
 
 CANDIDATES = 8  # polygon planes scored per node
@@ -565,7 +565,6 @@ def draw_order(sequence, source, n_polygons, order):
     return placed
 
 
-@register_warmup
 def warmup() -> None:
     """Build, route and traverse a tiny tree: two crossing triangles under one plane."""
     vertices = np.array(

@@ -19,7 +19,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from pixelpath._jit import njit, register_warmup
+from pixelpath._jit import njit
 from pixelpath.raster._kernels import (
     BAND_ROWS,
     INVW_PLANE,
@@ -515,7 +515,6 @@ def _decide(tree, node, scan, touched, n_touched, x0, y0, band_first, triangle_i
     return count
 
 
-@register_warmup
 def warmup() -> None:
     """Compile the octree kernels on two triangles in a tiny tree."""
     positions = np.array([[-1.0, -1.0, 0.0], [1.0, -1.0, 0.0], [0.0, 1.0, 0.0], [0.5, 0.5, 0.5]])

@@ -32,7 +32,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from pixelpath._jit import njit, register_warmup
+from pixelpath._jit import njit
 from pixelpath.raster._kernels import _grown, _grown_rows, cut_triangle, screen_point
 
 # Columns of a polygon record.
@@ -452,7 +452,6 @@ def _remove(stack, top, polygon):
     return top - 1
 
 
-@register_warmup
 def warmup() -> None:
     """Compile the depth sort on two interpenetrating triangles (one split)."""
     attrs = np.zeros((8, 10))

@@ -33,7 +33,7 @@ import math
 
 import numpy as np
 
-from pixelpath._jit import njit, register_warmup
+from pixelpath._jit import njit
 from pixelpath.hsr.scanline import LINE_COUNTS
 from pixelpath.raster._kernels import (
     INVW_PLANE,
@@ -396,7 +396,6 @@ def _fill(first, stop, slope, offset, t, col_first, depth_row, id_row):
             id_row[i - col_first] = -1
 
 
-@register_warmup
 def warmup() -> None:
     """Compile the scan-line kernel on two overlapping triangles."""
     from pixelpath.raster._kernels import SETUP_FIELDS, setup_triangles

@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from pixelpath._jit import njit, register_warmup
+from pixelpath._jit import njit
 from pixelpath.raster._kernels import INVW_PLANE, clearly_nearer, scanline_span, wins_depth_test
 
 # Classes of a triangle against an area.
@@ -279,7 +279,6 @@ def mark_areas(areas, decisions, level, x0, y0, level_map, decision_map):
                 decision_map[j - y0, i - x0] = decisions[a]
 
 
-@register_warmup
 def warmup() -> None:
     """Compile the subdivision kernels on two overlapping triangles."""
     from pixelpath.raster._kernels import SETUP_FIELDS, setup_triangles
