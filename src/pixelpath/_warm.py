@@ -234,7 +234,7 @@ def estimate_seconds(groups: Sequence[str], processes: int | None = None) -> flo
     >>> estimate_seconds([]) == 0
     True
     """
-    folder = _marker_folder() if groups else Path()
+    folder = _marker_folder()
     shares = _share_out(groups, processes or _cores(), folder)
     return max((sum(_recorded_seconds(g, folder) for g in share) for share in shares), default=0)
 
@@ -248,12 +248,13 @@ def _cores() -> int:
 
 def _share_out(groups: Sequence[str], processes: int, folder: Path | None) -> list[list[str]]:
     """Split ``groups`` into at most ``processes`` shares of about equal compile time."""
+    cost = {group: _recorded_seconds(group, folder) for group in groups}
     shares: list[list[str]] = [[] for _ in range(max(1, min(processes, len(groups))))]
     loads = [0.0] * len(shares)
-    for group in sorted(groups, key=lambda g: -_recorded_seconds(g, folder)):
+    for group in sorted(groups, key=lambda g: -cost[g]):
         lightest = loads.index(min(loads))
         shares[lightest].append(group)
-        loads[lightest] += _recorded_seconds(group, folder)
+        loads[lightest] += cost[group]
     return [share for share in shares if share]
 
 

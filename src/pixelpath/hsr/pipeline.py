@@ -33,7 +33,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from pixelpath._threads import in_runs, in_threads
+from pixelpath._threads import in_runs
 from pixelpath.renderer import Frame, RenderOptions, View
 from pixelpath.scene import Scene
 
@@ -43,8 +43,6 @@ __all__ = [
     "Lighting",
     "Prepared",
     "Visibility",
-    "in_runs",
-    "in_threads",
     "paint",
     "prepare",
     "shade",

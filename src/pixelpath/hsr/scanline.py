@@ -42,6 +42,7 @@ import math
 
 import numpy as np
 
+from pixelpath._threads import in_runs
 from pixelpath.hsr import pipeline
 from pixelpath.renderer import Frame, RenderOptions, View
 from pixelpath.scene import Scene
@@ -125,13 +126,13 @@ def _scan(prepared: pipeline.Prepared, view: View) -> tuple[pipeline.Visibility,
     _, order = pipeline.bands(view)
     counts = np.zeros((view.height, len(LINE_COUNTS)), dtype=np.intp)
 
-    def scan(start: int, stop: int) -> None:
+    def scan(run: np.ndarray) -> None:
         kernels.scan_bands(
-            order[start:stop], prepared.setup, prepared.rows, offsets, items,
-            _kernels.BAND_ROWS, view.x0, view.y0, *visibility, counts,
+            run, prepared.setup, prepared.rows, offsets, items, _kernels.BAND_ROWS, view.x0,
+            view.y0, *visibility, counts,
         )
 
-    pipeline.in_threads(scan, len(order))
+    in_runs(scan, order)
     return visibility, counts
 
 

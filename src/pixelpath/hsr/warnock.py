@@ -46,6 +46,7 @@ import functools
 
 import numpy as np
 
+from pixelpath._threads import in_threads
 from pixelpath.hsr import pipeline
 from pixelpath.renderer import Frame, RenderOptions, View
 from pixelpath.scene import Scene
@@ -117,7 +118,7 @@ def _subdivide(prepared: pipeline.Prepared, view: View, explain: bool):
 
     visibility = pipeline.visibility_buffers(view)
     boxes = np.empty((len(prepared.rows), 4), dtype=np.intp)
-    pipeline.in_threads(
+    in_threads(
         functools.partial(kernels.coverage_boxes, prepared.setup, prepared.rows, view.x0,
                           view.x0 + view.width, boxes),
         len(boxes),
@@ -137,7 +138,7 @@ def _subdivide(prepared: pipeline.Prepared, view: View, explain: bool):
             kernels.decide_level, areas, offsets, candidates, prepared.setup, boxes, view.x0,
             view.y0, *visibility, kept, decisions,
         )
-        pipeline.in_threads(decide, len(areas))
+        in_threads(decide, len(areas))
         tally = np.bincount(decisions, minlength=len(DECISIONS))
         counts.append((len(areas), *tally.tolist(), len(candidates)))
         sizes.append((int((areas[:, 3] - areas[:, 2]).max()),

@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from pixelpath._threads import in_runs
 from pixelpath.hsr import pipeline
 from pixelpath.renderer import Frame, RenderOptions, View
 from pixelpath.scene import Scene
@@ -70,7 +71,7 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
         )
 
     for start, stop in runs:
-        pipeline.in_runs(render_run, order[start:stop])
+        in_runs(render_run, order[start:stop])
         options.progress(pipeline.SHADE_SLICES // len(runs))
     report = _report(prepared, view, visibility) if options.explain else None
     return Frame(out.rgb, out.depth, out.object_id, prepared.stats, report)

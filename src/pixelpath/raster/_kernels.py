@@ -914,6 +914,23 @@ def _tiny_triangle():
     return clip, triangles, setup, rows, offsets, items, inv_depth, triangle_id
 
 
+def overlapping_pair():
+    """Return the set-up records and rows of two triangles crossing each other on an 8x8 image.
+
+    For the warm-ups of the methods that decide visibility from set-up triangles (scan-line,
+    Warnock): real values, so their warm-ups run the kernels' main paths, not only compile them.
+    """
+    screen = np.array(
+        [[1.0, 1.0, 0.5], [7.0, 2.0, 0.5], [3.0, 7.0, 0.5], [0.5, 4.0, 0.2], [7.5, 5.0, 0.9],
+         [6.0, 0.5, 0.2]]
+    )
+    triangles = np.array([[0, 1, 2], [3, 4, 5]], dtype=np.intp)
+    setup = np.zeros((2, SETUP_FIELDS))
+    rows = np.zeros((2, 2), dtype=np.intp)
+    setup_triangles(screen, triangles, 0, 8, setup, rows)
+    return setup, rows
+
+
 def warm_front() -> None:
     """Compile the front end's kernels: cull, classify, clip, divide, set up, bin, light."""
     clip, triangles, setup, rows, _, _, _, _ = _tiny_triangle()

@@ -398,16 +398,9 @@ def _fill(first, stop, slope, offset, t, col_first, depth_row, id_row):
 
 def warmup() -> None:
     """Compile the scan-line kernel on two overlapping triangles."""
-    from pixelpath.raster._kernels import SETUP_FIELDS, setup_triangles
+    from pixelpath.raster._kernels import overlapping_pair
 
-    screen = np.array(
-        [[1.0, 1.0, 0.5], [7.0, 2.0, 0.5], [3.0, 7.0, 0.5], [0.5, 4.0, 0.2], [7.5, 5.0, 0.9],
-         [6.0, 0.5, 0.2]]
-    )
-    triangles = np.array([[0, 1, 2], [3, 4, 5]], dtype=np.intp)
-    setup = np.zeros((2, SETUP_FIELDS))
-    rows = np.zeros((2, 2), dtype=np.intp)
-    setup_triangles(screen, triangles, 0, 8, setup, rows)
+    setup, rows = overlapping_pair()
     offsets = np.array([0, 2], dtype=np.intp)
     items = np.arange(2, dtype=np.intp)
     counts = np.zeros((8, len(LINE_COUNTS)), dtype=np.intp)

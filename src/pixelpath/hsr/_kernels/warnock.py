@@ -281,16 +281,9 @@ def mark_areas(areas, decisions, level, x0, y0, level_map, decision_map):
 
 def warmup() -> None:
     """Compile the subdivision kernels on two overlapping triangles."""
-    from pixelpath.raster._kernels import SETUP_FIELDS, setup_triangles
+    from pixelpath.raster._kernels import overlapping_pair
 
-    screen = np.array(
-        [[1.0, 1.0, 0.5], [7.0, 2.0, 0.5], [3.0, 7.0, 0.5], [0.5, 4.0, 0.2], [7.5, 5.0, 0.9],
-         [6.0, 0.5, 0.2]]
-    )
-    triangles = np.array([[0, 1, 2], [3, 4, 5]], dtype=np.intp)
-    setup = np.zeros((2, SETUP_FIELDS))
-    rows = np.zeros((2, 2), dtype=np.intp)
-    setup_triangles(screen, triangles, 0, 8, setup, rows)
+    setup, rows = overlapping_pair()
     boxes = np.zeros((2, 4), dtype=np.intp)
     coverage_boxes(setup, rows, 0, 8, boxes, 0, 2)
     areas = np.array([[0, 8, 0, 8]], dtype=np.intp)
