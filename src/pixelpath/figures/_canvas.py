@@ -10,7 +10,7 @@ from __future__ import annotations
 import io
 import itertools
 import os
-from collections.abc import Iterable, Sequence
+from collections.abc import Sequence
 from functools import cache
 from pathlib import Path
 
@@ -36,6 +36,25 @@ COLOURS = {
     "emitted": (225, 25, 35),
     "row": (255, 233, 170),
     "contact": (200, 0, 160),
+    # How Warnock decided an area (pixelpath.hsr.warnock.DECISIONS).
+    "empty area": (232, 236, 244),
+    "single area": (150, 210, 160),
+    "in front area": (140, 175, 235),
+    "pixel area": (235, 110, 110),
+    "area edge": (70, 70, 80),
+    # Objects of the hidden-surface figures, in turn.
+    "object 1": (95, 140, 215),
+    "object 2": (230, 160, 60),
+    "object 3": (110, 185, 120),
+    "object 4": (200, 100, 160),
+    "object 5": (150, 120, 210),
+    "object 6": (90, 180, 190),
+    # The rays of a ray tree (pixelpath.figures.ray_tree).
+    "primary ray": (20, 90, 230),
+    "shadow ray": (240, 170, 0),
+    "reflected ray": (0, 170, 90),
+    "refracted ray": (170, 40, 200),
+    "blocked ray": (120, 120, 120),
 }
 
 TEXT_SIZE = 13
@@ -208,21 +227,33 @@ def paste_grid(images: Sequence[Image.Image], captions: Sequence[str],
     return grid
 
 
-def _palette_image() -> Image.Image:
-    """Return a 'P' image whose palette is the figure colours, their half-tones and greys."""
+def _palette_image(picture: Image.Image | None = None) -> Image.Image:
+    """Return a 'P' image whose palette is the figure colours, their half-tones and greys.
+
+    With a ``picture``, the free entries are filled with its own colours (median cut).
+    """
     entries = list(COLOURS.values())
     entries += [(v, v, v) for v in range(0, 256, 5)]
     # Half-tones of each colour on white: antialiased text and thin lines land near them.
     entries += [tuple((c + 255) // 2 for c in colour) for colour in COLOURS.values()]
+    if picture is not None:
+        adaptive = picture.convert("RGB").quantize(256 - len(entries), dither=Image.Dither.NONE)
+        colours = adaptive.getpalette()[: 3 * len(adaptive.getcolors())]
+        entries += [tuple(colours[k : k + 3]) for k in range(0, len(colours), 3)]
     flat = [c for entry in entries for c in entry]
     palette = Image.new("P", (1, 1))
     palette.putpalette(flat + [0] * (768 - len(flat)))
     return palette
 
 
-def gif_bytes(frames: Iterable[Image.Image], durations: Sequence[int]) -> bytes:
-    """Encode RGB frames as a looping GIF in the figure palette (no dithering)."""
-    palette = _palette_image()
+def gif_bytes(frames: Sequence[Image.Image], durations: Sequence[int],
+              pictures: bool = False) -> bytes:
+    """Encode RGB frames as a looping GIF in the figure palette (no dithering).
+
+    With ``pictures`` (frames that hold rendered images), the palette's free entries take the
+    last frame's most representative other colours; the figure colours stay exact.
+    """
+    palette = _palette_image(frames[-1] if pictures else None)
     quantized = [frame.quantize(palette=palette, dither=Image.Dither.NONE) for frame in frames]
     buffer = io.BytesIO()
     quantized[0].save(
@@ -259,12 +290,12 @@ def save(image: Image.Image, path: str | os.PathLike) -> Path:
 
 
 def save_animation(frames: Sequence[Image.Image], durations: Sequence[int],
-                   path: str | os.PathLike) -> Path:
-    """Write frames as an animated GIF, atomically."""
+                   path: str | os.PathLike, pictures: bool = False) -> Path:
+    """Write frames as an animated GIF, atomically (``pictures``: see :func:`gif_bytes`)."""
     path = Path(path)
     if path.suffix.lower() != ".gif":
         raise ValueError(f"animations are written as GIF; give a .gif path, got {str(path)!r}")
-    return _write(path, gif_bytes(frames, durations))
+    return _write(path, gif_bytes(frames, durations, pictures))
 
 
 def _write(path: Path, data: bytes) -> Path:
