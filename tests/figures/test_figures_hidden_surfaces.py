@@ -152,7 +152,7 @@ def test_painter_marks_the_pieces_of_a_split():
     other = [(-2, -1, 1), (2, -1, -1), (0, 2.2, 0)]
     scene = pp.Scene(_camera(WIDE), [pp.Mesh(lean, [[0, 1, 2]]), pp.Mesh(other, [[0, 1, 2]])],
                      [LIGHT])
-    image, report = pp.render(scene, method="painter", explain=True, backface_cull=False)
+    _, report = pp.render(scene, method="painter", explain=True, backface_cull=False)
     assert report.summary["splits"] >= 1
     split = report.arrays["split"][report.arrays["order"]]
     assert split.any()
