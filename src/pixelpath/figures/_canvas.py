@@ -117,6 +117,9 @@ class Sketch:
     def __init__(self, width: int, height: int):
         self.image = Image.new("RGB", (width, height), COLOURS["background"])
         self.draw = ImageDraw.Draw(self.image)
+        # Text without antialiasing: its pixels keep the palette's exact colours, so GIF
+        # frames stay exact and compress to a fraction of the size of shaded text.
+        self.draw.fontmode = "1"
 
     def fill(self, view: View, points: np.ndarray, colour: str) -> None:
         """Fill a polygon (nothing for fewer than 3 vertices)."""

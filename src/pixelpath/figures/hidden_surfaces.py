@@ -69,7 +69,7 @@ PANEL = 320  # pictures are scaled up by whole factors towards this many pixels
 ORDER_FRAMES = 40  # the painter's and BSP animations show at most this many frames
 FILL_FRAMES = 30  # the scan-line animation shows at most this many groups of lines
 OUTLINED = 300  # drawing orders with more triangles are drawn without their edges
-DIAGRAM_NODES = 40  # the BSP diagram shows the levels of the tree that fit this many nodes
+DIAGRAM_NODES = 24  # the BSP diagram shows the levels of the tree that fit this many nodes
 STEP_MS, LAST_MS = 400, 2500
 
 # The colour of each of Warnock's decisions (the codes of pixelpath.hsr.warnock.DECISIONS);
@@ -658,7 +658,7 @@ def _diagram(board: _Board, panel: _Panel, report: Any, order: np.ndarray,
             colour = "boundary" if side == far else "muted"
             board.sketch.draw.line([(x, y), (cx, cy)], fill=COLOURS[colour], width=2)
             stack.append(child)
-    radius = max(4, min(10, int(size[0] / columns / 2) - 1))
+    radius = max(4, min(10, int(size[0] / columns / 2) - 1, int(step_y / 2) - 1))
     for node, level in levels.items():
         x, y = centre(node, level)
         ring = COLOURS["emitted"] if node in current else COLOURS["area edge"]
