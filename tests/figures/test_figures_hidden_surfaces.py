@@ -13,16 +13,12 @@ from PIL import Image
 
 import pixelpath as pp
 from pixelpath.figures import DRAWN_METHODS
-from pixelpath.figures._canvas import COLOURS
+from pixelpath.figures._canvas import COLOURS, GAP, HEADER, MARGIN, picture_scale
 from pixelpath.figures.hidden_surfaces import (
-    GAP,
-    HEADER,
-    MARGIN,
     OBJECT_COLOURS,
     bsp_frames,
     octree_frames,
     order_frames,
-    picture_scale,
     scanline_frames,
     warnock_frames,
     zbuffer_frames,

@@ -6,8 +6,7 @@ import numpy as np
 import pytest
 
 import pixelpath as pp
-from pixelpath.figures._canvas import COLOURS
-from pixelpath.figures.hidden_surfaces import GAP, HEADER, MARGIN
+from pixelpath.figures._canvas import COLOURS, GAP, HEADER, MARGIN
 from pixelpath.figures.ray_tree import overview_camera, ray_tree_figure
 from pixelpath.raytrace import ray_tree
 

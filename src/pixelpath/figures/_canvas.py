@@ -1,5 +1,8 @@
 """Drawing helpers for the teaching figures: a world-to-pixel view, colours, text, files.
 
+:class:`Board` lays out the frames of the hidden-surface and ray figures: a title, panels of a
+rendered image's size (scaled up by whole factors) and a column of numbers.
+
 Everything is drawn with Pillow in a small fixed palette, so that a figure's pixels can be
 checked by colour (a test finds the emitted points by their highlight colour) and a GIF's
 frames quantize to exactly the colours that were drawn.
@@ -59,6 +62,12 @@ COLOURS = {
 
 TEXT_SIZE = 13
 LINE_HEIGHT = 17
+# The layout of a Board: margins, the gap between panels, the height of the title and captions
+# above them, the width of the column of numbers right of them, and the size pictures are
+# scaled up towards.
+MARGIN, GAP, HEADER = 10, 16, 64
+COLUMN = 250
+PANEL = 320
 
 
 @cache
@@ -193,6 +202,112 @@ class Sketch:
                 left += widths[k] + gap
             y += LINE_HEIGHT
         return y
+
+
+def picture_scale(width: int, height: int) -> int:
+    """Return the whole factor a ``width`` × ``height`` image is scaled up by in the figures.
+
+    Examples
+    --------
+    >>> from pixelpath.figures._canvas import picture_scale
+    >>> picture_scale(160, 120), picture_scale(16, 16), picture_scale(640, 480)
+    (2, 20, 1)
+    """
+    return max(1, PANEL // max(width, height))
+
+
+class PixelPanel:
+    """Maps pixel coordinates of the rendered image (x right, y down) into one panel."""
+
+    def __init__(self, left: int, top: int, scale: int, width: int, height: int):
+        self.left, self.top, self.scale = left, top, scale
+        self.width, self.height = width, height
+
+    def xy(self, points: np.ndarray) -> list[tuple[float, float]]:
+        """Board coordinates of image points, as ImageDraw takes them."""
+        points = np.asarray(points, dtype=np.float64).reshape(-1, 2)
+        return [(self.left + self.scale * x, self.top + self.scale * y) for x, y in points]
+
+    def box(self, first_row: int, stop_row: int, first_col: int, stop_col: int) -> list[int]:
+        """Return the board rectangle [x0, y0, x1, y1] (inclusive) of a block of pixels."""
+        s = self.scale
+        return [self.left + s * first_col, self.top + s * first_row,
+                self.left + s * stop_col - 1, self.top + s * stop_row - 1]
+
+
+class Board:
+    """A frame: a title and a line under it, captioned panels, a column of numbers.
+
+    Panel ``k`` starts at ``(MARGIN + k * (width * scale + GAP), HEADER)`` for an image of
+    ``width`` pixels scaled by ``scale = picture_scale(width, height)``.
+    """
+
+    def __init__(self, shape: tuple[int, int], captions: Sequence[str], title: str,
+                 detail: str = ""):
+        height, width = shape
+        self.scale = picture_scale(width, height)
+        pw, ph = width * self.scale, height * self.scale
+        panels = len(captions)
+        self.column_x = MARGIN + panels * (pw + GAP)
+        self.sketch = Sketch(self.column_x + COLUMN, max(HEADER + ph, HEADER + 14 * LINE_HEIGHT)
+                             + MARGIN)
+        self.panels = [
+            PixelPanel(MARGIN + k * (pw + GAP), HEADER, self.scale, width, height)
+            for k in range(panels)
+        ]
+        self.sketch.text(MARGIN, 6, title)
+        self.sketch.text(MARGIN, 6 + LINE_HEIGHT, detail, colour="muted")
+        for panel, caption in zip(self.panels, captions, strict=True):
+            self.sketch.text(panel.left, HEADER - LINE_HEIGHT - 2, caption)
+        self.y = HEADER
+
+    def paste(self, panel: int, rgb: np.ndarray) -> None:
+        """Place an (H, W, 3) uint8 picture in a panel, each pixel a square block."""
+        self.place(panel, scaled(rgb, self.scale))
+
+    def place(self, panel: int, picture: Image.Image) -> None:
+        """Place a picture of the panel's size (from :meth:`canvas`) in a panel."""
+        target = self.panels[panel]
+        self.sketch.image.paste(picture, (target.left, target.top))
+
+    def canvas(self, rgb: np.ndarray | None = None) -> tuple[Sketch, PixelPanel]:
+        """Return a sketch of one panel's size (white, or ``rgb`` scaled up) and its mapping.
+
+        Drawing there and placing it keeps what reaches past the panel out of the others.
+        """
+        height, width = self.panels[0].height, self.panels[0].width
+        sketch = Sketch(width * self.scale, height * self.scale)
+        if rgb is not None:
+            sketch.image.paste(scaled(rgb, self.scale), (0, 0))
+        return sketch, PixelPanel(0, 0, self.scale, width, height)
+
+    def line(self, text: str, colour: str = "text", swatch: str | None = None) -> None:
+        """Write a line in the column of numbers, with a colour swatch before it if asked."""
+        x = self.column_x
+        if swatch is not None:
+            self.sketch.draw.rectangle([x, self.y + 2, x + 11, self.y + 13],
+                                       fill=COLOURS[swatch], outline=COLOURS["area edge"])
+            x += 18
+        self.sketch.text(x, self.y, text, colour=colour)
+        self.y += LINE_HEIGHT
+
+    def skip(self) -> None:
+        """Leave half a line of space in the column of numbers."""
+        self.y += LINE_HEIGHT // 2
+
+    @property
+    def image(self) -> Image.Image:
+        """The frame drawn so far."""
+        return self.sketch.image
+
+
+def scaled(rgb: np.ndarray, scale: int) -> Image.Image:
+    """Return an (H, W, 3) uint8 picture scaled up by a whole factor, nearest neighbour."""
+    picture = Image.fromarray(np.ascontiguousarray(rgb, dtype=np.uint8), "RGB")
+    if scale > 1:
+        picture = picture.resize((picture.width * scale, picture.height * scale),
+                                 Image.Resampling.NEAREST)
+    return picture
 
 
 def paste_row(images: Sequence[Image.Image], captions: Sequence[str], gap: int = 8,

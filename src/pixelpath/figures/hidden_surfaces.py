@@ -16,10 +16,9 @@ image attached); nothing here decides visibility again.
 * the octree's cells, coloured by what the front-to-back traversal did with them
   (:func:`octree_figure`).
 
-Each frame is a board: a title, panels of the image's size (scaled up by
-:func:`picture_scale`, nearest neighbour, so every pixel of the image is a square block) and a
-column of numbers on the right. Panel ``k`` of a board starts at pixel
-``(MARGIN + k * (width * scale + GAP), HEADER)``.
+Each frame is a :class:`~pixelpath.figures._canvas.Board`: a title, panels of the image's size
+(scaled up by ``picture_scale``, nearest neighbour, so every pixel of the image is a square
+block) and a column of numbers on the right.
 
 Examples
 --------
@@ -41,13 +40,10 @@ from typing import Any
 import numpy as np
 from PIL import Image
 
-from pixelpath.figures._canvas import COLOURS, LINE_HEIGHT, Sketch
+from pixelpath.figures._canvas import COLOURS, Board, PixelPanel
 
 __all__ = [
     "DECISION_COLOURS",
-    "GAP",
-    "HEADER",
-    "MARGIN",
     "OBJECT_COLOURS",
     "OUTCOME_COLOURS",
     "bsp_figure",
@@ -56,16 +52,12 @@ __all__ = [
     "octree_figure",
     "octree_frames",
     "order_frames",
-    "picture_scale",
     "scanline_frames",
     "warnock_figure",
     "warnock_frames",
     "zbuffer_frames",
 ]
 
-MARGIN, GAP, HEADER = 10, 16, 64
-COLUMN = 250  # width of the column of numbers right of the panels
-PANEL = 320  # pictures are scaled up by whole factors towards this many pixels
 ORDER_FRAMES = 40  # the painter's and BSP animations show at most this many frames
 FILL_FRAMES = 30  # the scan-line animation shows at most this many groups of lines
 OUTLINED = 300  # drawing orders with more triangles are drawn without their edges
@@ -76,18 +68,6 @@ STEP_MS, LAST_MS = 400, 2500
 # subdivided areas are outlined in the boundary colour where they are cut.
 DECISION_COLOURS = ("empty area", "single area", "in front area", "boundary", "pixel area")
 OBJECT_COLOURS = tuple(f"object {k}" for k in range(1, 7))
-
-
-def picture_scale(width: int, height: int) -> int:
-    """Return the whole factor a ``width`` × ``height`` image is scaled up by in the figures.
-
-    Examples
-    --------
-    >>> from pixelpath.figures.hidden_surfaces import picture_scale
-    >>> picture_scale(160, 120), picture_scale(16, 16), picture_scale(640, 480)
-    (2, 20, 1)
-    """
-    return max(1, PANEL // max(width, height))
 
 
 def depth_grey(depth: np.ndarray) -> np.ndarray:
@@ -108,94 +88,6 @@ def depth_grey(depth: np.ndarray) -> np.ndarray:
         scale = (far - near) or 1.0
         grey[drawn] = np.rint(255 - 200 * (depth[drawn] - near) / scale).astype(np.uint8)
     return grey
-
-
-class _Panel:
-    """Maps pixel coordinates of the rendered image (x right, y down) into one panel."""
-
-    def __init__(self, left: int, top: int, scale: int, width: int, height: int):
-        self.left, self.top, self.scale = left, top, scale
-        self.width, self.height = width, height
-
-    def xy(self, points: np.ndarray) -> list[tuple[float, float]]:
-        """Board coordinates of image points, as ImageDraw takes them."""
-        points = np.asarray(points, dtype=np.float64).reshape(-1, 2)
-        return [(self.left + self.scale * x, self.top + self.scale * y) for x, y in points]
-
-    def box(self, first_row: int, stop_row: int, first_col: int, stop_col: int) -> list[int]:
-        """Return the board rectangle [x0, y0, x1, y1] (inclusive) of a block of pixels."""
-        s = self.scale
-        return [self.left + s * first_col, self.top + s * first_row,
-                self.left + s * stop_col - 1, self.top + s * stop_row - 1]
-
-
-class _Board:
-    """A frame: a title and a line under it, captioned panels, a column of numbers."""
-
-    def __init__(self, shape: tuple[int, int], captions: Sequence[str], title: str,
-                 detail: str = ""):
-        height, width = shape
-        self.scale = picture_scale(width, height)
-        pw, ph = width * self.scale, height * self.scale
-        panels = len(captions)
-        self.column_x = MARGIN + panels * (pw + GAP)
-        self.sketch = Sketch(self.column_x + COLUMN, max(HEADER + ph, HEADER + 14 * LINE_HEIGHT)
-                             + MARGIN)
-        self.panels = [
-            _Panel(MARGIN + k * (pw + GAP), HEADER, self.scale, width, height)
-            for k in range(panels)
-        ]
-        self.sketch.text(MARGIN, 6, title)
-        self.sketch.text(MARGIN, 6 + LINE_HEIGHT, detail, colour="muted")
-        for panel, caption in zip(self.panels, captions, strict=True):
-            self.sketch.text(panel.left, HEADER - LINE_HEIGHT - 2, caption)
-        self.y = HEADER
-
-    def paste(self, panel: int, rgb: np.ndarray) -> None:
-        """Place an (H, W, 3) uint8 picture in a panel, each pixel a square block."""
-        self.place(panel, _scaled(rgb, self.scale))
-
-    def place(self, panel: int, picture: Image.Image) -> None:
-        """Place a picture of the panel's size (from :meth:`canvas`) in a panel."""
-        target = self.panels[panel]
-        self.sketch.image.paste(picture, (target.left, target.top))
-
-    def canvas(self, rgb: np.ndarray | None = None) -> tuple[Sketch, _Panel]:
-        """Return a sketch of one panel's size (white, or ``rgb`` scaled up) and its mapping.
-
-        Drawing there and placing it keeps what reaches past the panel out of the others.
-        """
-        height, width = self.panels[0].height, self.panels[0].width
-        sketch = Sketch(width * self.scale, height * self.scale)
-        if rgb is not None:
-            sketch.image.paste(_scaled(rgb, self.scale), (0, 0))
-        return sketch, _Panel(0, 0, self.scale, width, height)
-
-    def line(self, text: str, colour: str = "text", swatch: str | None = None) -> None:
-        """Write a line in the column of numbers, with a colour swatch before it if asked."""
-        x = self.column_x
-        if swatch is not None:
-            self.sketch.draw.rectangle([x, self.y + 2, x + 11, self.y + 13],
-                                       fill=COLOURS[swatch], outline=COLOURS["area edge"])
-            x += 18
-        self.sketch.text(x, self.y, text, colour=colour)
-        self.y += LINE_HEIGHT
-
-    def skip(self) -> None:
-        self.y += LINE_HEIGHT // 2
-
-    @property
-    def image(self) -> Image.Image:
-        return self.sketch.image
-
-
-def _scaled(rgb: np.ndarray, scale: int) -> Image.Image:
-    """Return an (H, W, 3) uint8 picture scaled up by a whole factor, nearest neighbour."""
-    picture = Image.fromarray(np.ascontiguousarray(rgb, dtype=np.uint8), "RGB")
-    if scale > 1:
-        picture = picture.resize((picture.width * scale, picture.height * scale),
-                                 Image.Resampling.NEAREST)
-    return picture
 
 
 def _checked(image: Any, report: Any, keys: Sequence[str]) -> np.ndarray:
@@ -267,7 +159,7 @@ def zbuffer_frames(image: Any, report: Any) -> list[Image.Image]:
     frames = []
     for band in range(bands):
         first, stop = band * BAND_ROWS, min((band + 1) * BAND_ROWS, height)
-        board = _Board(
+        board = Board(
             rgb.shape[:2], ["colour buffer", "depth buffer (near is light)", "depth tests"],
             f"The z-buffer: band {band + 1} of {bands}, rows {first}-{stop - 1}",
             "each triangle over the band is scan-converted; a sample replaces the stored one "
@@ -330,7 +222,7 @@ def scanline_frames(image: Any, report: Any) -> list[Image.Image]:
     frames = []
     for first in range(0, height, lines):
         stop = min(first + lines, height)
-        board = _Board(
+        board = Board(
             (height, width),
             ["image", "active edges (purple), spans (green), by depth (red)"],
             f"The scan-line method: lines {first}-{stop - 1} of {height}",
@@ -360,7 +252,7 @@ def scanline_frames(image: Any, report: Any) -> list[Image.Image]:
     return frames
 
 
-def _bar(board: _Board, panel: _Panel, row: int, share: float,
+def _bar(board: Board, panel: PixelPanel, row: int, share: float,
          fill: tuple[int, int, int]) -> None:
     """Draw a bar across an image row of a panel, ``share`` of the panel's width long."""
     left, top, right, bottom = panel.box(row, row + 1, 0, panel.width)
@@ -428,7 +320,7 @@ def _warnock_frame(rgb: np.ndarray, report: Any, level: int) -> Image.Image:
     counts = np.asarray(report.arrays["levels"])
     levels = len(counts)
     decided = (level_map >= 0) & (level_map <= level)
-    board = _Board(
+    board = Board(
         rgb.shape[:2], ["decided so far", "areas, by how they were decided"],
         f"Warnock's area subdivision: level {level + 1} of {levels}",
         f"{int(counts[level, 0])} areas examined at this level; the undecided ones are cut "
@@ -459,7 +351,7 @@ def _warnock_frame(rgb: np.ndarray, report: Any, level: int) -> Image.Image:
     return board.image
 
 
-def _cut_lines(board: _Board, panel: _Panel, y0: int, y1: int, x0: int, x1: int) -> None:
+def _cut_lines(board: Board, panel: PixelPanel, y0: int, y1: int, x0: int, x1: int) -> None:
     """Draw where a subdivided area is cut (the first half takes the odd pixel)."""
     x_mid = x0 + (x1 - x0 + 1) // 2 if x1 - x0 > 1 else x1
     y_mid = y0 + (y1 - y0 + 1) // 2 if y1 - y0 > 1 else y1
@@ -512,14 +404,14 @@ def order_frames(image: Any, report: Any) -> list[Image.Image]:
 
 
 def _order_board(rgb: np.ndarray, report: Any, order: np.ndarray, first: int, stop: int,
-                 name: str, diagram: bool = False) -> _Board:
+                 name: str, diagram: bool = False) -> Board:
     first = max(first, 0)
     what = (f"polygon {stop} of {len(order)}" if stop - first == 1
             else f"polygons {first + 1}-{stop} of {len(order)}")
     captions = ["painted so far, back to front", "the image"]
     if diagram:
         captions = ["the tree (numbers: drawing order)", *captions]
-    board = _Board(rgb.shape[:2], captions, f"{name}: {what}",
+    board = Board(rgb.shape[:2], captions, f"{name}: {what}",
                    "no depth test: each polygon is painted over the ones before it")
     painted, view = board.canvas()
     picture, _ = board.canvas(rgb)
@@ -609,7 +501,7 @@ def bsp_figure(image: Any, report: Any) -> Image.Image:
 
 
 def _bsp_board(rgb: np.ndarray, report: Any, order: np.ndarray, first: int,
-               stop: int) -> _Board:
+               stop: int) -> Board:
     board = _order_board(rgb, report, order, first, stop, "The BSP tree", diagram=True)
     nodes = np.asarray(report.arrays["node"])
     current = set(nodes[order[first:stop]].tolist())
@@ -617,7 +509,7 @@ def _bsp_board(rgb: np.ndarray, report: Any, order: np.ndarray, first: int,
     return board
 
 
-def _diagram(board: _Board, panel: _Panel, report: Any, order: np.ndarray,
+def _diagram(board: Board, panel: PixelPanel, report: Any, order: np.ndarray,
              current: set[int]) -> None:
     """Draw the top levels of the tree: node numbers by drawing order, far sides in orange."""
     children = np.asarray(report.arrays["children"])
@@ -760,7 +652,7 @@ def _octree_board(rgb: np.ndarray, report: Any, shown: np.ndarray, what: str) ->
 
     footprints = np.asarray(report.arrays["cell footprint"])
     outcome = np.asarray(report.arrays["cell outcome"])
-    board = _Board(rgb.shape[:2], ["the image", "cells' screen footprints"],
+    board = Board(rgb.shape[:2], ["the image", "cells' screen footprints"],
                    f"The octree, front to back: {what}",
                    "a cell whose pixels are all decided is skipped with everything behind it")
     board.paste(0, rgb)

@@ -29,8 +29,7 @@ from typing import Any
 import numpy as np
 from PIL import Image
 
-from pixelpath.figures._canvas import COLOURS, Sketch
-from pixelpath.figures.hidden_surfaces import _Board
+from pixelpath.figures._canvas import COLOURS, Board, Sketch
 from pixelpath.scene import Camera, PointLight
 
 __all__ = ["RAY_COLOURS", "overview_camera", "ray_tree_figure"]
@@ -58,7 +57,7 @@ def ray_tree_figure(tree: Any, overview: Camera | None = None) -> Image.Image:
     Returns
     -------
     PIL.Image.Image
-        A board of two panels (see :mod:`pixelpath.figures.hidden_surfaces`): panel ``k``
+        A board of two panels (a :class:`~pixelpath.figures._canvas.Board`): panel ``k``
         starts at ``(MARGIN + k * (width + GAP), HEADER)``.
 
     Examples
@@ -86,7 +85,7 @@ def ray_tree_figure(tree: Any, overview: Camera | None = None) -> Image.Image:
     elif (overview.width, overview.height) != (main.width, main.height):
         overview = overview.with_size(main.width, main.height)
     x, y = tree.pixel
-    board = _Board(
+    board = Board(
         (main.height, main.width), ["seen by the scene's camera", "seen from aside"],
         f"The ray tree of pixel ({x}, {y}): {tree.rays} rays traced",
         "each ray from its origin to its hit; shadow rays from each hit to the lights",
