@@ -23,7 +23,7 @@ from pixelpath.figures.hidden_surfaces import (
     warnock_frames,
     zbuffer_frames,
 )
-from pixelpath.figures.methods import METHOD_ANIMATIONS, METHOD_FIGURES
+from pixelpath.figures.methods import METHOD_ANIMATIONS, METHOD_FIGURES, method_figure
 from pixelpath.report import Report
 
 SIZE = 16
@@ -101,10 +101,21 @@ def test_warnock_frames_one_per_level_coloured_by_decision(tmp_path):
     assert _panel_pixel(drawn, 0, 2, 2) == tuple(image.to_uint8()[2, 2])
 
 
-def test_warnock_figure_is_the_last_level():
-    image, report = pp.render(_quarters_scene(), method="warnock", explain=True)
-    assert np.array_equal(np.asarray(report.figure()),
-                          np.asarray(warnock_frames(image, report)[-1]))
+def test_warnock_and_scanline_figures_are_their_last_frames():
+    for method, frames_of in (("warnock", warnock_frames), ("scanline", scanline_frames)):
+        image, report = pp.render(_quarters_scene(), method=method, explain=True)
+        assert np.array_equal(np.asarray(report.figure()),
+                              np.asarray(frames_of(image, report)[-1]))
+
+
+def test_method_figure_is_none_for_a_line_styles_report():
+    # The playground asks for the figure of any method and style: a line style's report
+    # (its edges) has none of the method's data, so only the z-buffer's depth figure remains.
+    scene = _quarters_scene()
+    for method in ("warnock", "painter", "zbuffer"):
+        image, report = pp.render(scene, method=method, style="hidden-line", explain=True)
+        figure = method_figure(method, image, report)
+        assert (figure is None) == (method != "zbuffer")
 
 
 # Three triangles side by side on a 32 x 32 image, at depths far, middle and near: the

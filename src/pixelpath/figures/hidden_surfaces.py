@@ -51,7 +51,9 @@ __all__ = [
     "depth_grey",
     "octree_figure",
     "octree_frames",
+    "order_figure",
     "order_frames",
+    "scanline_figure",
     "scanline_frames",
     "warnock_figure",
     "warnock_frames",
@@ -213,43 +215,66 @@ def scanline_frames(image: Any, report: Any) -> list[Image.Image]:
     >>> len(scanline_frames(*pp.render(scene, method="scanline", explain=True)))
     20
     """
-    keys = ["active edges", "spans", "spans compared by depth", "span splits"]
-    rgb = _checked(image, report, keys)
-    active, spans, by_depth, splits = (np.asarray(report.arrays[key]) for key in keys)
-    height, width = rgb.shape[:2]
+    rgb = _checked(image, report, SCAN_KEYS)
+    height = rgb.shape[0]
     lines = math.ceil(height / FILL_FRAMES)
+    return [_scanline_frame(rgb, report, first, min(first + lines, height))
+            for first in range(0, height, lines)]
+
+
+def scanline_figure(image: Any, report: Any) -> Image.Image:
+    """Return the scan-line method's last frame: the whole image and every line's counts.
+
+    Examples
+    --------
+    >>> import pixelpath as pp
+    >>> from pixelpath.figures.hidden_surfaces import scanline_figure
+    >>> scene = pp.Scene(pp.Camera(eye=(0, 0, 4), target=(0, 0, 0), width=24, height=20),
+    ...                  [pp.Sphere((0, 0, 0), 1.0)], [pp.PointLight((3, 3, 3))])
+    >>> scanline_figure(*pp.render(scene, method="scanline", explain=True)).mode
+    'RGB'
+    """
+    rgb = _checked(image, report, SCAN_KEYS)
+    height = rgb.shape[0]
+    lines = math.ceil(height / FILL_FRAMES)
+    return _scanline_frame(rgb, report, (height - 1) // lines * lines, height)
+
+
+SCAN_KEYS = ("active edges", "spans", "spans compared by depth", "span splits")
+
+
+def _scanline_frame(rgb: np.ndarray, report: Any, first: int, stop: int) -> Image.Image:
+    """Draw the frame of scan lines [first, stop): the image and the bars down to ``stop``."""
+    active, spans, by_depth, splits = (np.asarray(report.arrays[key]) for key in SCAN_KEYS)
+    height, width = rgb.shape[:2]
     longest = max(int(active.max(initial=0)), int(spans.max(initial=0)), 1)
-    frames = []
-    for first in range(0, height, lines):
-        stop = min(first + lines, height)
-        board = Board(
-            (height, width),
-            ["image", "active edges (purple), spans (green), by depth (red)"],
-            f"The scan-line method: lines {first}-{stop - 1} of {height}",
-            "per line: the active edge list sorted by x, walked left to right into spans",
-        )
-        shown = _white((height, width))
-        shown[:stop] = rgb[:stop]
-        board.paste(0, shown)
-        bars = board.panels[1]
-        series = ((active, _light(COLOURS["edge"])), (spans, COLOURS["output"]),
-                  (by_depth, COLOURS["emitted"]))
-        for j in range(stop):
-            for counts, fill in series:
-                if counts[j]:
-                    _bar(board, bars, j, counts[j] / longest, fill)
-        for panel in board.panels:
-            board.sketch.draw.rectangle(panel.box(first, stop, 0, width),
-                                        outline=COLOURS["boundary"], width=2)
-        board.line(f"lines {first}-{stop - 1}:")
-        board.line(f"active edges {int(active[first:stop].max(initial=0))} at most")
-        board.line(f"spans {int(spans[first:stop].sum())}", swatch="output")
-        board.line(f"by depth {int(by_depth[first:stop].sum())}", swatch="emitted")
-        board.line(f"splits {int(splits[first:stop].sum())}")
-        board.skip()
-        board.line(f"longest active edge list {int(active.max(initial=0))}", colour="muted")
-        frames.append(board.image)
-    return frames
+    board = Board(
+        (height, width),
+        ["image", "active edges (purple), spans (green), by depth (red)"],
+        f"The scan-line method: lines {first}-{stop - 1} of {height}",
+        "per line: the active edge list sorted by x, walked left to right into spans",
+    )
+    shown = _white((height, width))
+    shown[:stop] = rgb[:stop]
+    board.paste(0, shown)
+    bars = board.panels[1]
+    series = ((active, _light(COLOURS["edge"])), (spans, COLOURS["output"]),
+              (by_depth, COLOURS["emitted"]))
+    for j in range(stop):
+        for counts, fill in series:
+            if counts[j]:
+                _bar(board, bars, j, counts[j] / longest, fill)
+    for panel in board.panels:
+        board.sketch.draw.rectangle(panel.box(first, stop, 0, width),
+                                    outline=COLOURS["boundary"], width=2)
+    board.line(f"lines {first}-{stop - 1}:")
+    board.line(f"active edges {int(active[first:stop].max(initial=0))} at most")
+    board.line(f"spans {int(spans[first:stop].sum())}", swatch="output")
+    board.line(f"by depth {int(by_depth[first:stop].sum())}", swatch="emitted")
+    board.line(f"splits {int(splits[first:stop].sum())}")
+    board.skip()
+    board.line(f"longest active edge list {int(active.max(initial=0))}", colour="muted")
+    return board.image
 
 
 def _bar(board: Board, panel: PixelPanel, row: int, share: float,
@@ -391,20 +416,40 @@ def order_frames(image: Any, report: Any) -> list[Image.Image]:
     >>> len(order_frames(*pp.render(scene, method="painter", explain=True)))  # 3 faces
     6
     """
-    rgb = _checked(image, report, ["order", "triangles", "object", "split"])
+    rgb = _checked(image, report, ORDER_KEYS)
     order = np.asarray(report.arrays["order"])
     group = max(1, math.ceil(len(order) / ORDER_FRAMES))
-    name = "BSP tree" if report.method == "bsp" else "painter's algorithm"
     frames = []
     for stop in range(group, len(order) + group, group):
         stop = min(stop, len(order))
-        board = _order_board(rgb, report, order, stop - group, stop, f"The {name}")
-        frames.append(board.image)
+        frames.append(_order_board(rgb, report, order, stop - group, stop).image)
     return frames
 
 
+def order_figure(image: Any, report: Any) -> Image.Image:
+    """Return every polygon painted, the pieces made by splitting outlined in magenta.
+
+    Examples
+    --------
+    >>> import pixelpath as pp
+    >>> from pixelpath.figures.hidden_surfaces import order_figure
+    >>> scene = pp.Scene(pp.Camera(eye=(3, 3, 3), target=(0, 0, 0), width=32, height=24),
+    ...                  [pp.Box((-1, -1, -1), (1, 1, 1))], [pp.PointLight((5, 5, 5))])
+    >>> order_figure(*pp.render(scene, method="painter", explain=True)).mode
+    'RGB'
+    """
+    rgb = _checked(image, report, ORDER_KEYS)
+    order = np.asarray(report.arrays["order"])
+    return _order_board(rgb, report, order, len(order) - 1, len(order)).image
+
+
+ORDER_KEYS = ("order", "triangles", "object", "split")
+
+
 def _order_board(rgb: np.ndarray, report: Any, order: np.ndarray, first: int, stop: int,
-                 name: str, diagram: bool = False) -> Board:
+                 diagram: bool = False) -> Board:
+    """Draw polygons [0, stop) of the order, those from ``first`` on outlined in red."""
+    name = "The BSP tree" if report.method == "bsp" else "The painter's algorithm"
     first = max(first, 0)
     what = (f"polygon {stop} of {len(order)}" if stop - first == 1
             else f"polygons {first + 1}-{stop} of {len(order)}")
@@ -462,8 +507,7 @@ def bsp_frames(image: Any, report: Any) -> list[Image.Image]:
     >>> len(bsp_frames(*pp.render(scene, method="bsp", explain=True)))  # 3 faces, 3 nodes
     3
     """
-    rgb = _checked(image, report, ["order", "triangles", "object", "split", "node",
-                                   "children", "eye in front"])
+    rgb = _checked(image, report, [*ORDER_KEYS, "node", "children", "eye in front"])
     order = np.asarray(report.arrays["order"])
     nodes = np.asarray(report.arrays["node"])[order]
     # Where each node's polygons end in the order (a node's polygons are painted together).
@@ -494,15 +538,14 @@ def bsp_figure(image: Any, report: Any) -> Image.Image:
     >>> bsp_figure(*pp.render(scene, method="bsp", explain=True)).mode
     'RGB'
     """
-    rgb = _checked(image, report, ["order", "triangles", "object", "split", "node",
-                                   "children", "eye in front"])
+    rgb = _checked(image, report, [*ORDER_KEYS, "node", "children", "eye in front"])
     order = np.asarray(report.arrays["order"])
     return _bsp_board(rgb, report, order, max(len(order) - 1, 0), len(order)).image
 
 
 def _bsp_board(rgb: np.ndarray, report: Any, order: np.ndarray, first: int,
                stop: int) -> Board:
-    board = _order_board(rgb, report, order, first, stop, "The BSP tree", diagram=True)
+    board = _order_board(rgb, report, order, first, stop, diagram=True)
     nodes = np.asarray(report.arrays["node"])
     current = set(nodes[order[first:stop]].tolist())
     _diagram(board, board.panels[0], report, order, current)

@@ -64,20 +64,10 @@ def depth_figure(image: Any, report: Any = None) -> Image.Image:
     return paste_row(pictures, ["image", "depth buffer (near is light)"])
 
 
-def _last(frames: Callable[[Any, Any], list[Image.Image]]) -> Callable[[Any, Any], Image.Image]:
-    """Return the figure that is an animation's last frame (the work finished)."""
-
-    def figure(image: Any, report: Any) -> Image.Image:
-        return frames(image, report)[-1]
-
-    figure.__doc__ = f"The last frame of :func:`{frames.__name__}`."
-    return figure
-
-
 METHOD_FIGURES: dict[str, Callable[[Any, Any], Image.Image]] = {
     "zbuffer": depth_figure,
-    "scanline": _last(hidden_surfaces.scanline_frames),
-    "painter": _last(hidden_surfaces.order_frames),
+    "scanline": hidden_surfaces.scanline_figure,
+    "painter": hidden_surfaces.order_figure,
     "bsp": hidden_surfaces.bsp_figure,
     "warnock": hidden_surfaces.warnock_figure,
     "octree": hidden_surfaces.octree_figure,
@@ -96,6 +86,9 @@ METHOD_ANIMATIONS: dict[str, Callable[[Any, Any], list[Image.Image]]] = {
 def method_figure(method: str, image: Any, report: Any) -> Image.Image | None:
     """Return the figure of ``method`` for one rendered image, or None when it has none.
 
+    None also when ``report`` is not the method's own (the line styles report their edges):
+    only the z-buffer's figure, the depth buffer, is drawn from the image alone.
+
     Examples
     --------
     >>> import numpy as np
@@ -105,7 +98,11 @@ def method_figure(method: str, image: Any, report: Any) -> Image.Image | None:
     True
     """
     draw = METHOD_FIGURES.get(method)
-    return None if draw is None else draw(image, report)
+    if draw is None:
+        return None
+    if draw is not depth_figure and getattr(report, "method", None) != method:
+        return None  # a line style's report (wireframe, hidden-line) lacks the method's data
+    return draw(image, report)
 
 
 def has_figure(report: Any) -> bool:
