@@ -509,7 +509,7 @@ def project_segment(camera: Any, start: Any, end: Any) -> list[list[float]] | No
     >>> from pixelpath.scene import Camera
     >>> from pixelpath.web.api import project_segment
     >>> camera = Camera(eye=(0, 0, 5), target=(0, 0, 0), fov=90, width=100, height=100)
-    >>> [[round(c, 9) for c in p] for p in project_segment(camera, (0, 0, 0), (5, 5, 0))]
+    >>> [[round(c, 9) + 0.0 for c in p] for p in project_segment(camera, (0, 0, 0), (5, 5, 0))]
     [[50.0, 50.0], [100.0, 0.0]]
     >>> project_segment(camera, (0, 0, 6), (0, 1, 7)) is None  # behind the camera
     True
@@ -541,7 +541,8 @@ def project_segment(camera: Any, start: Any, end: Any) -> list[list[float]] | No
 def colour(data: dict[str, Any], limits: Limits) -> dict[str, Any]:
     """Convert one colour into every model, with the notes' steps for each conversion.
 
-    Inputs: ``model`` (one of :data:`pixelpath.color.MODELS`) and ``values`` in that model.
+    Inputs: ``model`` (one of :data:`pixelpath.color.MODELS`) and ``values`` in that model:
+    hue in [0, 360] degrees, YIQ's I in ±0.6 and Q in ±0.53, every other component in [0, 1].
 
     Examples
     --------
@@ -556,6 +557,11 @@ def colour(data: dict[str, Any], limits: Limits) -> dict[str, Any]:
 
     model = choice(data, "model", "rgb", tuple(MODELS))
     values = vector(data, "values", (1.0, 1.0, 0.0), MODELS[model], 360.0)
+    for k, (value, (low, high)) in enumerate(zip(values, _ranges(model, MODELS[model]),
+                                                 strict=True)):
+        if not low <= value <= high:
+            raise BadRequest(f"{model} component {k + 1} must lie in [{low:g}, {high:g}], "
+                             f"got {value:g}")
     rgb = [float(c) for c in convert(np.asarray(values), src=model, dst="rgb")]
     to_rgb, _ = explain(values, model, "rgb")
     models = {}
@@ -565,6 +571,15 @@ def colour(data: dict[str, Any], limits: Limits) -> dict[str, Any]:
     hex_code = "#" + "".join(f"{round(min(max(c, 0.0), 1.0) * 255):02x}" for c in rgb)
     return jsonable({"model": model, "values": list(values), "rgb": rgb, "hex": hex_code,
                      "to_rgb": to_rgb, "models": models})
+
+
+def _ranges(model: str, count: int) -> list[tuple[float, float]]:
+    """Return the range of each component of ``model``: hue in degrees, YIQ's I and Q signed."""
+    if model in ("hsv", "hsl"):
+        return [(0.0, 360.0), (0.0, 1.0), (0.0, 1.0)]
+    if model == "yiq":
+        return [(0.0, 1.0), (-0.6, 0.6), (-0.53, 0.53)]
+    return [(0.0, 1.0)] * count
 
 
 # ---------------------------------------------------------------------------------------------
