@@ -1,20 +1,23 @@
 // The colour page: one colour in every model, with the steps of each conversion.
 "use strict";
 
-async function convert(model, values) {
+// `moveSliders`: false while the sliders are the source (an answer arriving late must not
+// pull a slider back from where the user has moved it since).
+async function convert(model, values, moveSliders = true) {
   const answer = await api("colour", { model, values });
   if (!answer) return;
-  show(answer);
+  show(answer, moveSliders);
 }
 
-function show(answer) {
-  const [r, g, b] = answer.rgb;
+function show(answer, moveSliders) {
   document.getElementById("swatch").style.background = answer.hex;
   document.getElementById("picker").value = answer.hex;
-  for (const [id, value] of [["r", r], ["g", g], ["b", b]]) {
-    const slider = document.getElementById(id);
-    slider.value = value;
-    slider.parentElement.querySelector("output").textContent = fmt(value, 3);
+  if (moveSliders) {
+    answer.rgb.forEach((value, k) => {
+      const slider = document.getElementById("rgb"[k]);
+      slider.value = value;
+      slider.parentElement.querySelector("output").textContent = fmt(value, 3);
+    });
   }
   document.getElementById("summary").textContent =
     `${answer.model.toUpperCase()} ${fmtVector(answer.values)} = RGB ${fmtVector(answer.rgb)} = ${answer.hex}`;
@@ -35,7 +38,7 @@ function show(answer) {
 
 function fromSliders() {
   const value = (id) => Number(document.getElementById(id).value);
-  return convert("rgb", [value("r"), value("g"), value("b")]);
+  return convert("rgb", [value("r"), value("g"), value("b")], false);
 }
 
 function fromPicker() {
