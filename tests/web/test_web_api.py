@@ -11,11 +11,11 @@ import pytest
 
 pytest.importorskip("starlette", reason="the playground needs the web extra (starlette)")
 
-from PIL import Image  # noqa: E402
-from starlette.testclient import TestClient  # noqa: E402
+from PIL import Image
+from starlette.testclient import TestClient
 
-from pixelpath.web import Limits, api, create_app  # noqa: E402
-from pixelpath.web.app import PAGES  # noqa: E402
+from pixelpath.web import Limits, api, create_app
+from pixelpath.web.app import PAGES
 
 NOTCHED = [[0, 0], [6, 0], [6, 6], [0, 6], [0, 4], [4, 4], [4, 2], [0, 2]]
 PATH_LIKE_SCENES = ["../../etc/passwd", "/etc/passwd", "showcase.toml", "data/scenes/showcase",

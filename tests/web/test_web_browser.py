@@ -13,16 +13,16 @@ import pytest
 pytest.importorskip("selenium", reason="the browser tests need selenium (the test extra)")
 pytest.importorskip("uvicorn", reason="the playground needs the web extra (uvicorn)")
 
-from playground_browser import (  # noqa: E402
+from playground_browser import (
     Playground,
     artifacts_folder,
     find_chromium,
     start_chromium,
 )
-from selenium.webdriver.common.action_chains import ActionChains  # noqa: E402
-from selenium.webdriver.common.by import By  # noqa: E402
-from selenium.webdriver.common.keys import Keys  # noqa: E402
-from selenium.webdriver.support.ui import Select, WebDriverWait  # noqa: E402
+from selenium.webdriver.common.action_chains import ActionChains
+from selenium.webdriver.common.by import By
+from selenium.webdriver.common.keys import Keys
+from selenium.webdriver.support.ui import Select, WebDriverWait
 
 pytestmark = pytest.mark.slow
 

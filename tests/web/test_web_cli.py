@@ -13,7 +13,7 @@ from pixelpath.cli import main
 
 pytest.importorskip("uvicorn", reason="the playground needs the web extra (uvicorn)")
 
-from playground_browser import Playground  # noqa: E402
+from playground_browser import Playground
 
 
 def test_playground_serves_on_localhost_and_prints_its_address():

@@ -87,9 +87,11 @@ function draw() {
         stroke: "#12b76a", "stroke-width": 3, class: "sh-result",
       }));
     }
-    for (const [a, b] of sh.bridges) drawSegment(plane, a, b, "#d92d20", 5, "bridge");
   }
   if (sh && sh.stages) drawStep(plane, sh);
+  if (sh && sh.bridges && document.getElementById("show-sh").checked) {
+    for (const [a, b] of sh.bridges) drawSegment(plane, a, b, "#d92d20", 5, "bridge");
+  }
   drawHandles(plane);
 }
 
@@ -109,8 +111,8 @@ function drawGrid(plane) {
 function drawSegment(plane, a, b, colour, width, className) {
   const [x1, y1] = toScreen(a);
   const [x2, y2] = toScreen(b);
-  plane.appendChild(svg("line", { x1, y1, x2, y2, stroke: colour, "stroke-width": width,
-                                  "stroke-linecap": "round", class: className }));
+  return plane.appendChild(svg("line", { x1, y1, x2, y2, stroke: colour, "stroke-width": width,
+                                         "stroke-linecap": "round", class: className }));
 }
 
 // The current boundary (extended across the plane), S -> E and what this step emits.
@@ -118,7 +120,7 @@ function drawStep(plane, sh) {
   const stage = sh.stages[state.stage];
   if (!stage) return;
   const [a, b] = boundaryLine(sh, state.stage);
-  drawSegment(plane, a, b, "#1f6feb", 4, "boundary");
+  drawSegment(plane, a, b, "#1f6feb", 4, "boundary").setAttribute("stroke-opacity", 0.45);
   const step = stage.steps[state.step];
   if (!step) return;
   drawSegment(plane, step.s, step.e, "#1d232b", 3, "current-edge");
