@@ -35,16 +35,22 @@ class Playground:
     """``pixelpath playground`` running in a subprocess on a free port of 127.0.0.1."""
 
     def __init__(self) -> None:
+        # Standard error goes to a file: warnings (an unwritable kernel cache, say) must not
+        # stand in the way of the address on standard output, nor fill a pipe nobody reads.
+        self.errors = tempfile.TemporaryFile(mode="w+")
         self.process = subprocess.Popen(
             [sys.executable, "-m", "pixelpath", "playground", "--no-browser",
              "--time-limit", "600"],
-            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+            stdout=subprocess.PIPE, stderr=self.errors, text=True,
         )
         first_line = self.process.stdout.readline()
         match = ADDRESS.search(first_line)
         if match is None:
+            self.errors.seek(0)
+            complaint = self.errors.read()
             self.close()
-            raise RuntimeError(f"pixelpath playground did not print its address: {first_line!r}")
+            raise RuntimeError(f"pixelpath playground did not print its address: "
+                               f"{first_line!r}; standard error: {complaint!r}")
         self.url = match.group(1)
 
     def close(self) -> None:
@@ -55,6 +61,7 @@ class Playground:
             self.process.kill()
             self.process.wait()
         self.process.stdout.close()
+        self.errors.close()
 
 
 def start_chromium(browser: str, driver: str, profile: Path):

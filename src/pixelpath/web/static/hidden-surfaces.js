@@ -17,8 +17,9 @@ const refresh = serialized(async () => {
   if (!answer) return;
   const image = document.getElementById("image");
   image.src = answer.image;
-  image.width = answer.width * 2;
-  image.height = answer.height * 2;
+  const zoom = answer.width <= 320 ? 2 : 1; // small pictures shown with their pixels doubled
+  image.width = answer.width * zoom;
+  image.height = answer.height * zoom;
   document.getElementById("caption").textContent =
     `${asked.scene} by ${asked.method}, ${asked.shading} shading, ${answer.width} × ${answer.height}`;
   const figureBox = document.getElementById("figure-box");
