@@ -22,7 +22,7 @@ def python(code: str) -> str:
 
 
 def test_import_compiles_nothing_and_does_not_import_numba():
-    heavy = "('numba', 'llvmlite', 'trimesh')"
+    heavy = "('numba', 'llvmlite', 'trimesh', 'starlette', 'uvicorn')"
     code = f"import sys, pixelpath; print([m for m in sys.modules if m.startswith({heavy})])"
     loaded = python(code)
     assert loaded == "[]"

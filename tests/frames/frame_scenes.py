@@ -59,3 +59,29 @@ def counting(scene: pp.Scene) -> CountingScene:
     """Return ``scene`` as a CountingScene."""
     fields = {field.name: getattr(scene, field.name) for field in dataclasses.fields(scene)}
     return CountingScene(**fields)
+
+
+class BrokenScene(pp.Scene):
+    """What a :func:`broken_on_workers` scene becomes in a worker: frame 3 raises."""
+
+    def at_frame(self, frame: int) -> pp.Scene:
+        if frame == 3:
+            raise ZeroDivisionError("frame 3 cannot be drawn")
+        return super().at_frame(frame)
+
+
+def _rebuild_broken(fields: dict) -> BrokenScene:
+    return BrokenScene(**fields)
+
+
+@dataclasses.dataclass(frozen=True, eq=False)
+class _BreaksWhenSent(pp.Scene):
+    def __reduce__(self):
+        fields = {field.name: getattr(self, field.name) for field in dataclasses.fields(self)}
+        return _rebuild_broken, (fields,)
+
+
+def broken_on_workers(scene: pp.Scene) -> pp.Scene:
+    """Return ``scene`` as one that renders here but fails on frame 3 wherever it is sent."""
+    fields = {field.name: getattr(scene, field.name) for field in dataclasses.fields(scene)}
+    return _BreaksWhenSent(**fields)

@@ -8,12 +8,14 @@ from __future__ import annotations
 
 import os
 import signal
+import types
 
 import numpy as np
 import pytest
-from frame_scenes import animated_scene, counting, unpickled_count
+from frame_scenes import animated_scene, broken_on_workers, counting, unpickled_count
 
 import pixelpath as pp
+from pixelpath.frames import run
 from pixelpath.frames.cluster import connect, local_client
 
 
@@ -107,3 +109,22 @@ def test_a_worker_killed_mid_run_costs_no_frame(tmp_path):
         )
         assert killed and killed[0] not in client.run(os.getpid).values()  # it did die
     assert {path.name: path.read_bytes() for path in paths} == serial
+
+
+def test_a_frame_that_fails_on_a_worker_raises_its_error_here(client, tmp_path):
+    scene = broken_on_workers(animated_scene(frames=6))
+    with pytest.raises(ZeroDivisionError, match="frame 3 cannot be drawn"):
+        pp.render_frames(scene, range(6), client, out=tmp_path / "f_{frame}.png")
+    assert not (tmp_path / "f_3.png").exists()
+
+
+def test_a_frame_lost_with_workers_too_often_is_named():
+    from distributed import KilledWorker
+
+    def lost():
+        raise KilledWorker("pixelpath-frame-7", types.SimpleNamespace(address="tcp://w"), 3)
+
+    future = types.SimpleNamespace(status="error", result=lost)
+    with pytest.raises(RuntimeError, match="frame 7 was lost with a worker too many times"):
+        run._result(future, None, 7)
+    assert run._result(types.SimpleNamespace(status="finished"), b"png", 7) == b"png"

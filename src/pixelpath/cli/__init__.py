@@ -18,7 +18,7 @@ from pixelpath import __version__
 from pixelpath.cli._common import CommandError, error_console
 
 # Order shown by ``pixelpath --help``.
-COMMANDS = ("demo", "render", "ray", "info", "color", "clip", "phong", "warmup")
+COMMANDS = ("demo", "render", "ray", "info", "color", "clip", "phong", "playground", "warmup")
 
 
 def build_parser() -> argparse.ArgumentParser:

@@ -183,24 +183,42 @@ def _run_on(
     shared = client.scatter(scene, broadcast=True, hash=False)
     futures = {}
     try:
-        for function, frame, tile, args in tasks:
-            key = f"pixelpath-{run}-frame-{frame}-tile-{tile}"
-            future = client.submit(function, shared, frame, *args, key=key, pure=False)
-            futures[future] = (frame, tile)
-        for future in as_completed(futures):
+        for function, group in _by_function(tasks):
+            places = [(frame, tile) for _, frame, tile, _ in group]
+            keys = [f"pixelpath-{run}-frame-{frame}-tile-{tile}" for frame, tile in places]
+            numbers = [frame for frame, _ in places]
+            columns = zip(*(args for *_, args in group), strict=True)
+            submitted = client.map(
+                function, [shared] * len(group), numbers, *columns, key=keys, pure=False
+            )
+            futures.update(zip(submitted, places, strict=True))
+        # Results come with their futures, fetched by the client's event loop: asking each
+        # future for its result from this thread costs a round trip to that loop per task.
+        for future, result in as_completed(futures, with_results=True, raise_errors=False):
             frame, tile = futures[future]
-            frames.add(frame, tile, _result(future, frame))
+            frames.add(frame, tile, _result(future, result, frame))
             future.release()
             advance(1)
     finally:
         client.cancel([*futures, shared])
 
 
-def _result(future: Any, frame: int) -> Any:
+def _by_function(tasks: list) -> list[tuple[Callable, list]]:
+    """Group ``tasks`` by their function, keeping their order (one ``client.map`` a group)."""
+    groups: dict[Callable, list] = {}
+    for task in tasks:
+        groups.setdefault(task[0], []).append(task)
+    return list(groups.items())
+
+
+def _result(future: Any, result: Any, frame: int) -> Any:
+    """Return a finished task's ``result``; else raise its error (a lost frame explained)."""
     from distributed import KilledWorker
 
+    if future.status == "finished":
+        return result
     try:
-        return future.result()
+        return future.result()  # raises the task's exception, with its traceback
     except KilledWorker as exc:
         raise RuntimeError(
             f"frame {frame} was lost with a worker too many times ({exc}); see Dask's "
