@@ -216,7 +216,12 @@ def render(
     image = Image._from_buffers(frame.rgb, frame.depth, frame.object_id, frame.stats)
     if factor > 1:
         image = _downsample(frame, factor)
-    return (image, frame.report) if explain else image
+    if not explain:
+        return image
+    report = frame.report
+    if report is not None and factor == 1:  # the figures draw the report over its image
+        report = dataclasses.replace(report, image=image)
+    return image, report
 
 
 def _draw(module, scene: Scene, view: View, style: str, options: RenderOptions) -> Frame:

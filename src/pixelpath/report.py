@@ -22,7 +22,9 @@ True
 from __future__ import annotations
 
 import dataclasses
+import os
 from collections.abc import Mapping, Sequence
+from pathlib import Path
 from typing import Any
 
 __all__ = ["Report", "Table"]
@@ -62,6 +64,9 @@ class Report:
         The method's complete per-step data for use from Python (for example every scan
         line's counts, where the printed table shows a sample); each method's documentation
         lists its keys. Not printed.
+    image : pixelpath.Image or None
+        The picture the method rendered, attached by :func:`pixelpath.render`; the figures
+        (:meth:`figure`, :meth:`animate`) draw over it.
     """
 
     method: str
@@ -69,6 +74,82 @@ class Report:
     tables: tuple[Table, ...] = ()
     notes: tuple[str, ...] = ()
     arrays: Mapping[str, Any] = dataclasses.field(default_factory=dict)
+    image: Any = dataclasses.field(default=None, repr=False, compare=False)
+
+    def figure(self):
+        """Return the method's figure (a PIL image) drawn from this report and its image.
+
+        Warnock's subdivision coloured by how each area was decided, the painter's and the
+        BSP tree's drawing order, the octree's cells, the z-buffer's depth buffer, the
+        scan-line method's counts per line (see :mod:`pixelpath.figures.hidden_surfaces`).
+
+        Raises
+        ------
+        ValueError
+            The method has no figure, or the report has no image (it did not come from
+            ``pixelpath.render(..., explain=True)``).
+
+        Examples
+        --------
+        >>> import pixelpath as pp
+        >>> scene = pp.Scene(pp.Camera(eye=(0, 0, 4), target=(0, 0, 0), width=32, height=24),
+        ...                  [pp.Sphere((0, 0, 0), 1.0)], [pp.PointLight((3, 3, 3))])
+        >>> image, report = pp.render(scene, method="warnock", explain=True)
+        >>> report.figure().mode
+        'RGB'
+        """
+        from pixelpath.figures.methods import report_figure
+
+        return report_figure(self)
+
+    def frames(self) -> list:
+        """Return the frames of the method's animation (PIL images), in order.
+
+        The z-buffer and the scan-line method filling the image, Warnock's levels, the
+        painter's and the BSP tree's drawing order, the octree's levels.
+
+        Raises
+        ------
+        ValueError
+            The method has no animation, or the report has no image.
+
+        Examples
+        --------
+        >>> import pixelpath as pp
+        >>> scene = pp.Scene(pp.Camera(eye=(0, 0, 4), target=(0, 0, 0), width=32, height=24),
+        ...                  [pp.Sphere((0, 0, 0), 1.0)], [pp.PointLight((3, 3, 3))])
+        >>> image, report = pp.render(scene, method="warnock", explain=True)
+        >>> len(report.frames()) == report.summary["levels"]
+        True
+        """
+        from pixelpath.figures.methods import report_frames
+
+        return report_frames(self)[0]
+
+    def animate(self, path: str | os.PathLike) -> Path:
+        """Write :meth:`frames` as a looping GIF, atomically; return the path.
+
+        Examples
+        --------
+        >>> import pixelpath as pp
+        >>> scene = pp.Scene(pp.Camera(eye=(0, 0, 4), target=(0, 0, 0), width=32, height=24),
+        ...                  [pp.Sphere((0, 0, 0), 1.0)], [pp.PointLight((3, 3, 3))])
+        >>> image, report = pp.render(scene, method="scanline", explain=True)
+        >>> report.animate("fill.gif").name
+        'fill.gif'
+        """
+        from pixelpath.figures._canvas import save_animation
+        from pixelpath.figures.methods import report_frames
+
+        frames, durations = report_frames(self)
+        return save_animation(frames, durations, path, pictures=True)
+
+    def _repr_png_(self) -> bytes | None:
+        """Return the method's figure as PNG for Jupyter, or None when it has none."""
+        from pixelpath.figures._canvas import png_bytes
+        from pixelpath.figures.methods import has_figure
+
+        return png_bytes(self.figure()) if has_figure(self) else None
 
     def __str__(self) -> str:
         lines = [self.method]

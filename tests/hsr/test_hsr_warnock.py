@@ -90,7 +90,11 @@ def test_levels_of_a_near_triangle_over_a_backdrop():
         [8, 0, 2, 2, 4, 0, 16],
         [16, 0, 12, 0, 0, 4, 32],
     ]
-    level, decision = maps
+    level, decision, areas = maps
+    # Every area examined, level by level: the first is the whole 16x16 image, cut in four.
+    assert len(areas) == 1 + 4 + 4 + 8 + 16
+    assert areas[0].tolist() == [0, DECISIONS.index("subdivided"), 0, 16, 0, 16]
+    assert areas[1:5, 2:].tolist() == [[0, 8, 0, 8], [0, 8, 8, 16], [8, 16, 0, 8], [8, 16, 8, 16]]
     assert level[0, 0] == 2 and decision[0, 0] == DECISIONS.index("surrounding polygon in front")
     assert level[15, 15] == 1 and decision[15, 15] == DECISIONS.index("single polygon")
     assert (decision == DECISIONS.index("pixel level")).sum() == 4
@@ -111,7 +115,7 @@ def test_odd_and_thin_regions_are_cut_into_two_or_four():
     assert np.array_equal(inv_depth, reference.inv_depth)
     # Areas 13 x 5 -> 7 x 3 -> 4 x 2 -> 2 x 1 -> 1 x 1: at most five levels, and every pixel
     # is decided (the maps start at -1) at a level that exists, never as "subdivided".
-    level, decision = maps
+    level, decision, _ = maps
     assert len(counts) <= 5
     assert (level >= 0).all() and (level < len(counts)).all()
     assert (decision >= 0).all() and not (decision == DECISIONS.index("subdivided")).any()

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from pixelpath.cli._common import CommandError, add_command, console
+from pixelpath.cli._common import CommandError, add_command, console, error_console
 from pixelpath.raster.shading import SHADINGS
 
 
@@ -21,12 +21,15 @@ def register(subparsers: Any) -> None:
             "the whole tree: each ray with its origin and direction, each hit with t, point "
             "and normal (with the ray-sphere quadratic, its discriminant and roots where a "
             "sphere is hit), the local Phong terms and each light's shadow test, and the "
-            "reflected and refracted rays with the weights that combine them."
+            "reflected and refracted rays with the weights that combine them. --figure draws "
+            "the tree over the scene, seen by the scene's camera and from aside, each kind of "
+            "ray in its colour (eye, shadow, reflected, refracted)."
         ),
         examples=[
             "pixelpath ray scene.toml --pixel 320,240 --explain",
             "pixelpath ray showcase --pixel 300,180 --max-depth 2 --explain",
             "pixelpath ray showcase --pixel 10,10 --size 64x40",
+            "pixelpath ray showcase --pixel 272,256 --figure tree.png",
         ],
         run=run,
     )
@@ -44,6 +47,9 @@ def register(subparsers: Any) -> None:
     parser.add_argument("--no-cull", action="store_true", help="eye rays see back faces too")
     parser.add_argument("--blinn", action="store_true", help="Blinn-Phong highlights")
     parser.add_argument("--explain", action="store_true", help="print the whole tree of rays")
+    parser.add_argument(
+        "--figure", metavar="PNG", help="draw the tree of rays over the scene (a PNG image)"
+    )
 
 
 def parse_pixel(text: str) -> tuple[int, int]:
@@ -79,6 +85,8 @@ def run(args: argparse.Namespace) -> int:
         fresnel=args.fresnel,
     )
     out = console()
+    if args.figure:
+        _write_figure(tree, args.figure)
     if args.explain:
         out.print(str(tree), markup=False, highlight=False)
         return 0
@@ -92,3 +100,13 @@ def run(args: argparse.Namespace) -> int:
         highlight=False,
     )
     return 0
+
+
+def _write_figure(tree, path: str) -> None:
+    from pixelpath.figures._canvas import save
+
+    try:
+        written = save(tree.figure(), path)
+    except (ValueError, FileNotFoundError) as exc:  # a bad extension, no such folder
+        raise CommandError(str(exc)) from None
+    error_console().print(f"wrote {written}")

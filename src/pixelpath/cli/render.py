@@ -15,6 +15,7 @@ from pixelpath.cli._common import (
     progress,
 )
 from pixelpath.cli._frames import add_frame_options, run_frames, wants_frames
+from pixelpath.figures import DRAWN_METHODS
 from pixelpath.raster.shading import SHADINGS
 from pixelpath.renderer import METHOD_NAMES, STYLES
 
@@ -29,7 +30,11 @@ def register(subparsers: Any) -> None:
             "Render a scene file with a hidden-surface method and a shading mode and write the "
             "image (PNG, JPEG, ... by extension; written atomically). SCENE may also name a "
             "bundled demo scene. The camera's size comes from the file unless --size is given. "
-            "--explain prints what the method did (per scan line, per subdivision level, ...)."
+            "--explain prints what the method did (per scan line, per subdivision level, ...). "
+            "--figure and --animate draw it: the z-buffer and the scan-line method filling "
+            "the image, Warnock's areas coloured by how each was decided, the painter's and "
+            "the BSP tree's drawing order (with the tree), level by level or polygon by "
+            "polygon (filled style, no --ssaa)."
         ),
         examples=[
             "pixelpath render scene.toml -o out.png",
@@ -37,6 +42,9 @@ def register(subparsers: Any) -> None:
             "--size 1024x768",
             "pixelpath render showcase -o flat.png --shading flat --ssaa 2",
             "pixelpath render showcase -o lines.png --style hidden-line --method bsp --explain",
+            "pixelpath render showcase -o out.png --size 160x120 --method warnock --explain "
+            "--figure warnock.png --animate levels.gif",
+            "pixelpath render scene.toml -o out.png --method painter --animate order.gif",
             "pixelpath render showcase -o traced.png --method raytrace --samples 4 --max-depth 5",
             'pixelpath render showcase --frames 0:120 -o "spin/f_{frame:03d}.png"',
             "pixelpath render scene.toml -o poster.png --size 8192x8192 --tiles 4x4 --workers 2",
@@ -79,6 +87,20 @@ def register(subparsers: Any) -> None:
         "--explain",
         action="store_true",
         help="print what the method did: pipeline counts, then the method's own steps",
+    )
+    figures = parser.add_argument_group(
+        "figures (from what the method did; filled style, no --ssaa)"
+    )
+    figures.add_argument(
+        "--figure",
+        metavar="PNG",
+        help=f"draw the method's figure ({', '.join(DRAWN_METHODS)})",
+    )
+    figures.add_argument(
+        "--animate",
+        metavar="GIF",
+        help=f"write the method's animation, one frame per band, line group, level, polygon "
+        f"or node ({', '.join(DRAWN_METHODS)})",
     )
     parser.add_argument("-q", "--quiet", action="store_true", help="no progress bar or summary")
     add_frame_options(parser)
@@ -146,7 +168,7 @@ def render_to_file(
     steps = render_steps(args.method)
     compile_kernels([args.method, getattr(args, "style", "filled")], quiet=args.quiet)
     start = time.perf_counter()
-    explain = getattr(args, "explain", False)
+    explain = getattr(args, "explain", False) or wants_figures(args)
     with progress(f"rendering {label}", steps, quiet=args.quiet) as advance:
         result = render(
             scene,
@@ -170,12 +192,15 @@ def render_to_file(
 def run(args: argparse.Namespace) -> int:
     """Render the scene and write the image."""
     scene = load_scene_sized(args.scene, args.size)
+    check_figures(args)
     if wants_frames(args):
         return run_frames(args, scene)
     output = Path(args.output)
     image, report, elapsed = render_to_file(scene, output, args, Path(args.scene).stem)
-    if report is not None:
+    if report is not None and args.explain:
         explain(scene, image, report, args)
+    if report is not None:
+        write_figures(report, args)
     if not args.quiet:
         camera = scene.camera
         console().print(
@@ -183,6 +208,53 @@ def run(args: argparse.Namespace) -> int:
             f"shading) in {elapsed:.2f} s"
         )
     return 0
+
+
+def wants_figures(args: argparse.Namespace) -> bool:
+    """Whether the command asks for a figure or an animation of the method."""
+    return bool(getattr(args, "figure", None) or getattr(args, "animate", None))
+
+
+def check_figures(args: argparse.Namespace) -> None:
+    """Refuse, before rendering, figures the method does not have or cannot draw."""
+    if not wants_figures(args):
+        return
+    from pixelpath.figures.methods import METHOD_ANIMATIONS, METHOD_FIGURES
+
+    for option, table, what in (("--figure", METHOD_FIGURES, "figure"),
+                                ("--animate", METHOD_ANIMATIONS, "animation")):
+        if not getattr(args, option[2:]):
+            continue
+        if args.method not in table:
+            hint = ("; for a pixel's ray tree: pixelpath ray SCENE --pixel X,Y --figure "
+                    "tree.png" if args.method == "raytrace" else "")
+            raise CommandError(f"{option}: method {args.method!r} has no {what} (these do: "
+                               f"{', '.join(table)}){hint}")
+        if args.ssaa != 1:
+            raise CommandError(f"{option} draws over the image at its own size: leave out "
+                               "--ssaa")
+        if args.style != "filled":
+            raise CommandError(f"{option} draws the filled style: leave out --style")
+        if wants_frames(args):
+            raise CommandError(f"{option} draws one image; leave out the frame options")
+    if args.animate and Path(args.animate).suffix.lower() != ".gif":
+        raise CommandError(f"--animate writes a GIF: give a .gif path, got {args.animate!r}")
+
+
+def write_figures(report: Any, args: argparse.Namespace) -> None:
+    """Write the figure and the animation asked for."""
+    from pixelpath.figures._canvas import save
+
+    for path, write in ((args.figure, lambda p: save(report.figure(), p)),
+                        (args.animate, report.animate)):
+        if not path:
+            continue
+        try:
+            written = write(path)
+        except (ValueError, FileNotFoundError) as exc:  # a bad extension, no such folder
+            raise CommandError(str(exc)) from None
+        if not args.quiet:
+            console().print(f"wrote {written}")
 
 
 def explain(scene: Any, image: Any, report: Any, args: argparse.Namespace) -> None:

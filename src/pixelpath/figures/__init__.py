@@ -6,8 +6,11 @@ Drawn with Pillow from the algorithms' own traces (no matplotlib needed):
   Weiler-Atherton's walk; ``trace.animate("steps.gif")``, ``trace.figure()`` on the traces;
 * :mod:`pixelpath.figures.shading`: flat, Gouraud and Phong shading of one object side by
   side, and the highlight for several exponents n with the numbers of the notes' table;
-* :mod:`pixelpath.figures.methods`: the figure of each hidden-surface method, from its
-  rendered image and :class:`~pixelpath.report.Report`.
+* :mod:`pixelpath.figures.methods`: the figure and the animation of each hidden-surface
+  method, from its rendered image and :class:`~pixelpath.report.Report` (``report.figure()``,
+  ``report.animate("steps.gif")``), drawn by :mod:`pixelpath.figures.hidden_surfaces`;
+* :mod:`pixelpath.figures.ray_tree`: a pixel's ray tree drawn over the scene
+  (``ray_tree(scene, (x, y)).figure()``).
 
 Examples
 --------
@@ -16,3 +19,8 @@ Examples
 >>> len(trace.frames())
 17
 """
+
+# The hidden-surface methods that have a figure and an animation (the keys of
+# pixelpath.figures.methods.METHOD_FIGURES and METHOD_ANIMATIONS; here, so that the command
+# line names them without importing the drawing code).
+DRAWN_METHODS = ("zbuffer", "scanline", "warnock", "painter", "bsp", "octree")

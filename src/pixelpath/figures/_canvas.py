@@ -1,5 +1,8 @@
 """Drawing helpers for the teaching figures: a world-to-pixel view, colours, text, files.
 
+:class:`Board` lays out the frames of the hidden-surface and ray figures: a title, panels of a
+rendered image's size (scaled up by whole factors) and a column of numbers.
+
 Everything is drawn with Pillow in a small fixed palette, so that a figure's pixels can be
 checked by colour (a test finds the emitted points by their highlight colour) and a GIF's
 frames quantize to exactly the colours that were drawn.
@@ -10,7 +13,7 @@ from __future__ import annotations
 import io
 import itertools
 import os
-from collections.abc import Iterable, Sequence
+from collections.abc import Sequence
 from functools import cache
 from pathlib import Path
 
@@ -36,10 +39,35 @@ COLOURS = {
     "emitted": (225, 25, 35),
     "row": (255, 233, 170),
     "contact": (200, 0, 160),
+    # How Warnock decided an area (pixelpath.hsr.warnock.DECISIONS).
+    "empty area": (232, 236, 244),
+    "single area": (150, 210, 160),
+    "in front area": (140, 175, 235),
+    "pixel area": (235, 110, 110),
+    "area edge": (70, 70, 80),
+    # Objects of the hidden-surface figures, in turn.
+    "object 1": (95, 140, 215),
+    "object 2": (230, 160, 60),
+    "object 3": (110, 185, 120),
+    "object 4": (200, 100, 160),
+    "object 5": (150, 120, 210),
+    "object 6": (90, 180, 190),
+    # The rays of a ray tree (pixelpath.figures.ray_tree).
+    "primary ray": (20, 90, 230),
+    "shadow ray": (240, 170, 0),
+    "reflected ray": (0, 170, 90),
+    "refracted ray": (170, 40, 200),
+    "blocked ray": (120, 120, 120),
 }
 
 TEXT_SIZE = 13
 LINE_HEIGHT = 17
+# The layout of a Board: margins, the gap between panels, the height of the title and captions
+# above them, the width of the column of numbers right of them, and the size pictures are
+# scaled up towards.
+MARGIN, GAP, HEADER = 10, 16, 64
+COLUMN = 250
+PANEL = 320
 
 
 @cache
@@ -98,6 +126,9 @@ class Sketch:
     def __init__(self, width: int, height: int):
         self.image = Image.new("RGB", (width, height), COLOURS["background"])
         self.draw = ImageDraw.Draw(self.image)
+        # Text without antialiasing: its pixels keep the palette's exact colours, so GIF
+        # frames stay exact and compress to a fraction of the size of shaded text.
+        self.draw.fontmode = "1"
 
     def fill(self, view: View, points: np.ndarray, colour: str) -> None:
         """Fill a polygon (nothing for fewer than 3 vertices)."""
@@ -173,6 +204,112 @@ class Sketch:
         return y
 
 
+def picture_scale(width: int, height: int) -> int:
+    """Return the whole factor a ``width`` × ``height`` image is scaled up by in the figures.
+
+    Examples
+    --------
+    >>> from pixelpath.figures._canvas import picture_scale
+    >>> picture_scale(160, 120), picture_scale(16, 16), picture_scale(640, 480)
+    (2, 20, 1)
+    """
+    return max(1, PANEL // max(width, height))
+
+
+class PixelPanel:
+    """Maps pixel coordinates of the rendered image (x right, y down) into one panel."""
+
+    def __init__(self, left: int, top: int, scale: int, width: int, height: int):
+        self.left, self.top, self.scale = left, top, scale
+        self.width, self.height = width, height
+
+    def xy(self, points: np.ndarray) -> list[tuple[float, float]]:
+        """Board coordinates of image points, as ImageDraw takes them."""
+        points = np.asarray(points, dtype=np.float64).reshape(-1, 2)
+        return [(self.left + self.scale * x, self.top + self.scale * y) for x, y in points]
+
+    def box(self, first_row: int, stop_row: int, first_col: int, stop_col: int) -> list[int]:
+        """Return the board rectangle [x0, y0, x1, y1] (inclusive) of a block of pixels."""
+        s = self.scale
+        return [self.left + s * first_col, self.top + s * first_row,
+                self.left + s * stop_col - 1, self.top + s * stop_row - 1]
+
+
+class Board:
+    """A frame: a title and a line under it, captioned panels, a column of numbers.
+
+    Panel ``k`` starts at ``(MARGIN + k * (width * scale + GAP), HEADER)`` for an image of
+    ``width`` pixels scaled by ``scale = picture_scale(width, height)``.
+    """
+
+    def __init__(self, shape: tuple[int, int], captions: Sequence[str], title: str,
+                 detail: str = ""):
+        height, width = shape
+        self.scale = picture_scale(width, height)
+        pw, ph = width * self.scale, height * self.scale
+        panels = len(captions)
+        self.column_x = MARGIN + panels * (pw + GAP)
+        self.sketch = Sketch(self.column_x + COLUMN, max(HEADER + ph, HEADER + 14 * LINE_HEIGHT)
+                             + MARGIN)
+        self.panels = [
+            PixelPanel(MARGIN + k * (pw + GAP), HEADER, self.scale, width, height)
+            for k in range(panels)
+        ]
+        self.sketch.text(MARGIN, 6, title)
+        self.sketch.text(MARGIN, 6 + LINE_HEIGHT, detail, colour="muted")
+        for panel, caption in zip(self.panels, captions, strict=True):
+            self.sketch.text(panel.left, HEADER - LINE_HEIGHT - 2, caption)
+        self.y = HEADER
+
+    def paste(self, panel: int, rgb: np.ndarray) -> None:
+        """Place an (H, W, 3) uint8 picture in a panel, each pixel a square block."""
+        self.place(panel, scaled(rgb, self.scale))
+
+    def place(self, panel: int, picture: Image.Image) -> None:
+        """Place a picture of the panel's size (from :meth:`canvas`) in a panel."""
+        target = self.panels[panel]
+        self.sketch.image.paste(picture, (target.left, target.top))
+
+    def canvas(self, rgb: np.ndarray | None = None) -> tuple[Sketch, PixelPanel]:
+        """Return a sketch of one panel's size (white, or ``rgb`` scaled up) and its mapping.
+
+        Drawing there and placing it keeps what reaches past the panel out of the others.
+        """
+        height, width = self.panels[0].height, self.panels[0].width
+        sketch = Sketch(width * self.scale, height * self.scale)
+        if rgb is not None:
+            sketch.image.paste(scaled(rgb, self.scale), (0, 0))
+        return sketch, PixelPanel(0, 0, self.scale, width, height)
+
+    def line(self, text: str, colour: str = "text", swatch: str | None = None) -> None:
+        """Write a line in the column of numbers, with a colour swatch before it if asked."""
+        x = self.column_x
+        if swatch is not None:
+            self.sketch.draw.rectangle([x, self.y + 2, x + 11, self.y + 13],
+                                       fill=COLOURS[swatch], outline=COLOURS["area edge"])
+            x += 18
+        self.sketch.text(x, self.y, text, colour=colour)
+        self.y += LINE_HEIGHT
+
+    def skip(self) -> None:
+        """Leave half a line of space in the column of numbers."""
+        self.y += LINE_HEIGHT // 2
+
+    @property
+    def image(self) -> Image.Image:
+        """The frame drawn so far."""
+        return self.sketch.image
+
+
+def scaled(rgb: np.ndarray, scale: int) -> Image.Image:
+    """Return an (H, W, 3) uint8 picture scaled up by a whole factor, nearest neighbour."""
+    picture = Image.fromarray(np.ascontiguousarray(rgb, dtype=np.uint8), "RGB")
+    if scale > 1:
+        picture = picture.resize((picture.width * scale, picture.height * scale),
+                                 Image.Resampling.NEAREST)
+    return picture
+
+
 def paste_row(images: Sequence[Image.Image], captions: Sequence[str], gap: int = 8,
               caption_height: int = 22) -> Image.Image:
     """Place pictures side by side on white, each with a caption above it."""
@@ -208,21 +345,33 @@ def paste_grid(images: Sequence[Image.Image], captions: Sequence[str],
     return grid
 
 
-def _palette_image() -> Image.Image:
-    """Return a 'P' image whose palette is the figure colours, their half-tones and greys."""
+def _palette_image(picture: Image.Image | None = None) -> Image.Image:
+    """Return a 'P' image whose palette is the figure colours, their half-tones and greys.
+
+    With a ``picture``, the free entries are filled with its own colours (median cut).
+    """
     entries = list(COLOURS.values())
     entries += [(v, v, v) for v in range(0, 256, 5)]
     # Half-tones of each colour on white: antialiased text and thin lines land near them.
     entries += [tuple((c + 255) // 2 for c in colour) for colour in COLOURS.values()]
+    if picture is not None:
+        adaptive = picture.convert("RGB").quantize(256 - len(entries), dither=Image.Dither.NONE)
+        colours = adaptive.getpalette()[: 3 * len(adaptive.getcolors())]
+        entries += [tuple(colours[k : k + 3]) for k in range(0, len(colours), 3)]
     flat = [c for entry in entries for c in entry]
     palette = Image.new("P", (1, 1))
     palette.putpalette(flat + [0] * (768 - len(flat)))
     return palette
 
 
-def gif_bytes(frames: Iterable[Image.Image], durations: Sequence[int]) -> bytes:
-    """Encode RGB frames as a looping GIF in the figure palette (no dithering)."""
-    palette = _palette_image()
+def gif_bytes(frames: Sequence[Image.Image], durations: Sequence[int],
+              pictures: bool = False) -> bytes:
+    """Encode RGB frames as a looping GIF in the figure palette (no dithering).
+
+    With ``pictures`` (frames that hold rendered images), the palette's free entries take the
+    last frame's most representative other colours; the figure colours stay exact.
+    """
+    palette = _palette_image(frames[-1] if pictures else None)
     quantized = [frame.quantize(palette=palette, dither=Image.Dither.NONE) for frame in frames]
     buffer = io.BytesIO()
     quantized[0].save(
@@ -259,12 +408,12 @@ def save(image: Image.Image, path: str | os.PathLike) -> Path:
 
 
 def save_animation(frames: Sequence[Image.Image], durations: Sequence[int],
-                   path: str | os.PathLike) -> Path:
-    """Write frames as an animated GIF, atomically."""
+                   path: str | os.PathLike, pictures: bool = False) -> Path:
+    """Write frames as an animated GIF, atomically (``pictures``: see :func:`gif_bytes`)."""
     path = Path(path)
     if path.suffix.lower() != ".gif":
         raise ValueError(f"animations are written as GIF; give a .gif path, got {str(path)!r}")
-    return _write(path, gif_bytes(frames, durations))
+    return _write(path, gif_bytes(frames, durations, pictures))
 
 
 def _write(path: Path, data: bytes) -> Path:

@@ -198,6 +198,12 @@ def render_frame(
     Returns
     -------
     Frame
+        With ``options.explain``, its report describes the tree and the traversal;
+        ``report.arrays`` holds the painter's keys (``"order"``, ``"triangles"``,
+        ``"object"``, ``"split"``: here a fragment cut by a splitting plane), the node of
+        every drawable triangle (``"node"``), the tree's back and front children
+        (``"children"``, -1 for none) and whether the eye is in front of each node's plane
+        (``"eye in front"``).
 
     Examples
     --------
@@ -235,6 +241,7 @@ def render_frame(
     report = None
     if options.explain:
         report = _report(tree, reused, prepared, drawing, visited, drawn, visibility)
+        report.arrays.update(_order_arrays(tree, prepared, drawing, view, order[:drawn]))
     return pipeline.shade(prepared, scene, view, visibility, options, report)
 
 
@@ -496,6 +503,38 @@ def _node_planes_index(tree: BSPTree) -> np.ndarray:
     infinite = tree.node_object >= 0
     index[infinite] = np.searchsorted(planes, tree.node_object[infinite])
     return index
+
+
+def _order_arrays(tree: BSPTree, prepared: pipeline.Prepared, drawing: _Drawing, view: View,
+                  order: np.ndarray) -> dict[str, np.ndarray]:
+    """Return the drawing order and the tree's shape for the figures (see render_frame)."""
+    from pixelpath.hsr.painter import order_arrays
+
+    count = len(drawing.geometry.triangles)
+    node_of = np.full(count, -1, dtype=np.intp)
+    for lists in ((tree.item_first, tree.item_count, tree.items),
+                  (drawing.extra_first, drawing.extra_count, drawing.extra_items)):
+        owners, members = _members(*lists)
+        node_of[members] = owners
+    source = prepared.source
+    fragment = source < len(tree.fragments)
+    cut = np.zeros(len(source), dtype=bool)
+    cut[fragment] = (tree.fragments[source[fragment]] >= tree.cut_from).any(axis=1)
+    eye = np.asarray(view.camera.eye, dtype=np.float64)
+    arrays = order_arrays(prepared, view, order, cut)
+    arrays.update({
+        "node": node_of[source],
+        "children": tree.children.copy(),
+        "eye in front": tree.node_planes[:, :3] @ eye + tree.node_planes[:, 3] >= 0,
+    })
+    return arrays
+
+
+def _members(first: np.ndarray, count: np.ndarray, items: np.ndarray):
+    """(owner, item) pairs of per-node lists ``items[first[n] : first[n] + count[n]]``."""
+    owner = np.repeat(np.arange(len(count)), count)
+    starts = np.repeat(first - (np.cumsum(count) - count), count)
+    return owner, items[np.arange(len(owner)) + starts]
 
 
 def _report(tree, reused, prepared, drawing, visited, drawn, visibility):

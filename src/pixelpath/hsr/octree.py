@@ -47,12 +47,21 @@ from pixelpath.hsr import pipeline
 from pixelpath.renderer import Frame, RenderOptions, View
 from pixelpath.scene import Scene
 
-__all__ = ["LEAF_SIZE", "MAX_DEPTH", "STEPS", "Octree", "build_octree", "front_to_back",
-           "render_frame"]
+__all__ = ["LEAF_SIZE", "MAX_DEPTH", "OUTCOMES", "STEPS", "Octree", "build_octree",
+           "front_to_back", "render_frame"]
 
 STEPS = pipeline.FRONT_STEPS + 2 + pipeline.SHADE_SLICES
 LEAF_SIZE = 32  # a cell holding more triangles is split
 MAX_DEPTH = 12  # levels below the root at most
+# What the traversal did with a node (``report.arrays["cell outcome"]``), codes 0..4 of
+# pixelpath.hsr._kernels.octree's OUTCOME_* (a band reaching it more than once keeps the most).
+OUTCOMES = (
+    "not reached",
+    "culled (outside the view)",
+    "skipped (its pixels decided)",
+    "entered",
+    "drawn (a leaf)",
+)
 # A cell is not split when its children would hold more than this many times its triangles
 # between them: its triangles are large for it, and splitting would only copy them.
 MAX_GROWTH = 2
@@ -226,6 +235,11 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     Returns
     -------
     Frame
+        With ``options.explain``, its report counts what the traversal did per level;
+        ``report.arrays`` holds, per node of the tree, its cell's screen footprint
+        (``"cell footprint"``: x min, x max, y min, y max in pixels of the region), its level
+        (``"cell level"``), whether it is a leaf (``"cell is leaf"``) and the most any band
+        did with it (``"cell outcome"``: an index into ``OUTCOMES``).
 
     Examples
     --------
@@ -242,15 +256,22 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     octree = build_octree(prepared, view, LEAF_SIZE, MAX_DEPTH)
     options.progress(1)
     visibility = pipeline.visibility_buffers(view)
-    stats = _traverse(octree, prepared, view, visibility)
+    stats, visits = _traverse(octree, prepared, view, visibility, options.explain)
     options.progress(1)
-    report = _report(octree, prepared, visibility, stats) if options.explain else None
+    report = None
+    if options.explain:
+        report = _report(octree, prepared, visibility, stats)
+        report.arrays.update(_cell_arrays(octree, view, *visits))
     return pipeline.shade(prepared, scene, view, visibility, options, report)
 
 
 def _traverse(octree: Octree, prepared: pipeline.Prepared, view: View,
-              visibility: pipeline.Visibility) -> np.ndarray:
-    """Run the front-to-back traversal band by band; return the counts (bands, levels, k)."""
+              visibility: pipeline.Visibility, record: bool = False):
+    """Run the front-to-back traversal band by band.
+
+    Returns the counts (bands, levels, k) and the cells' footprints with what each band did
+    with each node (``record``; else an empty table).
+    """
     import numba
 
     from pixelpath.hsr._kernels import octree as kernels
@@ -269,10 +290,11 @@ def _traverse(octree: Octree, prepared: pipeline.Prepared, view: View,
     scan = kernels.Scan(prepared.setup, prepared.rows, prepared.triangles, prepared.positions)
     work = (np.empty(shape, dtype=np.uint8), np.empty(shape, dtype=np.int32))
     eye = kernel_array(camera.eye)
+    outcomes = np.zeros((count, octree.nodes if record else 0), dtype=np.int8)
 
     def run(bands: np.ndarray) -> None:
         kernels.traverse(tree, rects, outside, eye, scan, bands, view.x0, view.y0, *visibility,
-                         *work, stats)
+                         *work, stats, outcomes)
 
     # Bands are independent: threads take them one at a time (the kernel releases the GIL).
     workers = min(numba.get_num_threads(), count)
@@ -281,7 +303,19 @@ def _traverse(octree: Octree, prepared: pipeline.Prepared, view: View,
     else:
         with concurrent.futures.ThreadPoolExecutor(workers) as pool:
             list(pool.map(run, np.array_split(order, count)))
-    return stats
+    return stats, (rects, outcomes)
+
+
+def _cell_arrays(octree: Octree, view: View, rects: np.ndarray,
+                 outcomes: np.ndarray) -> dict[str, np.ndarray]:
+    """Return the cells as the figures read them (see :func:`render_frame`)."""
+    footprints = rects - np.array([view.x0, view.x0, view.y0, view.y0])
+    return {
+        "cell footprint": footprints,
+        "cell level": octree.levels.copy(),
+        "cell is leaf": octree.is_leaf.copy(),
+        "cell outcome": outcomes.max(axis=0, initial=0),
+    }
 
 
 def _report(octree: Octree, prepared: pipeline.Prepared, visibility: pipeline.Visibility,

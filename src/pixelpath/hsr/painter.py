@@ -73,6 +73,7 @@ class DepthSort(NamedTuple):
     order: np.ndarray  # drawable triangles, back to front
     counts: np.ndarray  # the kernel's counts (see pixelpath.hsr._kernels.painter)
     sorted_count: int  # triangles that went through the sort
+    pieces_from: int  # drawable triangles from this index on are pieces made by splitting
 
 
 def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
@@ -90,6 +91,11 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     Returns
     -------
     Frame
+        With ``options.explain``, its report counts the comparisons and the tests that settled
+        them; ``report.arrays`` holds the triangles painted, back to front (``"order"``), and
+        per drawable triangle its screen corners (``"triangles"``, (T, 3, 2) pixels of the
+        region), its object (``"object"``) and whether it is a piece made by splitting
+        (``"split"``).
 
     Examples
     --------
@@ -107,7 +113,7 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     options.progress(1)
     visibility = pipeline.paint(result.prepared, view, result.order)
     options.progress(1)
-    report = _report(result, visibility) if options.explain else None
+    report = _report(result, view, visibility) if options.explain else None
     return pipeline.shade(result.prepared, scene, view, visibility, options, report)
 
 
@@ -142,7 +148,7 @@ def depth_sort(prepared: pipeline.Prepared, view: View) -> DepthSort:
     order = np.concatenate([np.flatnonzero(~sortable), number[order]])
     extended = _with_pieces(prepared, view, attrs[:count], screen[:count], pieces,
                             origin[sorted_count:])
-    return DepthSort(extended, order, counts, sorted_count)
+    return DepthSort(extended, order, counts, sorted_count, drawable)
 
 
 def _triangle_planes(prepared: pipeline.Prepared, camera: Camera) -> tuple[np.ndarray, float]:
@@ -305,8 +311,8 @@ def _corners(values, name: str) -> np.ndarray:
     return array
 
 
-def _report(result: DepthSort, visibility: pipeline.Visibility):
-    """Report comparisons, the tests that settled them, moves and splits."""
+def _report(result: DepthSort, view: View, visibility: pipeline.Visibility):
+    """Report comparisons, the tests that settled them, moves and splits; the order drawn."""
     from pixelpath.hsr._kernels import painter as kernels
     from pixelpath.report import Report, Table
 
@@ -339,4 +345,14 @@ def _report(result: DepthSort, visibility: pipeline.Visibility):
             "test 1 also ends each scan: the list is sorted by farthest depth, so the first Q "
             "entirely nearer than P settles every polygon after it",
         ),
+        arrays=order_arrays(prepared, view, result.order,
+                            np.arange(len(prepared.triangles)) >= result.pieces_from),
     )
+
+
+def order_arrays(prepared: pipeline.Prepared, view: View, order: np.ndarray,
+                 split: np.ndarray) -> dict[str, np.ndarray]:
+    """Return the drawing order as the figures read it (see :func:`render_frame`)."""
+    corners = prepared.screen[prepared.triangles, :2] - np.array([view.x0, view.y0])
+    return {"order": np.asarray(order, dtype=np.intp), "triangles": corners,
+            "object": prepared.info[:, 0].copy(), "split": split}

@@ -87,7 +87,9 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
         were decided each way (``DECISIONS``) and the polygons classified. ``report.arrays``
         holds the same per level (key ``"levels"``, one row per level, ``LEVEL_COLUMNS``), and,
         per pixel of the region, the level at which it was decided (``"level"``) and how
-        (``"decision"``, an index into ``DECISIONS``).
+        (``"decision"``, an index into ``DECISIONS``), and every area examined (``"areas"``,
+        rows of level, decision, first and stop row, first and stop column, in pixels of the
+        region).
 
     Examples
     --------
@@ -130,7 +132,7 @@ def _subdivide(prepared: pipeline.Prepared, view: View, explain: bool):
     offsets = np.array([0, len(candidates)], dtype=np.intp)
     shape = (view.height, view.width)
     maps = (np.full(shape, -1, np.int8), np.full(shape, -1, np.int8)) if explain else None
-    counts, sizes = [], []
+    counts, sizes, examined = [], [], []
     while len(areas):
         kept = np.empty(len(candidates), dtype=np.bool_)
         decisions = np.empty(len(areas), dtype=np.int8)
@@ -145,10 +147,26 @@ def _subdivide(prepared: pipeline.Prepared, view: View, explain: bool):
                       int((areas[:, 1] - areas[:, 0]).max())))
         if maps is not None:
             kernels.mark_areas(areas, decisions, len(counts) - 1, view.x0, view.y0, *maps)
+            examined.append(_area_rows(areas, decisions, len(counts) - 1, view))
         areas, offsets, candidates = kernels.subdivide(areas, offsets, candidates, kept,
                                                        decisions)
     counts = np.array(counts, dtype=np.intp).reshape(-1, len(LEVEL_COLUMNS))
+    if maps is not None:
+        maps = (*maps, np.concatenate(examined) if examined else np.empty((0, 6), np.intp))
     return visibility, (counts, sizes), maps
+
+
+def _area_rows(areas: np.ndarray, decisions: np.ndarray, level: int, view: View) -> np.ndarray:
+    """Rows (level, decision, first row, stop row, first column, stop column) of one level.
+
+    Rows and columns count from the region's top-left pixel.
+    """
+    rows = np.empty((len(areas), 6), dtype=np.intp)
+    rows[:, 0] = level
+    rows[:, 1] = decisions
+    rows[:, 2:4] = areas[:, 0:2] - view.y0
+    rows[:, 4:6] = areas[:, 2:4] - view.x0
+    return rows
 
 
 def _report(prepared: pipeline.Prepared, visibility: pipeline.Visibility, levels, maps):
@@ -186,5 +204,5 @@ def _report(prepared: pipeline.Prepared, visibility: pipeline.Visibility, levels
             "per level: areas examined; decided empty, by a single polygon, by a surrounding "
             "polygon in front, subdivided, or at pixel level; polygons classified (tested)",
         ),
-        arrays={"levels": counts, "level": maps[0], "decision": maps[1]},
+        arrays={"levels": counts, "level": maps[0], "decision": maps[1], "areas": maps[2]},
     )

@@ -43,6 +43,9 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     Returns
     -------
     Frame
+        With ``options.explain``, its report counts the depth tests; ``report.arrays["depth
+        tests"]`` holds, per pixel of the region, how many triangles were tested there (its
+        depth complexity).
 
     Examples
     --------
@@ -99,4 +102,5 @@ def _report(prepared: pipeline.Prepared, view: View, visibility: pipeline.Visibi
             "image space: every pixel of every triangle is compared with the buffer's 1/w "
             "and replaces it when nearer",
         ),
+        arrays={"depth tests": tests},
     )

@@ -206,6 +206,30 @@ class RayTree:
     def __str__(self) -> str:
         return "\n".join(_describe_tree(self))
 
+    def figure(self, overview: Any = None):
+        """Return the tree drawn over the scene, by its camera and from aside (a PIL image).
+
+        Each kind of ray has its colour (see :mod:`pixelpath.figures.ray_tree`); ``overview``
+        is the second panel's camera (by default one looking across the view).
+
+        Examples
+        --------
+        >>> import pixelpath as pp
+        >>> from pixelpath.raytrace import ray_tree
+        >>> scene = pp.Scene(pp.Camera(eye=(0, 0, 5), target=(0, 0, 0), width=40, height=30),
+        ...                  [pp.Sphere((0, 0, 0), 1)], lights=[pp.PointLight((2, 3, 4))])
+        >>> ray_tree(scene, (20, 15)).figure().mode
+        'RGB'
+        """
+        from pixelpath.figures.ray_tree import ray_tree_figure
+
+        return ray_tree_figure(self, overview)
+
+    def _repr_png_(self) -> bytes:
+        from pixelpath.figures._canvas import png_bytes
+
+        return png_bytes(self.figure())
+
 
 def ray_tree(
     scene: Scene,

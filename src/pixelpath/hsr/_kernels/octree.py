@@ -48,6 +48,12 @@ DRAWN = 5  # triangles scan-converted in leaves of this level
 TESTED = 6  # pixel samples depth-tested in leaves of this level
 STAT_COLUMNS = 7
 
+# What a band's traversal did with a node (recorded for the figures when explaining).
+OUTCOME_CULLED = 1  # outside the view frustum or the region
+OUTCOME_SKIPPED = 2  # every pixel of its footprint already decided: skipped with its subtree
+OUTCOME_ENTERED = 3  # an inner node entered: its children were taken front to back
+OUTCOME_DRAWN = 4  # a leaf whose triangles were scan-converted
+
 
 # Columns of a node's cell (float64) and of its links (intp).
 SIDE = 3  # cells: x, y, z of the minimum corner, then the side of the cube
@@ -342,7 +348,7 @@ class Scan(NamedTuple):
 
 @njit
 def traverse(tree, rects, outside, eye, scan, bands, x0, y0, inv_depth, triangle_id, decided,
-             stamp, stats):
+             stamp, stats, outcomes):
     """Decide the visible triangle of every pixel of the listed bands, front to back.
 
     Each band of ``BAND_ROWS`` rows of the region (image pixel (x0 + i, y0 + j) at buffer
@@ -351,16 +357,18 @@ def traverse(tree, rects, outside, eye, scan, bands, x0, y0, inv_depth, triangle
     ``prange``) and the result does not depend on the threads. Fills ``inv_depth`` (1/w, 0
     where none) and ``triangle_id`` (-1 where none) like the z-buffer would; ``decided``
     (h, w) uint8 and ``stamp`` (h, w) int32 are work buffers; ``stats`` (bands, levels,
-    STAT_COLUMNS) int64 receives each band's counts per tree level.
+    STAT_COLUMNS) int64 receives each band's counts per tree level. ``outcomes`` (bands, N)
+    int8 receives what each band did with each node (the ``OUTCOME_*`` codes, 0 where it did
+    not reach it) when it has a column per node; (bands, 0) records nothing (explain only).
     """
     for k in range(bands.shape[0]):
         _traverse_band(tree, rects, outside, eye, scan, bands[k], x0, y0, inv_depth,
-                       triangle_id, decided, stamp, stats[bands[k]])
+                       triangle_id, decided, stamp, stats[bands[k]], outcomes[bands[k]])
 
 
 @njit
 def _traverse_band(tree, rects, outside, eye, scan, band, x0, y0, inv_depth, triangle_id,
-                   decided, stamp, stats):
+                   decided, stamp, stats, outcome):
     height, width = inv_depth.shape
     first = y0 + band * BAND_ROWS
     stop = min(first + BAND_ROWS, y0 + height)
@@ -386,6 +394,7 @@ def _traverse_band(tree, rects, outside, eye, scan, band, x0, y0, inv_depth, tri
         c0, c1, r0, r1 = _pixel_range(rects[node], x0, x0 + width, y0, y0 + height)
         if outside[node] or c0 >= c1 or r0 >= r1:
             level[CULLED] += 1
+            _record(outcome, node, OUTCOME_CULLED)
             continue
         r0, r1 = max(r0, first), min(r1, stop)
         if r0 >= r1:
@@ -393,16 +402,26 @@ def _traverse_band(tree, rects, outside, eye, scan, band, x0, y0, inv_depth, tri
             continue
         if not _any_undecided(undecided, c0 - x0, c1 - x0, r0 - first, r1 - first):
             level[SKIPPED] += 1
+            _record(outcome, node, OUTCOME_SKIPPED)
             continue
         level[VISITED] += 1
         if not tree.links[node, LEAF]:
+            _record(outcome, node, OUTCOME_ENTERED)
             top = _push_children(tree, node, eye, stack, top)
             continue
+        _record(outcome, node, OUTCOME_DRAWN)
         visit += np.int32(1)
         n_touched = _draw_leaf(tree, node, scan, c0, c1, r0, r1, x0, y0, inv_depth,
                                triangle_id, decided, stamp, visit, touched, level)
         level[DECIDED] += _decide(tree, node, scan, touched, n_touched, x0, y0, first,
                                   triangle_id, decided, undecided)
+
+
+@njit(inline="always")
+def _record(outcome, node, code):
+    """Note what a band did with a node, when recording (explain only)."""
+    if outcome.shape[0]:
+        outcome[node] = code
 
 
 @njit
@@ -538,4 +557,4 @@ def warmup() -> None:
     stats = np.zeros((1, 3, STAT_COLUMNS), dtype=np.int64)
     traverse(tree, rects, outside, eye, scan, np.zeros(1, dtype=np.intp), 0, 0,
              np.empty(shape), np.empty(shape, dtype=np.int32), np.empty(shape, dtype=np.uint8),
-             np.empty(shape, dtype=np.int32), stats)
+             np.empty(shape, dtype=np.int32), stats, np.zeros((1, 0), dtype=np.int8))
