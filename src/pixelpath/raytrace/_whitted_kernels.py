@@ -209,81 +209,76 @@ def primary_direction(camera, px, py, width, height):
     )
 
 
-@njit(inline="always")
-def nearest_hit(scene, ox, oy, oz, dx, dy, dz, t_min, t_max, primary_cull, work):
-    """Return (t, primitive kind, index, w1, w2) of the nearest hit; index MISS when none.
+@njit
+def nearest_sphere(spheres, ox, oy, oz, dx, dy, dz, t_min, t_max, cull):
+    """Return (t, index) of the nearest sphere hit in (t_min, t_max); (t_max, MISS) if none.
 
-    ``primary_cull`` skips what back-face culling removes for the eye's rays.
+    With ``cull``, a sphere is hit only where the ray enters it.
     """
-    spheres = scene.spheres  # each field read once: a read is a reference count update
-    planes = scene.planes
-    plane_back = scene.plane_back
     best_t = t_max
-    kind = SPHERE
     index = MISS
-    w1 = 0.0
-    w2 = 0.0
     for s in range(spheres.shape[0]):
         t0, t1 = sphere_roots(
             ox, oy, oz, dx, dy, dz, spheres[s, 0], spheres[s, 1], spheres[s, 2], spheres[s, 3]
         )
-        t = sphere_t(t0, t1, t_min, best_t, primary_cull)
+        t = sphere_t(t0, t1, t_min, best_t, cull)
         if t < best_t:
-            best_t, kind, index = t, SPHERE, s
+            best_t, index = t, s
+    return best_t, index
+
+
+@njit
+def nearest_plane(planes, plane_back, ox, oy, oz, dx, dy, dz, t_min, t_max, cull):
+    """Return (t, index) of the nearest plane hit in (t_min, t_max); (t_max, MISS) if none.
+
+    With ``cull``, planes with ``plane_back`` set are ignored.
+    """
+    best_t = t_max
+    index = MISS
     for p in range(planes.shape[0]):
-        if primary_cull and plane_back[p]:
+        if cull and plane_back[p]:
             continue
         t = plane_t(
             ox, oy, oz, dx, dy, dz, planes[p, 0], planes[p, 1], planes[p, 2], planes[p, 3],
             planes[p, 4], planes[p, 5],
         )
         if t_min < t < best_t:
-            best_t, kind, index = t, PLANE, p
-    t, i, b1, b2, nodes, tests = closest_triangle(
-        scene.bounds, scene.links, scene.tris, scene.tri_source, scene.tri_back, primary_cull,
-        ox, oy, oz, dx, dy, dz, t_min, best_t, work.stack, work.stack_t,
-    )
-    counts = work.counts
-    counts[COUNT_NODES] += nodes
-    counts[COUNT_TESTS] += tests
-    if i != MISS:
-        best_t, kind, index, w1, w2 = t, TRIANGLE, i, b1, b2
-    return best_t, kind, index, w1, w2
+            best_t, index = t, p
+    return best_t, index
 
 
-@njit(inline="always")
-def light_let_through(scene, ox, oy, oz, dx, dy, dz, t_max, work):
+@njit
+def light_let_through(spheres, sphere_object, planes, plane_object, materials, bounds, links,
+                      tris, tri_pass, tri_object, ox, oy, oz, dx, dy, dz, t_max, stack, counts):
     """Return (fraction of light let through, blocking object or MISS) along a shadow ray."""
     through = 1.0
-    for s in range(scene.spheres.shape[0]):
+    for s in range(spheres.shape[0]):
         t0, t1 = sphere_roots(
-            ox, oy, oz, dx, dy, dz, scene.spheres[s, 0], scene.spheres[s, 1],
-            scene.spheres[s, 2], scene.spheres[s, 3],
+            ox, oy, oz, dx, dy, dz, spheres[s, 0], spheres[s, 1], spheres[s, 2], spheres[s, 3],
         )
-        obj = scene.sphere_object[s]
+        obj = sphere_object[s]
         for t in (t0, t1):
             if 0.0 < t < t_max:
-                through *= scene.materials[obj, TRANSPARENCY]
+                through *= materials[obj, TRANSPARENCY]
                 if through == 0.0:
                     return 0.0, obj
-    for p in range(scene.planes.shape[0]):
+    for p in range(planes.shape[0]):
         t = plane_t(
-            ox, oy, oz, dx, dy, dz, scene.planes[p, 0], scene.planes[p, 1], scene.planes[p, 2],
-            scene.planes[p, 3], scene.planes[p, 4], scene.planes[p, 5],
+            ox, oy, oz, dx, dy, dz, planes[p, 0], planes[p, 1], planes[p, 2], planes[p, 3],
+            planes[p, 4], planes[p, 5],
         )
         if 0.0 < t < t_max:
-            obj = scene.plane_object[p]
-            through *= scene.materials[obj, TRANSPARENCY]
+            obj = plane_object[p]
+            through *= materials[obj, TRANSPARENCY]
             if through == 0.0:
                 return 0.0, obj
     fraction, blocker, nodes, tests = any_triangle(
-        scene.bounds, scene.links, scene.tris, scene.tri_pass, ox, oy, oz, dx, dy, dz, 0.0,
-        t_max, work.stack,
+        bounds, links, tris, tri_pass, ox, oy, oz, dx, dy, dz, 0.0, t_max, stack,
     )
-    work.counts[COUNT_NODES] += nodes
-    work.counts[COUNT_TESTS] += tests
+    counts[COUNT_NODES] += nodes
+    counts[COUNT_TESTS] += tests
     if blocker != MISS:
-        return 0.0, scene.tri_object[blocker]
+        return 0.0, tri_object[blocker]
     return through * fraction, MISS
 
 
@@ -360,7 +355,11 @@ def local_light(scene, settings, obj, px, py, pz, gx, gy, gz, nx, ny, nz, ex, ey
             else:
                 dx, dy, dz = lx, ly, lz
                 t_max = math.inf
-            through, blocker = light_let_through(scene, sx, sy, sz, dx, dy, dz, t_max, work)
+            through, blocker = light_let_through(
+                scene.spheres, scene.sphere_object, scene.planes, scene.plane_object,
+                scene.materials, scene.bounds, scene.links, scene.tris, scene.tri_pass,
+                scene.tri_object, sx, sy, sz, dx, dy, dz, t_max, work.stack, work.counts,
+            )
             if through > 0.0:
                 for field in range(4):
                     work.lights[count, field] = lights[k, field]
@@ -395,88 +394,59 @@ def _push(rays, top, ox, oy, oz, dx, dy, dz, weight, depth, kind, parent):
 
 
 @njit
-def trace(scene, settings, ox, oy, oz, dx, dy, dz, sample, work):
-    """Trace one eye ray and its tree; return (r, g, b unclamped, depth, object)."""
+def shade_hit(scene, settings, ray, t, kind, index, w1, w2, logged, work):
+    """Shade the hit of ray ``ray`` of work.rays and push its reflected and refracted rays.
+
+    Writes the local intensity into work.shaded (the caller weighs it) and logs the hit in
+    row ``logged`` when that row exists. Returns (stack height after the pushes, object hit).
+    """
     rays = work.rays
-    top = _push(rays, 0, ox, oy, oz, dx, dy, dz, 1.0, 0.0, float(PRIMARY), -1.0)
-    red = green = blue = 0.0
-    first_t = math.inf
-    first_object = MISS
-    while top > 0:
-        top -= 1
-        ox, oy, oz = rays[top, 0], rays[top, 1], rays[top, 2]
-        dx, dy, dz = rays[top, 3], rays[top, 4], rays[top, 5]
-        weight, depth, kind, parent = rays[top, 6], int(rays[top, 7]), rays[top, 8], rays[top, 9]
-        primary = depth == 0
-        if primary:  # the eye's ray: between the near and far planes, culled like the raster
-            work.counts[COUNT_PRIMARY] += 1
-            t_min, t_max, cull = settings.near, settings.far, settings.cull
-        else:
-            work.counts[COUNT_REFLECTED if kind == REFLECTED else COUNT_REFRACTED] += 1
-            t_min, t_max, cull = 0.0, math.inf, False
-        t, hit_kind, index, w1, w2 = nearest_hit(
-            scene, ox, oy, oz, dx, dy, dz, t_min, t_max, cull, work
-        )
-        logged = work.logged[0]
-        work.logged[0] += 1
-        log = logged < work.log.shape[0]
-        if log:
-            _log_ray(work.log, logged, parent, kind, depth, weight, ox, oy, oz, dx, dy, dz, sample)
-        if index == MISS:
-            work.counts[COUNT_MISSED] += 1
-            red += weight * scene.background[0]
-            green += weight * scene.background[1]
-            blue += weight * scene.background[2]
-            if log:
-                _log_miss(work.log, logged, scene.background)
-            continue
-        px, py, pz = ox + t * dx, oy + t * dy, oz + t * dz
-        obj, gx, gy, gz, nx, ny, nz = surface(scene, settings, hit_kind, index, w1, w2, px, py, pz)
-        entering = gx * dx + gy * dy + gz * dz < 0.0
-        if not entering:  # seen from behind (or from inside): turn the normals towards the ray
-            gx, gy, gz, nx, ny, nz = -gx, -gy, -gz, -nx, -ny, -nz
-        if primary:
-            first_t, first_object = t, obj
-        local_light(scene, settings, obj, px, py, pz, gx, gy, gz, nx, ny, nz, ox, oy, oz, work,
-                    logged)
-        red += weight * work.shaded[0]
-        green += weight * work.shaded[1]
-        blue += weight * work.shaded[2]
-        material = scene.materials[obj]
-        kr = material[REFLECTIVITY]
-        kt = material[TRANSPARENCY]
-        total = False
-        fresnel = 0.0
-        eta = 1.0
-        ux, uy, uz = _unit(dx, dy, dz)
-        tx = ty = tz = 0.0
-        if depth < settings.max_depth and kt > 0.0:
-            eta = 1.0 / material[IOR] if entering else material[IOR]
-            tx, ty, tz, exists = refract_direction(ux, uy, uz, nx, ny, nz, eta)
-            if not exists:
-                total = True
-                work.counts[COUNT_TOTAL_REFLECTION] += 1
-                kr, kt = kr + kt, 0.0
-            elif settings.fresnel:
-                cos_i = -(ux * nx + uy * ny + uz * nz)
-                cos_t = -(tx * nx + ty * ny + tz * nz)
-                fresnel = _schlick(cos_i, cos_t, eta, material[IOR])
-                kr, kt = kr + kt * fresnel, kt * (1.0 - fresnel)
-        if log:
-            _log_hit(work.log, logged, t, obj, hit_kind, index, scene.tri_source, px, py, pz,
-                     nx, ny, nz, gx, gy, gz, entering, work.shaded, kr, kt, total, fresnel, eta)
-        if depth >= settings.max_depth:
-            continue
-        if kt > 0.0 and weight * kt >= MIN_WEIGHT:
-            sx, sy, sz = _offset(px, py, pz, gx, gy, gz, tx, ty, tz, settings.epsilon)
-            top = _push(rays, top, sx, sy, sz, tx, ty, tz, weight * kt, depth + 1.0,
-                        float(REFRACTED), float(logged))
-        if kr > 0.0 and weight * kr >= MIN_WEIGHT:
-            rx, ry, rz = reflect_direction(ux, uy, uz, nx, ny, nz)
-            sx, sy, sz = _offset(px, py, pz, gx, gy, gz, rx, ry, rz, settings.epsilon)
-            top = _push(rays, top, sx, sy, sz, rx, ry, rz, weight * kr, depth + 1.0,
-                        float(REFLECTED), float(logged))
-    return red, green, blue, first_t, first_object
+    ox, oy, oz = rays[ray, 0], rays[ray, 1], rays[ray, 2]
+    dx, dy, dz = rays[ray, 3], rays[ray, 4], rays[ray, 5]
+    weight, depth = rays[ray, 6], int(rays[ray, 7])
+    top = ray
+    px, py, pz = ox + t * dx, oy + t * dy, oz + t * dz
+    obj, gx, gy, gz, nx, ny, nz = surface(scene, settings, kind, index, w1, w2, px, py, pz)
+    entering = gx * dx + gy * dy + gz * dz < 0.0
+    if not entering:  # seen from behind (or from inside): turn the normals towards the ray
+        gx, gy, gz, nx, ny, nz = -gx, -gy, -gz, -nx, -ny, -nz
+    local_light(scene, settings, obj, px, py, pz, gx, gy, gz, nx, ny, nz, ox, oy, oz, work,
+                logged)
+    material = scene.materials[obj]
+    kr = material[REFLECTIVITY]
+    kt = material[TRANSPARENCY]
+    total = False
+    fresnel = 0.0
+    eta = 1.0
+    ux, uy, uz = _unit(dx, dy, dz)
+    tx = ty = tz = 0.0
+    if depth < settings.max_depth and kt > 0.0:
+        eta = 1.0 / material[IOR] if entering else material[IOR]
+        tx, ty, tz, exists = refract_direction(ux, uy, uz, nx, ny, nz, eta)
+        if not exists:
+            total = True
+            work.counts[COUNT_TOTAL_REFLECTION] += 1
+            kr, kt = kr + kt, 0.0
+        elif settings.fresnel:
+            cos_i = -(ux * nx + uy * ny + uz * nz)
+            cos_t = -(tx * nx + ty * ny + tz * nz)
+            fresnel = _schlick(cos_i, cos_t, eta, material[IOR])
+            kr, kt = kr + kt * fresnel, kt * (1.0 - fresnel)
+    if logged < work.log.shape[0]:
+        _log_hit(work.log, logged, t, obj, kind, index, scene.tri_source, px, py, pz,
+                 nx, ny, nz, gx, gy, gz, entering, work.shaded, kr, kt, total, fresnel, eta)
+    if depth >= settings.max_depth:
+        return top, obj
+    if kt > 0.0 and weight * kt >= MIN_WEIGHT:
+        sx, sy, sz = _offset(px, py, pz, gx, gy, gz, tx, ty, tz, settings.epsilon)
+        top = _push(rays, top, sx, sy, sz, tx, ty, tz, weight * kt, depth + 1.0,
+                    float(REFRACTED), float(logged))
+    if kr > 0.0 and weight * kr >= MIN_WEIGHT:
+        rx, ry, rz = reflect_direction(ux, uy, uz, nx, ny, nz)
+        sx, sy, sz = _offset(px, py, pz, gx, gy, gz, rx, ry, rz, settings.epsilon)
+        top = _push(rays, top, sx, sy, sz, rx, ry, rz, weight * kr, depth + 1.0,
+                    float(REFLECTED), float(logged))
+    return top, obj
 
 
 @njit
@@ -524,32 +494,126 @@ def _clamp01(value):
     return min(max(value, 0.0), 1.0)
 
 
-@njit
-def trace_pixel(scene, settings, x, y, work):
-    """Return pixel (x, y) of the whole image: (r, g, b clamped, depth, object).
+# Fields of a traced pixel (trace_row's output).
+RED, GREEN, BLUE, PIXEL_DEPTH, PIXEL_OBJECT = 0, 1, 2, 3, 4
+PIXEL_FIELDS = 5
 
-    The colour is the mean of the clamped colours of its samples; depth and object come from
-    the nearest sample that hit something.
+
+@njit
+def trace_row(y, x0, width, scene, settings, work, out):
+    """Trace pixels x0 .. x0 + width − 1 of row y of the whole image into out (width, 5).
+
+    A pixel's fields are r, g, b (the mean of the clamped colours of its samples), depth and
+    object (from the nearest sample that hit something). Each sample's eye ray and its tree
+    are followed with the stack work.rays: a ray adds ``weight × I_local`` as it is traced.
+
+    The loops over pixels, samples and rays share this one function on purpose: every call
+    that passes arrays costs an atomic reference-count update per array on the way in and out,
+    so the scene and scratch arrays are taken out of their tuples once per row, and the calls
+    made per ray (the nearest-hit searches) pass a few arrays each; those made per hit
+    (:func:`shade_hit`) pass the tuples.
     """
-    pixel = y * settings.image_width + x
-    red = green = blue = 0.0
-    depth = math.inf
-    obj = MISS
+    spheres = scene.spheres
+    planes = scene.planes
+    plane_back = scene.plane_back
+    bounds = scene.bounds
+    links = scene.links
+    tris = scene.tris
+    tri_source = scene.tri_source
+    tri_back = scene.tri_back
+    background = scene.background
     camera = scene.camera
-    for s in range(settings.samples):
-        sx, sy = sample_position(pixel, s, settings.samples)
-        dx, dy, dz = primary_direction(
-            camera, x + sx, y + sy, settings.image_width, settings.image_height
-        )
-        r, g, b, t, hit = trace(scene, settings, camera[0], camera[1], camera[2], dx, dy, dz,
-                                s, work)
-        red += _clamp01(r)
-        green += _clamp01(g)
-        blue += _clamp01(b)
-        if t < depth:
-            depth, obj = t, hit
-    scale = 1.0 / settings.samples
-    return red * scale, green * scale, blue * scale, depth, obj
+    rays = work.rays
+    counts = work.counts
+    stack = work.stack
+    stack_t = work.stack_t
+    shaded = work.shaded
+    logged_rays = work.logged
+    log = work.log
+    has_spheres = spheres.shape[0] > 0
+    has_planes = planes.shape[0] > 0
+    has_triangles = links.shape[0] > 0
+    samples = settings.samples
+    for i in range(width):
+        x = x0 + i
+        pixel = y * settings.image_width + x
+        red = green = blue = 0.0
+        nearest = math.inf
+        nearest_object = MISS
+        for sample in range(samples):
+            sx, sy = sample_position(pixel, sample, samples)
+            dx, dy, dz = primary_direction(
+                camera, x + sx, y + sy, settings.image_width, settings.image_height
+            )
+            top = _push(rays, 0, camera[0], camera[1], camera[2], dx, dy, dz, 1.0, 0.0,
+                        float(PRIMARY), -1.0)
+            r = g = b = 0.0
+            first_t = math.inf
+            first_object = MISS
+            while top > 0:
+                top -= 1
+                ox, oy, oz = rays[top, 0], rays[top, 1], rays[top, 2]
+                dx, dy, dz = rays[top, 3], rays[top, 4], rays[top, 5]
+                weight, depth, kind = rays[top, 6], rays[top, 7], rays[top, 8]
+                primary = depth == 0.0
+                if primary:  # the eye's: between the near and far planes, culled like the raster
+                    counts[COUNT_PRIMARY] += 1
+                    t_min, t_max, cull = settings.near, settings.far, settings.cull
+                else:
+                    counts[COUNT_REFLECTED if kind == REFLECTED else COUNT_REFRACTED] += 1
+                    t_min, t_max, cull = 0.0, math.inf, False
+                t = t_max
+                hit_kind = SPHERE
+                index = MISS
+                w1 = w2 = 0.0
+                if has_spheres:
+                    t, index = nearest_sphere(spheres, ox, oy, oz, dx, dy, dz, t_min, t, cull)
+                if has_planes:
+                    t_plane, plane = nearest_plane(
+                        planes, plane_back, ox, oy, oz, dx, dy, dz, t_min, t, cull
+                    )
+                    if plane != MISS:
+                        t, hit_kind, index = t_plane, PLANE, plane
+                if has_triangles:
+                    t_tri, tri, b1, b2, nodes, tests = closest_triangle(
+                        bounds, links, tris, tri_source, tri_back, cull, ox, oy, oz, dx, dy, dz,
+                        t_min, t, stack, stack_t,
+                    )
+                    counts[COUNT_NODES] += nodes
+                    counts[COUNT_TESTS] += tests
+                    if tri != MISS:
+                        t, hit_kind, index, w1, w2 = t_tri, TRIANGLE, tri, b1, b2
+                logged = logged_rays[0]
+                logged_rays[0] += 1
+                if logged < log.shape[0]:
+                    _log_ray(log, logged, rays[top, 9], kind, depth, weight, ox, oy, oz, dx, dy,
+                             dz, sample)
+                if index == MISS:
+                    counts[COUNT_MISSED] += 1
+                    r += weight * background[0]
+                    g += weight * background[1]
+                    b += weight * background[2]
+                    if logged < log.shape[0]:
+                        _log_miss(log, logged, background)
+                    continue
+                top, obj = shade_hit(scene, settings, top, t, hit_kind, index, w1, w2, logged,
+                                     work)
+                r += weight * shaded[0]
+                g += weight * shaded[1]
+                b += weight * shaded[2]
+                if primary:
+                    first_t, first_object = t, obj
+            red += _clamp01(r)
+            green += _clamp01(g)
+            blue += _clamp01(b)
+            if first_t < nearest:
+                nearest, nearest_object = first_t, first_object
+        scale = 1.0 / samples
+        out[i, RED] = red * scale
+        out[i, GREEN] = green * scale
+        out[i, BLUE] = blue * scale
+        out[i, PIXEL_DEPTH] = nearest
+        out[i, PIXEL_OBJECT] = nearest_object
 
 
 @njit
@@ -562,17 +626,18 @@ def render_rows(rows, scene, settings, bvh_depth, x0, y0, rgb, depth, object_id,
     """
     width = rgb.shape[1]
     work = new_work(scene, settings, bvh_depth, np.intp(0))  # no log (not a literal 0)
+    out = np.empty((width, PIXEL_FIELDS))
     for k in range(rows.shape[0]):
         row = rows[k]
         for c in range(COUNTS):
             work.counts[c] = 0
+        trace_row(y0 + row, x0, width, scene, settings, work, out)
         for i in range(width):
-            r, g, b, t, obj = trace_pixel(scene, settings, x0 + i, y0 + row, work)
-            rgb[row, i, 0] = r
-            rgb[row, i, 1] = g
-            rgb[row, i, 2] = b
-            depth[row, i] = t
-            object_id[row, i] = obj
+            rgb[row, i, 0] = out[i, RED]
+            rgb[row, i, 1] = out[i, GREEN]
+            rgb[row, i, 2] = out[i, BLUE]
+            depth[row, i] = out[i, PIXEL_DEPTH]
+            object_id[row, i] = int(out[i, PIXEL_OBJECT])
         for c in range(COUNTS):
             counts[row, c] = work.counts[c]
 
@@ -590,4 +655,4 @@ def warmup() -> None:
         render_rows(np.zeros(1, dtype=np.intp), scene, settings, bvh_depth, 0, 0, rgb, depth,
                     ids, counts)
         work = new_work(scene, settings, bvh_depth, 8)
-        trace_pixel(scene, settings, 0, 0, work)
+        trace_row(0, 0, 1, scene, settings, work, np.empty((1, PIXEL_FIELDS)))
