@@ -247,10 +247,61 @@ def nearest_plane(planes, plane_back, ox, oy, oz, dx, dy, dz, t_min, t_max, cull
     return best_t, index
 
 
+@njit(inline="always")
+def _unit(x, y, z):
+    length = math.sqrt(x * x + y * y + z * z)
+    inv = 1.0 / length if length > 0.0 else 0.0
+    return x * inv, y * inv, z * inv
+
+
+@njit(inline="always")
+def sphere_normal(cx, cy, cz, radius, px, py, pz):
+    """Return the outward unit normal at point p of the sphere (centre c, radius)."""
+    return _unit((px - cx) / radius, (py - cy) / radius, (pz - cz) / radius)
+
+
 @njit
-def light_let_through(spheres, sphere_object, planes, plane_object, materials, bounds, links,
-                      tris, tri_pass, tri_object, ox, oy, oz, dx, dy, dz, t_max, stack, counts):
-    """Return (fraction of light let through, blocking object or MISS) along a shadow ray."""
+def triangle_normals(tris, tri_normals, tri_flat, flat, index, w1, w2):
+    """Return (geometric normal, shading normal) of triangle ``index`` at barycentric (w1, w2).
+
+    The shading normal interpolates the vertex normals (the polygon's normal with ``flat``);
+    it falls back to the geometric normal where the interpolated one vanishes.
+    """
+    t = tris
+    e1x, e1y, e1z = t[index, 3] - t[index, 0], t[index, 4] - t[index, 1], t[index, 5] - t[index, 2]
+    e2x, e2y, e2z = t[index, 6] - t[index, 0], t[index, 7] - t[index, 1], t[index, 8] - t[index, 2]
+    gx, gy, gz = _unit(e1y * e2z - e1z * e2y, e1z * e2x - e1x * e2z, e1x * e2y - e1y * e2x)
+    if flat:
+        sx, sy, sz = tri_flat[index, 0], tri_flat[index, 1], tri_flat[index, 2]
+    else:
+        w0 = 1.0 - w1 - w2
+        n = tri_normals
+        sx, sy, sz = _unit(
+            w0 * n[index, 0] + w1 * n[index, 3] + w2 * n[index, 6],
+            w0 * n[index, 1] + w1 * n[index, 4] + w2 * n[index, 7],
+            w0 * n[index, 2] + w1 * n[index, 5] + w2 * n[index, 8],
+        )
+    if sx == 0.0 and sy == 0.0 and sz == 0.0:
+        sx, sy, sz = gx, gy, gz
+    return gx, gy, gz, sx, sy, sz
+
+
+@njit(inline="always")
+def _offset(px, py, pz, gx, gy, gz, dx, dy, dz, epsilon):
+    """Return p moved epsilon along the geometric normal g, to the side direction d leaves to."""
+    side = epsilon if gx * dx + gy * dy + gz * dz >= 0.0 else -epsilon
+    return px + side * gx, py + side * gy, pz + side * gz
+
+
+@njit
+def light_let_through(occluders, ox, oy, oz, dx, dy, dz, t_max, stack, counts):
+    """Return (fraction of light let through, blocking object or MISS) along a shadow ray.
+
+    ``occluders`` is (spheres, sphere_object, planes, plane_object, materials, bounds, links,
+    tris, tri_pass, tri_object) of the scene.
+    """
+    spheres, sphere_object, planes, plane_object, materials = occluders[:5]
+    bounds, links, tris, tri_pass, tri_object = occluders[5:]
     through = 1.0
     for s in range(spheres.shape[0]):
         t0, t1 = sphere_roots(
@@ -282,72 +333,25 @@ def light_let_through(spheres, sphere_object, planes, plane_object, materials, b
     return through * fraction, MISS
 
 
-@njit(inline="always")
-def _unit(x, y, z):
-    length = math.sqrt(x * x + y * y + z * z)
-    inv = 1.0 / length if length > 0.0 else 0.0
-    return x * inv, y * inv, z * inv
-
-
-@njit(inline="always")
-def surface(scene, settings, kind, index, w1, w2, px, py, pz):
-    """Return (object, geometric normal, shading normal) at a hit; outward unit normals."""
-    if kind == SPHERE:
-        radius = scene.spheres[index, 3]
-        gx = (px - scene.spheres[index, 0]) / radius
-        gy = (py - scene.spheres[index, 1]) / radius
-        gz = (pz - scene.spheres[index, 2]) / radius
-        gx, gy, gz = _unit(gx, gy, gz)
-        return scene.sphere_object[index], gx, gy, gz, gx, gy, gz
-    if kind == PLANE:
-        nx, ny, nz = scene.planes[index, 3], scene.planes[index, 4], scene.planes[index, 5]
-        return scene.plane_object[index], nx, ny, nz, nx, ny, nz
-    t = scene.tris
-    e1x, e1y, e1z = t[index, 3] - t[index, 0], t[index, 4] - t[index, 1], t[index, 5] - t[index, 2]
-    e2x, e2y, e2z = t[index, 6] - t[index, 0], t[index, 7] - t[index, 1], t[index, 8] - t[index, 2]
-    gx, gy, gz = _unit(e1y * e2z - e1z * e2y, e1z * e2x - e1x * e2z, e1x * e2y - e1y * e2x)
-    if settings.flat:
-        sx, sy, sz = scene.tri_flat[index, 0], scene.tri_flat[index, 1], scene.tri_flat[index, 2]
-    else:
-        w0 = 1.0 - w1 - w2
-        n = scene.tri_normals
-        sx, sy, sz = _unit(
-            w0 * n[index, 0] + w1 * n[index, 3] + w2 * n[index, 6],
-            w0 * n[index, 1] + w1 * n[index, 4] + w2 * n[index, 7],
-            w0 * n[index, 2] + w1 * n[index, 5] + w2 * n[index, 8],
-        )
-    if sx == 0.0 and sy == 0.0 and sz == 0.0:
-        sx, sy, sz = gx, gy, gz
-    return scene.tri_object[index], gx, gy, gz, sx, sy, sz
-
-
-@njit(inline="always")
-def _offset(px, py, pz, gx, gy, gz, dx, dy, dz, epsilon):
-    """Return p moved epsilon along the geometric normal g, to the side direction d leaves to."""
-    side = epsilon if gx * dx + gy * dy + gz * dz >= 0.0 else -epsilon
-    return px + side * gx, py + side * gy, pz + side * gz
-
-
 @njit
-def local_light(scene, settings, obj, px, py, pz, gx, gy, gz, nx, ny, nz, ex, ey, ez, work,
-                logged):
-    """Write the local Phong intensity at p into work.shaded, with a shadow ray per light.
+def local_light(lights, material, ambient, occluders, settings, px, py, pz, gx, gy, gz, nx, ny,
+                nz, ex, ey, ez, lit, shaded, stack, counts, log_lights, logged):
+    """Write the local Phong intensity at p into ``shaded``, with a shadow ray per light.
 
     (g: geometric normal, n: shading normal, both on the side the ray came from; e: where the
     ray came from, the "eye" of the model.) A light behind the surface (N·L <= 0) contributes
     nothing and needs no shadow ray; each other light enters the model scaled by the light its
-    shadow ray lets through. Logs each light's fraction and blocker in row ``logged`` when
-    that row exists.
+    shadow ray lets through (``lit`` holds them). Logs each light's fraction and blocker in
+    row ``logged`` of ``log_lights`` when that row exists.
     """
-    lights = scene.lights
-    log = logged < work.log.shape[0]
+    log = logged < log_lights.shape[0]
     count = 0
     for k in range(lights.shape[0]):
         lx, ly, lz = light_direction(lights, k, px, py, pz)
         through = -1.0  # not tested
         blocker = MISS
         if nx * lx + ny * ly + nz * lz > 0.0:
-            work.counts[COUNT_SHADOW] += 1
+            counts[COUNT_SHADOW] += 1
             sx, sy, sz = _offset(px, py, pz, gx, gy, gz, lx, ly, lz, settings.epsilon)
             if lights[k, 0] == 0.0:  # a point light: the segment up to it, t in (0, 1)
                 dx, dy, dz = lights[k, 1] - sx, lights[k, 2] - sy, lights[k, 3] - sz
@@ -356,23 +360,19 @@ def local_light(scene, settings, obj, px, py, pz, gx, gy, gz, nx, ny, nz, ex, ey
                 dx, dy, dz = lx, ly, lz
                 t_max = math.inf
             through, blocker = light_let_through(
-                scene.spheres, scene.sphere_object, scene.planes, scene.plane_object,
-                scene.materials, scene.bounds, scene.links, scene.tris, scene.tri_pass,
-                scene.tri_object, sx, sy, sz, dx, dy, dz, t_max, work.stack, work.counts,
+                occluders, sx, sy, sz, dx, dy, dz, t_max, stack, counts
             )
             if through > 0.0:
                 for field in range(4):
-                    work.lights[count, field] = lights[k, field]
+                    lit[count, field] = lights[k, field]
                 for field in range(4, 7):
-                    work.lights[count, field] = lights[k, field] * through
+                    lit[count, field] = lights[k, field] * through
                 count += 1
         if log:
-            work.log_lights[logged, k, 0] = through
-            work.log_lights[logged, k, 1] = blocker
-    shade_point(
-        px, py, pz, nx, ny, nz, ex, ey, ez, scene.materials[obj], work.lights[:count],
-        scene.ambient, settings.blinn, work.shaded,
-    )
+            log_lights[logged, k, 0] = through
+            log_lights[logged, k, 1] = blocker
+    shade_point(px, py, pz, nx, ny, nz, ex, ey, ez, material, lit[:count], ambient,
+                settings.blinn, shaded)
 
 
 @njit(inline="always")
@@ -393,60 +393,30 @@ def _push(rays, top, ox, oy, oz, dx, dy, dz, weight, depth, kind, parent):
     return top + 1
 
 
-@njit
-def shade_hit(scene, settings, ray, t, kind, index, w1, w2, logged, work):
-    """Shade the hit of ray ``ray`` of work.rays and push its reflected and refracted rays.
+@njit(inline="always")
+def transmission(ux, uy, uz, nx, ny, nz, entering, kr, kt, ior, bounce, fresnel):
+    """Return (kr, kt, total reflection, Fresnel term, eta, refracted direction) at a hit.
 
-    Writes the local intensity into work.shaded (the caller weighs it) and logs the hit in
-    row ``logged`` when that row exists. Returns (stack height after the pushes, object hit).
+    u is the unit ray direction, n the shading normal on its side; ``bounce`` says whether
+    secondary rays are traced at all. Total internal reflection hands the transmitted share to
+    the reflection; with ``fresnel``, Schlick's term moves part of it there.
     """
-    rays = work.rays
-    ox, oy, oz = rays[ray, 0], rays[ray, 1], rays[ray, 2]
-    dx, dy, dz = rays[ray, 3], rays[ray, 4], rays[ray, 5]
-    weight, depth = rays[ray, 6], int(rays[ray, 7])
-    top = ray
-    px, py, pz = ox + t * dx, oy + t * dy, oz + t * dz
-    obj, gx, gy, gz, nx, ny, nz = surface(scene, settings, kind, index, w1, w2, px, py, pz)
-    entering = gx * dx + gy * dy + gz * dz < 0.0
-    if not entering:  # seen from behind (or from inside): turn the normals towards the ray
-        gx, gy, gz, nx, ny, nz = -gx, -gy, -gz, -nx, -ny, -nz
-    local_light(scene, settings, obj, px, py, pz, gx, gy, gz, nx, ny, nz, ox, oy, oz, work,
-                logged)
-    material = scene.materials[obj]
-    kr = material[REFLECTIVITY]
-    kt = material[TRANSPARENCY]
     total = False
-    fresnel = 0.0
+    term = 0.0
     eta = 1.0
-    ux, uy, uz = _unit(dx, dy, dz)
     tx = ty = tz = 0.0
-    if depth < settings.max_depth and kt > 0.0:
-        eta = 1.0 / material[IOR] if entering else material[IOR]
+    if bounce and kt > 0.0:
+        eta = 1.0 / ior if entering else ior
         tx, ty, tz, exists = refract_direction(ux, uy, uz, nx, ny, nz, eta)
         if not exists:
             total = True
-            work.counts[COUNT_TOTAL_REFLECTION] += 1
             kr, kt = kr + kt, 0.0
-        elif settings.fresnel:
+        elif fresnel:
             cos_i = -(ux * nx + uy * ny + uz * nz)
             cos_t = -(tx * nx + ty * ny + tz * nz)
-            fresnel = _schlick(cos_i, cos_t, eta, material[IOR])
-            kr, kt = kr + kt * fresnel, kt * (1.0 - fresnel)
-    if logged < work.log.shape[0]:
-        _log_hit(work.log, logged, t, obj, kind, index, scene.tri_source, px, py, pz,
-                 nx, ny, nz, gx, gy, gz, entering, work.shaded, kr, kt, total, fresnel, eta)
-    if depth >= settings.max_depth:
-        return top, obj
-    if kt > 0.0 and weight * kt >= MIN_WEIGHT:
-        sx, sy, sz = _offset(px, py, pz, gx, gy, gz, tx, ty, tz, settings.epsilon)
-        top = _push(rays, top, sx, sy, sz, tx, ty, tz, weight * kt, depth + 1.0,
-                    float(REFRACTED), float(logged))
-    if kr > 0.0 and weight * kr >= MIN_WEIGHT:
-        rx, ry, rz = reflect_direction(ux, uy, uz, nx, ny, nz)
-        sx, sy, sz = _offset(px, py, pz, gx, gy, gz, rx, ry, rz, settings.epsilon)
-        top = _push(rays, top, sx, sy, sz, rx, ry, rz, weight * kr, depth + 1.0,
-                    float(REFLECTED), float(logged))
-    return top, obj
+            term = _schlick(cos_i, cos_t, eta, ior)
+            kr, kt = kr + kt * term, kt * (1.0 - term)
+    return kr, kt, total, term, eta, tx, ty, tz
 
 
 @njit
@@ -508,10 +478,10 @@ def trace_row(y, x0, width, scene, settings, work, out):
     are followed with the stack work.rays: a ray adds ``weight × I_local`` as it is traced.
 
     The loops over pixels, samples and rays share this one function on purpose: every call
-    that passes arrays costs an atomic reference-count update per array on the way in and out,
-    so the scene and scratch arrays are taken out of their tuples once per row, and the calls
-    made per ray (the nearest-hit searches) pass a few arrays each; those made per hit
-    (:func:`shade_hit`) pass the tuples.
+    that passes arrays costs two atomic reference-count updates per array (in and out), which
+    cost more than the work of a ray that misses. So the scene and scratch arrays are taken out
+    of their tuples once per row, the calls made per ray (the nearest-hit searches) pass a few
+    arrays each, and only a hit pays for :func:`local_light`'s.
     """
     spheres = scene.spheres
     planes = scene.planes
@@ -521,13 +491,25 @@ def trace_row(y, x0, width, scene, settings, work, out):
     tris = scene.tris
     tri_source = scene.tri_source
     tri_back = scene.tri_back
+    tri_normals = scene.tri_normals
+    tri_flat = scene.tri_flat
+    tri_object = scene.tri_object
+    sphere_object = scene.sphere_object
+    plane_object = scene.plane_object
+    materials = scene.materials
+    lights = scene.lights
+    ambient = scene.ambient
     background = scene.background
     camera = scene.camera
+    occluders = (spheres, sphere_object, planes, plane_object, materials, bounds, links, tris,
+                 scene.tri_pass, tri_object)
     rays = work.rays
     counts = work.counts
     stack = work.stack
     stack_t = work.stack_t
     shaded = work.shaded
+    lit = work.lights
+    log_lights = work.log_lights
     logged_rays = work.logged
     log = work.log
     has_spheres = spheres.shape[0] > 0
@@ -596,13 +578,54 @@ def trace_row(y, x0, width, scene, settings, work, out):
                     if logged < log.shape[0]:
                         _log_miss(log, logged, background)
                     continue
-                top, obj = shade_hit(scene, settings, top, t, hit_kind, index, w1, w2, logged,
-                                     work)
+                px, py, pz = ox + t * dx, oy + t * dy, oz + t * dz
+                if hit_kind == SPHERE:
+                    obj = sphere_object[index]
+                    gx, gy, gz = sphere_normal(spheres[index, 0], spheres[index, 1],
+                                               spheres[index, 2], spheres[index, 3], px, py, pz)
+                    nx, ny, nz = gx, gy, gz
+                elif hit_kind == PLANE:
+                    obj = plane_object[index]
+                    gx, gy, gz = planes[index, 3], planes[index, 4], planes[index, 5]
+                    nx, ny, nz = gx, gy, gz
+                else:
+                    obj = tri_object[index]
+                    gx, gy, gz, nx, ny, nz = triangle_normals(
+                        tris, tri_normals, tri_flat, settings.flat, index, w1, w2
+                    )
+                entering = gx * dx + gy * dy + gz * dz < 0.0
+                if not entering:  # seen from behind (or from inside): normals towards the ray
+                    gx, gy, gz, nx, ny, nz = -gx, -gy, -gz, -nx, -ny, -nz
+                local_light(lights, materials[obj], ambient, occluders, settings, px, py, pz,
+                            gx, gy, gz, nx, ny, nz, ox, oy, oz, lit, shaded, stack, counts,
+                            log_lights, logged)
                 r += weight * shaded[0]
                 g += weight * shaded[1]
                 b += weight * shaded[2]
                 if primary:
                     first_t, first_object = t, obj
+                ux, uy, uz = _unit(dx, dy, dz)
+                bounce = depth < settings.max_depth
+                kr, kt, total, fresnel, eta, tx, ty, tz = transmission(
+                    ux, uy, uz, nx, ny, nz, entering, materials[obj, REFLECTIVITY],
+                    materials[obj, TRANSPARENCY], materials[obj, IOR], bounce, settings.fresnel,
+                )
+                if total:
+                    counts[COUNT_TOTAL_REFLECTION] += 1
+                if logged < log.shape[0]:
+                    _log_hit(log, logged, t, obj, hit_kind, index, tri_source, px, py, pz, nx,
+                             ny, nz, gx, gy, gz, entering, shaded, kr, kt, total, fresnel, eta)
+                if not bounce:
+                    continue
+                if kt > 0.0 and weight * kt >= MIN_WEIGHT:
+                    sx, sy, sz = _offset(px, py, pz, gx, gy, gz, tx, ty, tz, settings.epsilon)
+                    top = _push(rays, top, sx, sy, sz, tx, ty, tz, weight * kt, depth + 1.0,
+                                float(REFRACTED), float(logged))
+                if kr > 0.0 and weight * kr >= MIN_WEIGHT:
+                    rx, ry, rz = reflect_direction(ux, uy, uz, nx, ny, nz)
+                    sx, sy, sz = _offset(px, py, pz, gx, gy, gz, rx, ry, rz, settings.epsilon)
+                    top = _push(rays, top, sx, sy, sz, rx, ry, rz, weight * kr, depth + 1.0,
+                                float(REFLECTED), float(logged))
             red += _clamp01(r)
             green += _clamp01(g)
             blue += _clamp01(b)
