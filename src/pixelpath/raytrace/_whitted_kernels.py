@@ -333,46 +333,18 @@ def light_let_through(occluders, ox, oy, oz, dx, dy, dz, t_max, stack, counts):
     return through * fraction, MISS
 
 
-@njit
-def local_light(lights, material, ambient, occluders, settings, px, py, pz, gx, gy, gz, nx, ny,
-                nz, ex, ey, ez, lit, shaded, stack, counts, log_lights, logged):
-    """Write the local Phong intensity at p into ``shaded``, with a shadow ray per light.
+@njit(inline="always")
+def shadow_ray(lights, k, px, py, pz, gx, gy, gz, lx, ly, lz, epsilon):
+    """Return (origin, direction, t_max) of the shadow ray from p towards light k.
 
-    (g: geometric normal, n: shading normal, both on the side the ray came from; e: where the
-    ray came from, the "eye" of the model.) A light behind the surface (N·L <= 0) contributes
-    nothing and needs no shadow ray; each other light enters the model scaled by the light its
-    shadow ray lets through (``lit`` holds them). Logs each light's fraction and blocker in
-    row ``logged`` of ``log_lights`` when that row exists.
+    (g: geometric normal on the side the light is, l: unit direction to the light.) It
+    starts ``epsilon`` off the surface; for a point light it is the segment up to the light,
+    t in (0, 1), for a directional light the whole half-line.
     """
-    log = logged < log_lights.shape[0]
-    count = 0
-    for k in range(lights.shape[0]):
-        lx, ly, lz = light_direction(lights, k, px, py, pz)
-        through = -1.0  # not tested
-        blocker = MISS
-        if nx * lx + ny * ly + nz * lz > 0.0:
-            counts[COUNT_SHADOW] += 1
-            sx, sy, sz = _offset(px, py, pz, gx, gy, gz, lx, ly, lz, settings.epsilon)
-            if lights[k, 0] == 0.0:  # a point light: the segment up to it, t in (0, 1)
-                dx, dy, dz = lights[k, 1] - sx, lights[k, 2] - sy, lights[k, 3] - sz
-                t_max = 1.0
-            else:
-                dx, dy, dz = lx, ly, lz
-                t_max = math.inf
-            through, blocker = light_let_through(
-                occluders, sx, sy, sz, dx, dy, dz, t_max, stack, counts
-            )
-            if through > 0.0:
-                for field in range(4):
-                    lit[count, field] = lights[k, field]
-                for field in range(4, 7):
-                    lit[count, field] = lights[k, field] * through
-                count += 1
-        if log:
-            log_lights[logged, k, 0] = through
-            log_lights[logged, k, 1] = blocker
-    shade_point(px, py, pz, nx, ny, nz, ex, ey, ez, material, lit[:count], ambient,
-                settings.blinn, shaded)
+    sx, sy, sz = _offset(px, py, pz, gx, gy, gz, lx, ly, lz, epsilon)
+    if lights[k, 0] == 0.0:
+        return sx, sy, sz, lights[k, 1] - sx, lights[k, 2] - sy, lights[k, 3] - sz, 1.0
+    return sx, sy, sz, lx, ly, lz, math.inf
 
 
 @njit(inline="always")
@@ -596,9 +568,33 @@ def trace_row(y, x0, width, scene, settings, work, out):
                 entering = gx * dx + gy * dy + gz * dz < 0.0
                 if not entering:  # seen from behind (or from inside): normals towards the ray
                     gx, gy, gz, nx, ny, nz = -gx, -gy, -gz, -nx, -ny, -nz
-                local_light(lights, materials[obj], ambient, occluders, settings, px, py, pz,
-                            gx, gy, gz, nx, ny, nz, ox, oy, oz, lit, shaded, stack, counts,
-                            log_lights, logged)
+                # Local light: a light behind the surface (N·L <= 0) contributes nothing and
+                # needs no shadow ray; each other light enters the model scaled by the light
+                # its shadow ray lets through (work.lights holds them).
+                lit_count = 0
+                for light in range(lights.shape[0]):
+                    lx, ly, lz = light_direction(lights, light, px, py, pz)
+                    through = -1.0  # not tested
+                    blocker = MISS
+                    if nx * lx + ny * ly + nz * lz > 0.0:
+                        counts[COUNT_SHADOW] += 1
+                        sx, sy, sz, lx, ly, lz, t_light = shadow_ray(
+                            lights, light, px, py, pz, gx, gy, gz, lx, ly, lz, settings.epsilon
+                        )
+                        through, blocker = light_let_through(
+                            occluders, sx, sy, sz, lx, ly, lz, t_light, stack, counts
+                        )
+                        if through > 0.0:
+                            for field in range(4):
+                                lit[lit_count, field] = lights[light, field]
+                            for field in range(4, 7):
+                                lit[lit_count, field] = lights[light, field] * through
+                            lit_count += 1
+                    if logged < log.shape[0]:
+                        log_lights[logged, light, 0] = through
+                        log_lights[logged, light, 1] = blocker
+                shade_point(px, py, pz, nx, ny, nz, ox, oy, oz, materials[obj], lit[:lit_count],
+                            ambient, settings.blinn, shaded)
                 r += weight * shaded[0]
                 g += weight * shaded[1]
                 b += weight * shaded[2]
