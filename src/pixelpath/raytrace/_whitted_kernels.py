@@ -294,14 +294,13 @@ def _offset(px, py, pz, gx, gy, gz, dx, dy, dz, epsilon):
 
 
 @njit
-def light_let_through(occluders, ox, oy, oz, dx, dy, dz, t_max, stack, counts):
-    """Return (fraction of light let through, blocking object or MISS) along a shadow ray.
+def analytic_let_through(spheres, sphere_object, planes, plane_object, materials, ox, oy, oz,
+                         dx, dy, dz, t_max):
+    """Return (light let through, blocking object or MISS) by the spheres and planes.
 
-    ``occluders`` is (spheres, sphere_object, planes, plane_object, materials, bounds, links,
-    tris, tri_pass, tri_object) of the scene.
+    Each surface the shadow ray crosses in (0, t_max) lets its object's transparency through;
+    an opaque one blocks the light (the search ends there).
     """
-    spheres, sphere_object, planes, plane_object, materials = occluders[:5]
-    bounds, links, tris, tri_pass, tri_object = occluders[5:]
     through = 1.0
     for s in range(spheres.shape[0]):
         t0, t1 = sphere_roots(
@@ -323,14 +322,7 @@ def light_let_through(occluders, ox, oy, oz, dx, dy, dz, t_max, stack, counts):
             through *= materials[obj, TRANSPARENCY]
             if through == 0.0:
                 return 0.0, obj
-    fraction, blocker, nodes, tests = any_triangle(
-        bounds, links, tris, tri_pass, ox, oy, oz, dx, dy, dz, 0.0, t_max, stack,
-    )
-    counts[COUNT_NODES] += nodes
-    counts[COUNT_TESTS] += tests
-    if blocker != MISS:
-        return 0.0, tri_object[blocker]
-    return through * fraction, MISS
+    return through, MISS
 
 
 @njit(inline="always")
@@ -473,8 +465,7 @@ def trace_row(y, x0, width, scene, settings, work, out):
     ambient = scene.ambient
     background = scene.background
     camera = scene.camera
-    occluders = (spheres, sphere_object, planes, plane_object, materials, bounds, links, tris,
-                 scene.tri_pass, tri_object)
+    tri_pass = scene.tri_pass
     rays = work.rays
     counts = work.counts
     stack = work.stack
@@ -487,6 +478,7 @@ def trace_row(y, x0, width, scene, settings, work, out):
     has_spheres = spheres.shape[0] > 0
     has_planes = planes.shape[0] > 0
     has_triangles = links.shape[0] > 0
+    has_analytic = has_spheres or has_planes
     samples = settings.samples
     for i in range(width):
         x = x0 + i
@@ -581,9 +573,23 @@ def trace_row(y, x0, width, scene, settings, work, out):
                         sx, sy, sz, lx, ly, lz, t_light = shadow_ray(
                             lights, light, px, py, pz, gx, gy, gz, lx, ly, lz, settings.epsilon
                         )
-                        through, blocker = light_let_through(
-                            occluders, sx, sy, sz, lx, ly, lz, t_light, stack, counts
-                        )
+                        through = 1.0
+                        if has_analytic:
+                            through, blocker = analytic_let_through(
+                                spheres, sphere_object, planes, plane_object, materials, sx, sy,
+                                sz, lx, ly, lz, t_light,
+                            )
+                        if blocker == MISS and has_triangles:  # the any-hit query
+                            fraction, hit, nodes, tests = any_triangle(
+                                bounds, links, tris, tri_pass, sx, sy, sz, lx, ly, lz, 0.0,
+                                t_light, stack,
+                            )
+                            counts[COUNT_NODES] += nodes
+                            counts[COUNT_TESTS] += tests
+                            if hit != MISS:
+                                through, blocker = 0.0, tri_object[hit]
+                            else:
+                                through *= fraction
                         if through > 0.0:
                             for field in range(4):
                                 lit[lit_count, field] = lights[light, field]
