@@ -41,6 +41,7 @@ from pixelpath.raytrace._kernels import (
     MISS,
     any_triangle,
     closest_triangle,
+    enters_box,
     plane_t,
     reflect_direction,
     refract_direction,
@@ -520,7 +521,7 @@ def trace_row(y, x0, width, scene, settings, work, out):
                     )
                     if plane != MISS:
                         t, hit_kind, index = t_plane, PLANE, plane
-                if has_triangles:
+                if has_triangles and enters_box(bounds, 0, ox, oy, oz, dx, dy, dz, t_min, t):
                     t_tri, tri, b1, b2, nodes, tests = closest_triangle(
                         bounds, links, tris, tri_source, tri_back, cull, ox, oy, oz, dx, dy, dz,
                         t_min, t, stack, stack_t,
