@@ -24,8 +24,8 @@ weight, and every ray adds its share as it is traced: no recursion, no values pa
 * A ray is traced only when its depth is at most ``max_depth`` and its weight at least
   ``MIN_WEIGHT``.
 
-``trace_pixel`` can record every ray it traces into a log (``ray_tree`` reads it); the
-renderer passes an empty log.
+``trace_row`` can record every ray it traces into a log (``ray_tree`` runs it on one pixel
+and reads it); the renderer passes an empty log.
 """
 
 from __future__ import annotations
@@ -442,11 +442,12 @@ def trace_row(y, x0, width, scene, settings, work, out):
     object (from the nearest sample that hit something). Each sample's eye ray and its tree
     are followed with the stack work.rays: a ray adds ``weight × I_local`` as it is traced.
 
-    The loops over pixels, samples and rays share this one function on purpose: every call
-    that passes arrays costs two atomic reference-count updates per array (in and out), which
-    cost more than the work of a ray that misses. So the scene and scratch arrays are taken out
-    of their tuples once per row, the calls made per ray (the nearest-hit searches) pass a few
-    arrays each, and only a hit pays for :func:`local_light`'s.
+    The loops over pixels, samples and rays, and the local light of a hit, share this one
+    function on purpose: a compiled call that passes arrays costs two atomic reference-count
+    updates per array (in and out), more than the work of a ray that misses. So the scene's
+    and the scratch arrays are taken out of their tuples once per row; per ray only the
+    nearest-hit searches are called (a few arrays each, the triangles' only when the ray enters
+    the root box), per shadow ray the any-hit search, and per hit the normal and Phong kernels.
     """
     spheres = scene.spheres
     planes = scene.planes
