@@ -209,6 +209,18 @@ def box_entry(bounds, k, ox, oy, oz, ix, iy, iz, columns, t_min, t_max):
     return lo if lo <= hi + abs(hi) * BOX_SLACK else math.inf
 
 
+@njit(inline="always")
+def enters_box(bounds, k, ox, oy, oz, dx, dy, dz, t_min, t_max):
+    """Return whether the ray enters box k within [t_min, t_max]: the traversals' own test.
+
+    A ray that misses the root box (k = 0) finds nothing in the tree, so callers with many
+    such rays test it first and spare the traversal's set-up.
+    """
+    ix, iy, iz = reciprocal(dx), reciprocal(dy), reciprocal(dz)
+    columns = slab_columns(ix, iy, iz)
+    return box_entry(bounds, k, ox, oy, oz, ix, iy, iz, columns, t_min, t_max) < math.inf
+
+
 @njit
 def closest_triangle(bounds, links, tris, source, skip, cull, ox, oy, oz, dx, dy, dz, t_min,
                      t_max, stack, stack_t):

@@ -24,8 +24,8 @@ weight, and every ray adds its share as it is traced: no recursion, no values pa
 * A ray is traced only when its depth is at most ``max_depth`` and its weight at least
   ``MIN_WEIGHT``.
 
-``trace_pixel`` can record every ray it traces into a log (``ray_tree`` reads it); the
-renderer passes an empty log.
+``trace_row`` can record every ray it traces into a log (``ray_tree`` runs it on one pixel
+and reads it); the renderer passes an empty log.
 """
 
 from __future__ import annotations
@@ -41,6 +41,7 @@ from pixelpath.raytrace._kernels import (
     MISS,
     any_triangle,
     closest_triangle,
+    enters_box,
     plane_t,
     reflect_direction,
     refract_direction,
@@ -209,82 +210,42 @@ def primary_direction(camera, px, py, width, height):
     )
 
 
-@njit(inline="always")
-def nearest_hit(scene, ox, oy, oz, dx, dy, dz, t_min, t_max, primary_cull, work):
-    """Return (t, primitive kind, index, w1, w2) of the nearest hit; index MISS when none.
+@njit
+def nearest_sphere(spheres, ox, oy, oz, dx, dy, dz, t_min, t_max, cull):
+    """Return (t, index) of the nearest sphere hit in (t_min, t_max); (t_max, MISS) if none.
 
-    ``primary_cull`` skips what back-face culling removes for the eye's rays.
+    With ``cull``, a sphere is hit only where the ray enters it.
     """
-    spheres = scene.spheres  # each field read once: a read is a reference count update
-    planes = scene.planes
-    plane_back = scene.plane_back
     best_t = t_max
-    kind = SPHERE
     index = MISS
-    w1 = 0.0
-    w2 = 0.0
     for s in range(spheres.shape[0]):
         t0, t1 = sphere_roots(
             ox, oy, oz, dx, dy, dz, spheres[s, 0], spheres[s, 1], spheres[s, 2], spheres[s, 3]
         )
-        t = sphere_t(t0, t1, t_min, best_t, primary_cull)
+        t = sphere_t(t0, t1, t_min, best_t, cull)
         if t < best_t:
-            best_t, kind, index = t, SPHERE, s
+            best_t, index = t, s
+    return best_t, index
+
+
+@njit
+def nearest_plane(planes, plane_back, ox, oy, oz, dx, dy, dz, t_min, t_max, cull):
+    """Return (t, index) of the nearest plane hit in (t_min, t_max); (t_max, MISS) if none.
+
+    With ``cull``, planes with ``plane_back`` set are ignored.
+    """
+    best_t = t_max
+    index = MISS
     for p in range(planes.shape[0]):
-        if primary_cull and plane_back[p]:
+        if cull and plane_back[p]:
             continue
         t = plane_t(
             ox, oy, oz, dx, dy, dz, planes[p, 0], planes[p, 1], planes[p, 2], planes[p, 3],
             planes[p, 4], planes[p, 5],
         )
         if t_min < t < best_t:
-            best_t, kind, index = t, PLANE, p
-    t, i, b1, b2, nodes, tests = closest_triangle(
-        scene.bounds, scene.links, scene.tris, scene.tri_source, scene.tri_back, primary_cull,
-        ox, oy, oz, dx, dy, dz, t_min, best_t, work.stack, work.stack_t,
-    )
-    counts = work.counts
-    counts[COUNT_NODES] += nodes
-    counts[COUNT_TESTS] += tests
-    if i != MISS:
-        best_t, kind, index, w1, w2 = t, TRIANGLE, i, b1, b2
-    return best_t, kind, index, w1, w2
-
-
-@njit(inline="always")
-def light_let_through(scene, ox, oy, oz, dx, dy, dz, t_max, work):
-    """Return (fraction of light let through, blocking object or MISS) along a shadow ray."""
-    through = 1.0
-    for s in range(scene.spheres.shape[0]):
-        t0, t1 = sphere_roots(
-            ox, oy, oz, dx, dy, dz, scene.spheres[s, 0], scene.spheres[s, 1],
-            scene.spheres[s, 2], scene.spheres[s, 3],
-        )
-        obj = scene.sphere_object[s]
-        for t in (t0, t1):
-            if 0.0 < t < t_max:
-                through *= scene.materials[obj, TRANSPARENCY]
-                if through == 0.0:
-                    return 0.0, obj
-    for p in range(scene.planes.shape[0]):
-        t = plane_t(
-            ox, oy, oz, dx, dy, dz, scene.planes[p, 0], scene.planes[p, 1], scene.planes[p, 2],
-            scene.planes[p, 3], scene.planes[p, 4], scene.planes[p, 5],
-        )
-        if 0.0 < t < t_max:
-            obj = scene.plane_object[p]
-            through *= scene.materials[obj, TRANSPARENCY]
-            if through == 0.0:
-                return 0.0, obj
-    fraction, blocker, nodes, tests = any_triangle(
-        scene.bounds, scene.links, scene.tris, scene.tri_pass, ox, oy, oz, dx, dy, dz, 0.0,
-        t_max, work.stack,
-    )
-    work.counts[COUNT_NODES] += nodes
-    work.counts[COUNT_TESTS] += tests
-    if blocker != MISS:
-        return 0.0, scene.tri_object[blocker]
-    return through * fraction, MISS
+            best_t, index = t, p
+    return best_t, index
 
 
 @njit(inline="always")
@@ -295,27 +256,27 @@ def _unit(x, y, z):
 
 
 @njit(inline="always")
-def surface(scene, settings, kind, index, w1, w2, px, py, pz):
-    """Return (object, geometric normal, shading normal) at a hit; outward unit normals."""
-    if kind == SPHERE:
-        radius = scene.spheres[index, 3]
-        gx = (px - scene.spheres[index, 0]) / radius
-        gy = (py - scene.spheres[index, 1]) / radius
-        gz = (pz - scene.spheres[index, 2]) / radius
-        gx, gy, gz = _unit(gx, gy, gz)
-        return scene.sphere_object[index], gx, gy, gz, gx, gy, gz
-    if kind == PLANE:
-        nx, ny, nz = scene.planes[index, 3], scene.planes[index, 4], scene.planes[index, 5]
-        return scene.plane_object[index], nx, ny, nz, nx, ny, nz
-    t = scene.tris
+def sphere_normal(cx, cy, cz, radius, px, py, pz):
+    """Return the outward unit normal at point p of the sphere (centre c, radius)."""
+    return _unit((px - cx) / radius, (py - cy) / radius, (pz - cz) / radius)
+
+
+@njit
+def triangle_normals(tris, tri_normals, tri_flat, flat, index, w1, w2):
+    """Return (geometric normal, shading normal) of triangle ``index`` at barycentric (w1, w2).
+
+    The shading normal interpolates the vertex normals (the polygon's normal with ``flat``);
+    it falls back to the geometric normal where the interpolated one vanishes.
+    """
+    t = tris
     e1x, e1y, e1z = t[index, 3] - t[index, 0], t[index, 4] - t[index, 1], t[index, 5] - t[index, 2]
     e2x, e2y, e2z = t[index, 6] - t[index, 0], t[index, 7] - t[index, 1], t[index, 8] - t[index, 2]
     gx, gy, gz = _unit(e1y * e2z - e1z * e2y, e1z * e2x - e1x * e2z, e1x * e2y - e1y * e2x)
-    if settings.flat:
-        sx, sy, sz = scene.tri_flat[index, 0], scene.tri_flat[index, 1], scene.tri_flat[index, 2]
+    if flat:
+        sx, sy, sz = tri_flat[index, 0], tri_flat[index, 1], tri_flat[index, 2]
     else:
         w0 = 1.0 - w1 - w2
-        n = scene.tri_normals
+        n = tri_normals
         sx, sy, sz = _unit(
             w0 * n[index, 0] + w1 * n[index, 3] + w2 * n[index, 6],
             w0 * n[index, 1] + w1 * n[index, 4] + w2 * n[index, 7],
@@ -323,7 +284,7 @@ def surface(scene, settings, kind, index, w1, w2, px, py, pz):
         )
     if sx == 0.0 and sy == 0.0 and sz == 0.0:
         sx, sy, sz = gx, gy, gz
-    return scene.tri_object[index], gx, gy, gz, sx, sy, sz
+    return gx, gy, gz, sx, sy, sz
 
 
 @njit(inline="always")
@@ -334,46 +295,49 @@ def _offset(px, py, pz, gx, gy, gz, dx, dy, dz, epsilon):
 
 
 @njit
-def local_light(scene, settings, obj, px, py, pz, gx, gy, gz, nx, ny, nz, ex, ey, ez, work,
-                logged):
-    """Write the local Phong intensity at p into work.shaded, with a shadow ray per light.
+def analytic_let_through(spheres, sphere_object, planes, plane_object, materials, ox, oy, oz,
+                         dx, dy, dz, t_max):
+    """Return (light let through, blocking object or MISS) by the spheres and planes.
 
-    (g: geometric normal, n: shading normal, both on the side the ray came from; e: where the
-    ray came from, the "eye" of the model.) A light behind the surface (N·L <= 0) contributes
-    nothing and needs no shadow ray; each other light enters the model scaled by the light its
-    shadow ray lets through. Logs each light's fraction and blocker in row ``logged`` when
-    that row exists.
+    Each surface the shadow ray crosses in (0, t_max) lets its object's transparency through;
+    an opaque one blocks the light (the search ends there).
     """
-    lights = scene.lights
-    log = logged < work.log.shape[0]
-    count = 0
-    for k in range(lights.shape[0]):
-        lx, ly, lz = light_direction(lights, k, px, py, pz)
-        through = -1.0  # not tested
-        blocker = MISS
-        if nx * lx + ny * ly + nz * lz > 0.0:
-            work.counts[COUNT_SHADOW] += 1
-            sx, sy, sz = _offset(px, py, pz, gx, gy, gz, lx, ly, lz, settings.epsilon)
-            if lights[k, 0] == 0.0:  # a point light: the segment up to it, t in (0, 1)
-                dx, dy, dz = lights[k, 1] - sx, lights[k, 2] - sy, lights[k, 3] - sz
-                t_max = 1.0
-            else:
-                dx, dy, dz = lx, ly, lz
-                t_max = math.inf
-            through, blocker = light_let_through(scene, sx, sy, sz, dx, dy, dz, t_max, work)
-            if through > 0.0:
-                for field in range(4):
-                    work.lights[count, field] = lights[k, field]
-                for field in range(4, 7):
-                    work.lights[count, field] = lights[k, field] * through
-                count += 1
-        if log:
-            work.log_lights[logged, k, 0] = through
-            work.log_lights[logged, k, 1] = blocker
-    shade_point(
-        px, py, pz, nx, ny, nz, ex, ey, ez, scene.materials[obj], work.lights[:count],
-        scene.ambient, settings.blinn, work.shaded,
-    )
+    through = 1.0
+    for s in range(spheres.shape[0]):
+        t0, t1 = sphere_roots(
+            ox, oy, oz, dx, dy, dz, spheres[s, 0], spheres[s, 1], spheres[s, 2], spheres[s, 3],
+        )
+        obj = sphere_object[s]
+        for t in (t0, t1):
+            if 0.0 < t < t_max:
+                through *= materials[obj, TRANSPARENCY]
+                if through == 0.0:
+                    return 0.0, obj
+    for p in range(planes.shape[0]):
+        t = plane_t(
+            ox, oy, oz, dx, dy, dz, planes[p, 0], planes[p, 1], planes[p, 2], planes[p, 3],
+            planes[p, 4], planes[p, 5],
+        )
+        if 0.0 < t < t_max:
+            obj = plane_object[p]
+            through *= materials[obj, TRANSPARENCY]
+            if through == 0.0:
+                return 0.0, obj
+    return through, MISS
+
+
+@njit(inline="always")
+def shadow_ray(lights, k, px, py, pz, gx, gy, gz, lx, ly, lz, epsilon):
+    """Return (origin, direction, t_max) of the shadow ray from p towards light k.
+
+    (g: geometric normal on the side the light is, l: unit direction to the light.) It
+    starts ``epsilon`` off the surface; for a point light it is the segment up to the light,
+    t in (0, 1), for a directional light the whole half-line.
+    """
+    sx, sy, sz = _offset(px, py, pz, gx, gy, gz, lx, ly, lz, epsilon)
+    if lights[k, 0] == 0.0:
+        return sx, sy, sz, lights[k, 1] - sx, lights[k, 2] - sy, lights[k, 3] - sz, 1.0
+    return sx, sy, sz, lx, ly, lz, math.inf
 
 
 @njit(inline="always")
@@ -394,89 +358,30 @@ def _push(rays, top, ox, oy, oz, dx, dy, dz, weight, depth, kind, parent):
     return top + 1
 
 
-@njit
-def trace(scene, settings, ox, oy, oz, dx, dy, dz, sample, work):
-    """Trace one eye ray and its tree; return (r, g, b unclamped, depth, object)."""
-    rays = work.rays
-    top = _push(rays, 0, ox, oy, oz, dx, dy, dz, 1.0, 0.0, float(PRIMARY), -1.0)
-    red = green = blue = 0.0
-    first_t = math.inf
-    first_object = MISS
-    while top > 0:
-        top -= 1
-        ox, oy, oz = rays[top, 0], rays[top, 1], rays[top, 2]
-        dx, dy, dz = rays[top, 3], rays[top, 4], rays[top, 5]
-        weight, depth, kind, parent = rays[top, 6], int(rays[top, 7]), rays[top, 8], rays[top, 9]
-        primary = depth == 0
-        if primary:  # the eye's ray: between the near and far planes, culled like the raster
-            work.counts[COUNT_PRIMARY] += 1
-            t_min, t_max, cull = settings.near, settings.far, settings.cull
-        else:
-            work.counts[COUNT_REFLECTED if kind == REFLECTED else COUNT_REFRACTED] += 1
-            t_min, t_max, cull = 0.0, math.inf, False
-        t, hit_kind, index, w1, w2 = nearest_hit(
-            scene, ox, oy, oz, dx, dy, dz, t_min, t_max, cull, work
-        )
-        logged = work.logged[0]
-        work.logged[0] += 1
-        log = logged < work.log.shape[0]
-        if log:
-            _log_ray(work.log, logged, parent, kind, depth, weight, ox, oy, oz, dx, dy, dz, sample)
-        if index == MISS:
-            work.counts[COUNT_MISSED] += 1
-            red += weight * scene.background[0]
-            green += weight * scene.background[1]
-            blue += weight * scene.background[2]
-            if log:
-                _log_miss(work.log, logged, scene.background)
-            continue
-        px, py, pz = ox + t * dx, oy + t * dy, oz + t * dz
-        obj, gx, gy, gz, nx, ny, nz = surface(scene, settings, hit_kind, index, w1, w2, px, py, pz)
-        entering = gx * dx + gy * dy + gz * dz < 0.0
-        if not entering:  # seen from behind (or from inside): turn the normals towards the ray
-            gx, gy, gz, nx, ny, nz = -gx, -gy, -gz, -nx, -ny, -nz
-        if primary:
-            first_t, first_object = t, obj
-        local_light(scene, settings, obj, px, py, pz, gx, gy, gz, nx, ny, nz, ox, oy, oz, work,
-                    logged)
-        red += weight * work.shaded[0]
-        green += weight * work.shaded[1]
-        blue += weight * work.shaded[2]
-        material = scene.materials[obj]
-        kr = material[REFLECTIVITY]
-        kt = material[TRANSPARENCY]
-        total = False
-        fresnel = 0.0
-        eta = 1.0
-        ux, uy, uz = _unit(dx, dy, dz)
-        tx = ty = tz = 0.0
-        if depth < settings.max_depth and kt > 0.0:
-            eta = 1.0 / material[IOR] if entering else material[IOR]
-            tx, ty, tz, exists = refract_direction(ux, uy, uz, nx, ny, nz, eta)
-            if not exists:
-                total = True
-                work.counts[COUNT_TOTAL_REFLECTION] += 1
-                kr, kt = kr + kt, 0.0
-            elif settings.fresnel:
-                cos_i = -(ux * nx + uy * ny + uz * nz)
-                cos_t = -(tx * nx + ty * ny + tz * nz)
-                fresnel = _schlick(cos_i, cos_t, eta, material[IOR])
-                kr, kt = kr + kt * fresnel, kt * (1.0 - fresnel)
-        if log:
-            _log_hit(work.log, logged, t, obj, hit_kind, index, scene.tri_source, px, py, pz,
-                     nx, ny, nz, gx, gy, gz, entering, work.shaded, kr, kt, total, fresnel, eta)
-        if depth >= settings.max_depth:
-            continue
-        if kt > 0.0 and weight * kt >= MIN_WEIGHT:
-            sx, sy, sz = _offset(px, py, pz, gx, gy, gz, tx, ty, tz, settings.epsilon)
-            top = _push(rays, top, sx, sy, sz, tx, ty, tz, weight * kt, depth + 1.0,
-                        float(REFRACTED), float(logged))
-        if kr > 0.0 and weight * kr >= MIN_WEIGHT:
-            rx, ry, rz = reflect_direction(ux, uy, uz, nx, ny, nz)
-            sx, sy, sz = _offset(px, py, pz, gx, gy, gz, rx, ry, rz, settings.epsilon)
-            top = _push(rays, top, sx, sy, sz, rx, ry, rz, weight * kr, depth + 1.0,
-                        float(REFLECTED), float(logged))
-    return red, green, blue, first_t, first_object
+@njit(inline="always")
+def transmission(ux, uy, uz, nx, ny, nz, entering, kr, kt, ior, bounce, fresnel):
+    """Return (kr, kt, total reflection, Fresnel term, eta, refracted direction) at a hit.
+
+    u is the unit ray direction, n the shading normal on its side; ``bounce`` says whether
+    secondary rays are traced at all. Total internal reflection hands the transmitted share to
+    the reflection; with ``fresnel``, Schlick's term moves part of it there.
+    """
+    total = False
+    term = 0.0
+    eta = 1.0
+    tx = ty = tz = 0.0
+    if bounce and kt > 0.0:
+        eta = 1.0 / ior if entering else ior
+        tx, ty, tz, exists = refract_direction(ux, uy, uz, nx, ny, nz, eta)
+        if not exists:
+            total = True
+            kr, kt = kr + kt, 0.0
+        elif fresnel:
+            cos_i = -(ux * nx + uy * ny + uz * nz)
+            cos_t = -(tx * nx + ty * ny + tz * nz)
+            term = _schlick(cos_i, cos_t, eta, ior)
+            kr, kt = kr + kt * term, kt * (1.0 - term)
+    return kr, kt, total, term, eta, tx, ty, tz
 
 
 @njit
@@ -524,32 +429,218 @@ def _clamp01(value):
     return min(max(value, 0.0), 1.0)
 
 
-@njit
-def trace_pixel(scene, settings, x, y, work):
-    """Return pixel (x, y) of the whole image: (r, g, b clamped, depth, object).
+# Fields of a traced pixel (trace_row's output).
+RED, GREEN, BLUE, PIXEL_DEPTH, PIXEL_OBJECT = 0, 1, 2, 3, 4
+PIXEL_FIELDS = 5
 
-    The colour is the mean of the clamped colours of its samples; depth and object come from
-    the nearest sample that hit something.
+
+@njit
+def trace_row(y, x0, width, scene, settings, work, out):
+    """Trace pixels x0 .. x0 + width − 1 of row y of the whole image into out (width, 5).
+
+    A pixel's fields are r, g, b (the mean of the clamped colours of its samples), depth and
+    object (from the nearest sample that hit something). Each sample's eye ray and its tree
+    are followed with the stack work.rays: a ray adds ``weight × I_local`` as it is traced.
+
+    The loops over pixels, samples and rays, and the local light of a hit, share this one
+    function on purpose: a compiled call that passes arrays costs two atomic reference-count
+    updates per array (in and out), more than the work of a ray that misses. So the scene's
+    and the scratch arrays are taken out of their tuples once per row; per ray only the
+    nearest-hit searches are called (a few arrays each, the triangles' only when the ray enters
+    the root box), per shadow ray the any-hit search, and per hit the normal and Phong kernels.
     """
-    pixel = y * settings.image_width + x
-    red = green = blue = 0.0
-    depth = math.inf
-    obj = MISS
+    spheres = scene.spheres
+    planes = scene.planes
+    plane_back = scene.plane_back
+    bounds = scene.bounds
+    links = scene.links
+    tris = scene.tris
+    tri_source = scene.tri_source
+    tri_back = scene.tri_back
+    tri_normals = scene.tri_normals
+    tri_flat = scene.tri_flat
+    tri_object = scene.tri_object
+    sphere_object = scene.sphere_object
+    plane_object = scene.plane_object
+    materials = scene.materials
+    lights = scene.lights
+    ambient = scene.ambient
+    background = scene.background
     camera = scene.camera
-    for s in range(settings.samples):
-        sx, sy = sample_position(pixel, s, settings.samples)
-        dx, dy, dz = primary_direction(
-            camera, x + sx, y + sy, settings.image_width, settings.image_height
-        )
-        r, g, b, t, hit = trace(scene, settings, camera[0], camera[1], camera[2], dx, dy, dz,
-                                s, work)
-        red += _clamp01(r)
-        green += _clamp01(g)
-        blue += _clamp01(b)
-        if t < depth:
-            depth, obj = t, hit
-    scale = 1.0 / settings.samples
-    return red * scale, green * scale, blue * scale, depth, obj
+    tri_pass = scene.tri_pass
+    rays = work.rays
+    counts = work.counts
+    stack = work.stack
+    stack_t = work.stack_t
+    shaded = work.shaded
+    lit = work.lights
+    log_lights = work.log_lights
+    logged_rays = work.logged
+    log = work.log
+    has_spheres = spheres.shape[0] > 0
+    has_planes = planes.shape[0] > 0
+    has_triangles = links.shape[0] > 0
+    has_analytic = has_spheres or has_planes
+    samples = settings.samples
+    for i in range(width):
+        x = x0 + i
+        pixel = y * settings.image_width + x
+        red = green = blue = 0.0
+        nearest = math.inf
+        nearest_object = MISS
+        for sample in range(samples):
+            sx, sy = sample_position(pixel, sample, samples)
+            dx, dy, dz = primary_direction(
+                camera, x + sx, y + sy, settings.image_width, settings.image_height
+            )
+            top = _push(rays, 0, camera[0], camera[1], camera[2], dx, dy, dz, 1.0, 0.0,
+                        float(PRIMARY), -1.0)
+            r = g = b = 0.0
+            first_t = math.inf
+            first_object = MISS
+            while top > 0:
+                top -= 1
+                ox, oy, oz = rays[top, 0], rays[top, 1], rays[top, 2]
+                dx, dy, dz = rays[top, 3], rays[top, 4], rays[top, 5]
+                weight, depth, kind = rays[top, 6], rays[top, 7], rays[top, 8]
+                primary = depth == 0.0
+                if primary:  # the eye's: between the near and far planes, culled like the raster
+                    counts[COUNT_PRIMARY] += 1
+                    t_min, t_max, cull = settings.near, settings.far, settings.cull
+                else:
+                    counts[COUNT_REFLECTED if kind == REFLECTED else COUNT_REFRACTED] += 1
+                    t_min, t_max, cull = 0.0, math.inf, False
+                t = t_max
+                hit_kind = SPHERE
+                index = MISS
+                w1 = w2 = 0.0
+                if has_spheres:
+                    t, index = nearest_sphere(spheres, ox, oy, oz, dx, dy, dz, t_min, t, cull)
+                if has_planes:
+                    t_plane, plane = nearest_plane(
+                        planes, plane_back, ox, oy, oz, dx, dy, dz, t_min, t, cull
+                    )
+                    if plane != MISS:
+                        t, hit_kind, index = t_plane, PLANE, plane
+                if has_triangles and enters_box(bounds, 0, ox, oy, oz, dx, dy, dz, t_min, t):
+                    t_tri, tri, b1, b2, nodes, tests = closest_triangle(
+                        bounds, links, tris, tri_source, tri_back, cull, ox, oy, oz, dx, dy, dz,
+                        t_min, t, stack, stack_t,
+                    )
+                    counts[COUNT_NODES] += nodes
+                    counts[COUNT_TESTS] += tests
+                    if tri != MISS:
+                        t, hit_kind, index, w1, w2 = t_tri, TRIANGLE, tri, b1, b2
+                logged = logged_rays[0]
+                logged_rays[0] += 1
+                if logged < log.shape[0]:
+                    _log_ray(log, logged, rays[top, 9], kind, depth, weight, ox, oy, oz, dx, dy,
+                             dz, sample)
+                if index == MISS:
+                    counts[COUNT_MISSED] += 1
+                    r += weight * background[0]
+                    g += weight * background[1]
+                    b += weight * background[2]
+                    if logged < log.shape[0]:
+                        _log_miss(log, logged, background)
+                    continue
+                px, py, pz = ox + t * dx, oy + t * dy, oz + t * dz
+                if hit_kind == SPHERE:
+                    obj = sphere_object[index]
+                    gx, gy, gz = sphere_normal(spheres[index, 0], spheres[index, 1],
+                                               spheres[index, 2], spheres[index, 3], px, py, pz)
+                    nx, ny, nz = gx, gy, gz
+                elif hit_kind == PLANE:
+                    obj = plane_object[index]
+                    gx, gy, gz = planes[index, 3], planes[index, 4], planes[index, 5]
+                    nx, ny, nz = gx, gy, gz
+                else:
+                    obj = tri_object[index]
+                    gx, gy, gz, nx, ny, nz = triangle_normals(
+                        tris, tri_normals, tri_flat, settings.flat, index, w1, w2
+                    )
+                entering = gx * dx + gy * dy + gz * dz < 0.0
+                if not entering:  # seen from behind (or from inside): normals towards the ray
+                    gx, gy, gz, nx, ny, nz = -gx, -gy, -gz, -nx, -ny, -nz
+                # Local light: a light behind the surface (N·L <= 0) contributes nothing and
+                # needs no shadow ray; each other light enters the model scaled by the light
+                # its shadow ray lets through (work.lights holds them).
+                lit_count = 0
+                for light in range(lights.shape[0]):
+                    lx, ly, lz = light_direction(lights, light, px, py, pz)
+                    through = -1.0  # not tested
+                    blocker = MISS
+                    if nx * lx + ny * ly + nz * lz > 0.0:
+                        counts[COUNT_SHADOW] += 1
+                        sx, sy, sz, lx, ly, lz, t_light = shadow_ray(
+                            lights, light, px, py, pz, gx, gy, gz, lx, ly, lz, settings.epsilon
+                        )
+                        through = 1.0
+                        if has_analytic:
+                            through, blocker = analytic_let_through(
+                                spheres, sphere_object, planes, plane_object, materials, sx, sy,
+                                sz, lx, ly, lz, t_light,
+                            )
+                        if blocker == MISS and has_triangles:  # the any-hit query
+                            fraction, hit, nodes, tests = any_triangle(
+                                bounds, links, tris, tri_pass, sx, sy, sz, lx, ly, lz, 0.0,
+                                t_light, stack,
+                            )
+                            counts[COUNT_NODES] += nodes
+                            counts[COUNT_TESTS] += tests
+                            if hit != MISS:
+                                through, blocker = 0.0, tri_object[hit]
+                            else:
+                                through *= fraction
+                        if through > 0.0:
+                            for field in range(4):
+                                lit[lit_count, field] = lights[light, field]
+                            for field in range(4, 7):
+                                lit[lit_count, field] = lights[light, field] * through
+                            lit_count += 1
+                    if logged < log.shape[0]:
+                        log_lights[logged, light, 0] = through
+                        log_lights[logged, light, 1] = blocker
+                shade_point(px, py, pz, nx, ny, nz, ox, oy, oz, materials[obj], lit[:lit_count],
+                            ambient, settings.blinn, shaded)
+                r += weight * shaded[0]
+                g += weight * shaded[1]
+                b += weight * shaded[2]
+                if primary:
+                    first_t, first_object = t, obj
+                ux, uy, uz = _unit(dx, dy, dz)
+                bounce = depth < settings.max_depth
+                kr, kt, total, fresnel, eta, tx, ty, tz = transmission(
+                    ux, uy, uz, nx, ny, nz, entering, materials[obj, REFLECTIVITY],
+                    materials[obj, TRANSPARENCY], materials[obj, IOR], bounce, settings.fresnel,
+                )
+                if total:
+                    counts[COUNT_TOTAL_REFLECTION] += 1
+                if logged < log.shape[0]:
+                    _log_hit(log, logged, t, obj, hit_kind, index, tri_source, px, py, pz, nx,
+                             ny, nz, gx, gy, gz, entering, shaded, kr, kt, total, fresnel, eta)
+                if not bounce:
+                    continue
+                if kt > 0.0 and weight * kt >= MIN_WEIGHT:
+                    sx, sy, sz = _offset(px, py, pz, gx, gy, gz, tx, ty, tz, settings.epsilon)
+                    top = _push(rays, top, sx, sy, sz, tx, ty, tz, weight * kt, depth + 1.0,
+                                float(REFRACTED), float(logged))
+                if kr > 0.0 and weight * kr >= MIN_WEIGHT:
+                    rx, ry, rz = reflect_direction(ux, uy, uz, nx, ny, nz)
+                    sx, sy, sz = _offset(px, py, pz, gx, gy, gz, rx, ry, rz, settings.epsilon)
+                    top = _push(rays, top, sx, sy, sz, rx, ry, rz, weight * kr, depth + 1.0,
+                                float(REFLECTED), float(logged))
+            red += _clamp01(r)
+            green += _clamp01(g)
+            blue += _clamp01(b)
+            if first_t < nearest:
+                nearest, nearest_object = first_t, first_object
+        scale = 1.0 / samples
+        out[i, RED] = red * scale
+        out[i, GREEN] = green * scale
+        out[i, BLUE] = blue * scale
+        out[i, PIXEL_DEPTH] = nearest
+        out[i, PIXEL_OBJECT] = nearest_object
 
 
 @njit
@@ -562,17 +653,18 @@ def render_rows(rows, scene, settings, bvh_depth, x0, y0, rgb, depth, object_id,
     """
     width = rgb.shape[1]
     work = new_work(scene, settings, bvh_depth, np.intp(0))  # no log (not a literal 0)
+    out = np.empty((width, PIXEL_FIELDS))
     for k in range(rows.shape[0]):
         row = rows[k]
         for c in range(COUNTS):
             work.counts[c] = 0
+        trace_row(y0 + row, x0, width, scene, settings, work, out)
         for i in range(width):
-            r, g, b, t, obj = trace_pixel(scene, settings, x0 + i, y0 + row, work)
-            rgb[row, i, 0] = r
-            rgb[row, i, 1] = g
-            rgb[row, i, 2] = b
-            depth[row, i] = t
-            object_id[row, i] = obj
+            rgb[row, i, 0] = out[i, RED]
+            rgb[row, i, 1] = out[i, GREEN]
+            rgb[row, i, 2] = out[i, BLUE]
+            depth[row, i] = out[i, PIXEL_DEPTH]
+            object_id[row, i] = int(out[i, PIXEL_OBJECT])
         for c in range(COUNTS):
             counts[row, c] = work.counts[c]
 
@@ -590,4 +682,4 @@ def warmup() -> None:
         render_rows(np.zeros(1, dtype=np.intp), scene, settings, bvh_depth, 0, 0, rgb, depth,
                     ids, counts)
         work = new_work(scene, settings, bvh_depth, 8)
-        trace_pixel(scene, settings, 0, 0, work)
+        trace_row(0, 0, 1, scene, settings, work, np.empty((1, PIXEL_FIELDS)))

@@ -298,7 +298,9 @@ def ray_tree(
     bound = options.samples * (2 ** min(options.max_depth + 1, 20) - 1)
     work = wk.new_work(world, settings, bvh_depth, min(bound, LOG_LIMIT))
     with slab_nan_allowed():
-        red, green, blue, depth, obj = wk.trace_pixel(world, settings, x, y, work)
+        out = np.empty((1, wk.PIXEL_FIELDS))
+        wk.trace_row(y, x, 1, world, settings, work, out)
+    red, green, blue, depth, obj = out[0].tolist()
     logged = int(work.logged[0])
     count = min(logged, len(work.log))
     roots = _nodes(scene, world, settings, work.log[:count], work.log_lights[:count])
