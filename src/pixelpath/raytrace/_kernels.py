@@ -22,8 +22,12 @@ Rays are ``R(t) = o + t d`` with t in units of ``|d|``; a hit counts when ``t_mi
   is taken when it beats a leaf. Node k is ``bounds[k] = (min xyz, max xyz)`` and
   ``links[k] = (first, count)``: a leaf holds ``count > 0`` triangles from position ``first``
   of the leaf order; an inner node (count 0) has children ``first`` and ``first + 1``.
-* ``closest_triangle`` and ``any_triangle``: traversals with an explicit stack, the nearer child
-  first; the box test grows its far distance by Ize's bound (2γ₃, "Robust BVH ray traversal",
+* ``closest_triangle`` and ``any_triangle``: traversals with an explicit stack. Both test a
+  node's two child boxes at the node and go straight on into one child the ray enters, pushing
+  the other only when it is entered too (no stack round trip for the child visited next): the
+  nearest-hit search the nearer child (the farther one kept with its entry distance, skipped
+  when popped beyond the nearest hit found since), the any-hit search the second child; the
+  box test grows its far distance by Ize's bound (2γ₃, "Robust BVH ray traversal",
   JCGT 2013) so rounding never prunes a box whose triangle the triangle test would hit. Ties in
   t go to the triangle listed first in the original order (``source``), so the nearest hit is the
   one a brute-force loop over all triangles finds.
