@@ -22,8 +22,12 @@ Rays are ``R(t) = o + t d`` with t in units of ``|d|``; a hit counts when ``t_mi
   is taken when it beats a leaf. Node k is ``bounds[k] = (min xyz, max xyz)`` and
   ``links[k] = (first, count)``: a leaf holds ``count > 0`` triangles from position ``first``
   of the leaf order; an inner node (count 0) has children ``first`` and ``first + 1``.
-* ``closest_triangle`` and ``any_triangle``: traversals with an explicit stack, the nearer child
-  first; the box test grows its far distance by Ize's bound (2γ₃, "Robust BVH ray traversal",
+* ``closest_triangle`` and ``any_triangle``: traversals with an explicit stack. Both test a
+  node's two child boxes at the node and go straight on into one child the ray enters, pushing
+  the other only when it is entered too (no stack round trip for the child visited next): the
+  nearest-hit search the nearer child (the farther one kept with its entry distance, skipped
+  when popped beyond the nearest hit found since), the any-hit search the second child; the
+  box test grows its far distance by Ize's bound (2γ₃, "Robust BVH ray traversal",
   JCGT 2013) so rounding never prunes a box whose triangle the triangle test would hit. Ties in
   t go to the triangle listed first in the original order (``source``), so the nearest hit is the
   one a brute-force loop over all triangles finds.
@@ -242,45 +246,50 @@ def closest_triangle(bounds, links, tris, source, skip, cull, ox, oy, oz, dx, dy
     ix, iy, iz = reciprocal(dx), reciprocal(dy), reciprocal(dz)
     columns = slab_columns(ix, iy, iz)
     kx, ky, kz, okx, oky, okz, sx, sy, sz = shear_setup(ox, oy, oz, dx, dy, dz)
-    entry = box_entry(bounds, 0, ox, oy, oz, ix, iy, iz, columns, t_min, t_max)
+    k = 0
+    k_t = box_entry(bounds, 0, ox, oy, oz, ix, iy, iz, columns, t_min, t_max)
+    if k_t == math.inf:
+        return best_t, best, best_w1, best_w2, nodes, tests
     top = 0
-    if entry < math.inf:
-        stack[0] = 0
-        stack_t[0] = entry
-        top = 1
-    while top > 0:
-        top -= 1
-        k = stack[top]
+    while True:
+        # Visit node k (entered at k_t) unless it lies beyond the nearest hit found so far,
+        # then go on with its nearer child hit, or else the node last pushed.
         limit = best_t + abs(best_t) * BOX_SLACK
-        if stack_t[top] > limit:
-            continue  # entered beyond the nearest hit found since it was pushed
-        nodes += 1
-        first = links[k, 0]
-        count = links[k, 1]
-        if count > 0:
-            for i in range(first, first + count):
-                if cull and skip[i]:
-                    continue
-                tests += 1
-                t, w1, w2 = triangle_t(tris, i, kx, ky, kz, okx, oky, okz, sx, sy, sz)
-                if t_min < t and (
-                    t < best_t or (t == best_t and best != MISS and source[i] < source[best])
-                ):
-                    best_t, best, best_w1, best_w2 = t, i, w1, w2
-            continue
-        near_t = box_entry(bounds, first, ox, oy, oz, ix, iy, iz, columns, t_min, limit)
-        far_t = box_entry(bounds, first + 1, ox, oy, oz, ix, iy, iz, columns, t_min, limit)
-        near, far = first, first + 1
-        if far_t < near_t:
-            near, far, near_t, far_t = far, near, far_t, near_t
-        if far_t < math.inf:
-            stack[top] = far
-            stack_t[top] = far_t
-            top += 1
-        if near_t < math.inf:
-            stack[top] = near
-            stack_t[top] = near_t
-            top += 1
+        descend = False
+        if k_t <= limit:
+            nodes += 1
+            first = links[k, 0]
+            count = links[k, 1]
+            if count > 0:
+                for i in range(first, first + count):
+                    if cull and skip[i]:
+                        continue
+                    tests += 1
+                    t, w1, w2 = triangle_t(tris, i, kx, ky, kz, okx, oky, okz, sx, sy, sz)
+                    if t_min < t and (
+                        t < best_t or (t == best_t and best != MISS and source[i] < source[best])
+                    ):
+                        best_t, best, best_w1, best_w2 = t, i, w1, w2
+            else:
+                near_t = box_entry(bounds, first, ox, oy, oz, ix, iy, iz, columns, t_min, limit)
+                far_t = box_entry(bounds, first + 1, ox, oy, oz, ix, iy, iz, columns, t_min,
+                                  limit)
+                near, far = first, first + 1
+                if far_t < near_t:
+                    near, far, near_t, far_t = far, near, far_t, near_t
+                if near_t < math.inf:
+                    if far_t < math.inf:
+                        stack[top] = far
+                        stack_t[top] = far_t
+                        top += 1
+                    k, k_t = near, near_t
+                    descend = True
+        if not descend:
+            if top == 0:
+                break
+            top -= 1
+            k = stack[top]
+            k_t = stack_t[top]
     return best_t, best, best_w1, best_w2, nodes, tests
 
 
@@ -303,28 +312,44 @@ def any_triangle(bounds, links, tris, pass_through, ox, oy, oz, dx, dy, dz, t_mi
     columns = slab_columns(ix, iy, iz)
     kx, ky, kz, okx, oky, okz, sx, sy, sz = shear_setup(ox, oy, oz, dx, dy, dz)
     limit = t_max + abs(t_max) * BOX_SLACK
-    stack[0] = 0
-    top = 1
-    while top > 0:
-        top -= 1
-        k = stack[top]
-        if box_entry(bounds, k, ox, oy, oz, ix, iy, iz, columns, t_min, limit) == math.inf:
-            continue
+    if box_entry(bounds, 0, ox, oy, oz, ix, iy, iz, columns, t_min, limit) == math.inf:
+        return let_through, MISS, nodes, tests
+    k = 0
+    top = 0
+    while True:
+        # Node k's box is entered: test its triangles, or test both children's boxes here and
+        # go on with the second child entered (the first kept for later). The fixed order
+        # keeps the blocker found and the product of the fractions let through independent
+        # of the ray's direction.
         nodes += 1
         first = links[k, 0]
         count = links[k, 1]
         if count == 0:
-            stack[top] = first
-            stack[top + 1] = first + 1
-            top += 2
-            continue
-        for i in range(first, first + count):
-            tests += 1
-            t, _, _ = triangle_t(tris, i, kx, ky, kz, okx, oky, okz, sx, sy, sz)
-            if t_min < t < t_max:
-                if pass_through[i] == 0.0:
-                    return 0.0, i, nodes, tests
-                let_through *= pass_through[i]
+            enters_first = box_entry(bounds, first, ox, oy, oz, ix, iy, iz, columns, t_min,
+                                     limit) < math.inf
+            enters_second = box_entry(bounds, first + 1, ox, oy, oz, ix, iy, iz, columns, t_min,
+                                      limit) < math.inf
+            if enters_second:
+                if enters_first:
+                    stack[top] = first
+                    top += 1
+                k = first + 1
+                continue
+            if enters_first:
+                k = first
+                continue
+        else:
+            for i in range(first, first + count):
+                tests += 1
+                t, _, _ = triangle_t(tris, i, kx, ky, kz, okx, oky, okz, sx, sy, sz)
+                if t_min < t < t_max:
+                    if pass_through[i] == 0.0:
+                        return 0.0, i, nodes, tests
+                    let_through *= pass_through[i]
+        if top == 0:
+            break
+        top -= 1
+        k = stack[top]
     return let_through, MISS, nodes, tests
 
 
