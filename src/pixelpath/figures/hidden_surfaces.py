@@ -216,10 +216,7 @@ def scanline_frames(image: Any, report: Any) -> list[Image.Image]:
     20
     """
     rgb = _checked(image, report, SCAN_KEYS)
-    height = rgb.shape[0]
-    lines = math.ceil(height / FILL_FRAMES)
-    return [_scanline_frame(rgb, report, first, min(first + lines, height))
-            for first in range(0, height, lines)]
+    return [_scanline_frame(rgb, report, first, stop) for first, stop in _line_groups(rgb)]
 
 
 def scanline_figure(image: Any, report: Any) -> Image.Image:
@@ -235,9 +232,14 @@ def scanline_figure(image: Any, report: Any) -> Image.Image:
     'RGB'
     """
     rgb = _checked(image, report, SCAN_KEYS)
+    return _scanline_frame(rgb, report, *_line_groups(rgb)[-1])
+
+
+def _line_groups(rgb: np.ndarray) -> list[tuple[int, int]]:
+    """(first, stop) rows of each scan-line frame: at most FILL_FRAMES groups of lines."""
     height = rgb.shape[0]
     lines = math.ceil(height / FILL_FRAMES)
-    return _scanline_frame(rgb, report, (height - 1) // lines * lines, height)
+    return [(first, min(first + lines, height)) for first in range(0, height, lines)]
 
 
 SCAN_KEYS = ("active edges", "spans", "spans compared by depth", "span splits")
@@ -315,7 +317,7 @@ def warnock_frames(image: Any, report: Any) -> list[Image.Image]:
     >>> len(warnock_frames(image, report)) == report.summary["levels"]
     True
     """
-    rgb = _checked(image, report, ["levels", "level", "decision", "areas"])
+    rgb = _checked(image, report, WARNOCK_KEYS)
     levels = len(report.arrays["levels"])
     return [_warnock_frame(rgb, report, level) for level in range(levels)]
 
@@ -332,7 +334,7 @@ def warnock_figure(image: Any, report: Any) -> Image.Image:
     >>> warnock_figure(*pp.render(scene, method="warnock", explain=True)).mode
     'RGB'
     """
-    rgb = _checked(image, report, ["levels", "level", "decision", "areas"])
+    rgb = _checked(image, report, WARNOCK_KEYS)
     return _warnock_frame(rgb, report, len(report.arrays["levels"]) - 1)
 
 
@@ -418,12 +420,8 @@ def order_frames(image: Any, report: Any) -> list[Image.Image]:
     """
     rgb = _checked(image, report, ORDER_KEYS)
     order = np.asarray(report.arrays["order"])
-    group = max(1, math.ceil(len(order) / ORDER_FRAMES))
-    frames = []
-    for stop in range(group, len(order) + group, group):
-        stop = min(stop, len(order))
-        frames.append(_order_board(rgb, report, order, stop - group, stop).image)
-    return frames
+    return [_order_board(rgb, report, order, first, stop).image
+            for first, stop in _order_groups(np.arange(1, len(order) + 1))]
 
 
 def order_figure(image: Any, report: Any) -> Image.Image:
@@ -444,6 +442,23 @@ def order_figure(image: Any, report: Any) -> Image.Image:
 
 
 ORDER_KEYS = ("order", "triangles", "object", "split")
+WARNOCK_KEYS = ("levels", "level", "decision", "areas")
+OCTREE_KEYS = ("cell footprint", "cell level", "cell is leaf", "cell outcome")
+BSP_KEYS = (*ORDER_KEYS, "node", "children", "eye in front")
+
+
+def _order_groups(ends: np.ndarray) -> list[tuple[int, int]]:
+    """(first, stop) in the drawing order of each frame, at most ORDER_FRAMES of them.
+
+    ``ends`` lists where each step of the drawing ends (a polygon, or a BSP node's polygons);
+    a frame holds ``ceil(len(ends) / ORDER_FRAMES)`` steps, the last frame the last ones.
+    """
+    group = max(1, math.ceil(len(ends) / ORDER_FRAMES))
+    spans = []
+    for k in range(group - 1, len(ends) + group - 1, group):
+        k = min(k, len(ends) - 1)
+        spans.append((int(ends[k - group]) if k >= group else 0, int(ends[k])))
+    return spans
 
 
 def _order_board(rgb: np.ndarray, report: Any, order: np.ndarray, first: int, stop: int,
@@ -507,19 +522,13 @@ def bsp_frames(image: Any, report: Any) -> list[Image.Image]:
     >>> len(bsp_frames(*pp.render(scene, method="bsp", explain=True)))  # 3 faces, 3 nodes
     3
     """
-    rgb = _checked(image, report, [*ORDER_KEYS, "node", "children", "eye in front"])
+    rgb = _checked(image, report, BSP_KEYS)
     order = np.asarray(report.arrays["order"])
     nodes = np.asarray(report.arrays["node"])[order]
     # Where each node's polygons end in the order (a node's polygons are painted together).
     ends = np.flatnonzero(np.r_[nodes[1:] != nodes[:-1], True]) + 1
-    group = max(1, math.ceil(len(ends) / ORDER_FRAMES))
-    frames = []
-    for k in range(group - 1, len(ends) + group - 1, group):
-        k = min(k, len(ends) - 1)
-        stop = int(ends[k])
-        first = int(ends[k - group]) if k >= group else 0
-        frames.append(_bsp_board(rgb, report, order, first, stop).image)
-    return frames
+    return [_bsp_board(rgb, report, order, first, stop).image
+            for first, stop in _order_groups(ends)]
 
 
 def bsp_figure(image: Any, report: Any) -> Image.Image:
@@ -538,7 +547,7 @@ def bsp_figure(image: Any, report: Any) -> Image.Image:
     >>> bsp_figure(*pp.render(scene, method="bsp", explain=True)).mode
     'RGB'
     """
-    rgb = _checked(image, report, [*ORDER_KEYS, "node", "children", "eye in front"])
+    rgb = _checked(image, report, BSP_KEYS)
     order = np.asarray(report.arrays["order"])
     return _bsp_board(rgb, report, order, max(len(order) - 1, 0), len(order)).image
 
@@ -663,8 +672,7 @@ def octree_frames(image: Any, report: Any) -> list[Image.Image]:
     >>> len(octree_frames(*pp.render(scene, method="octree", explain=True)))  # one leaf
     1
     """
-    rgb = _checked(image, report, ["cell footprint", "cell level", "cell is leaf",
-                                   "cell outcome"])
+    rgb = _checked(image, report, OCTREE_KEYS)
     levels = np.asarray(report.arrays["cell level"])
     depth = int(levels.max(initial=0))
     return [_octree_board(rgb, report, levels == level, f"level {level} of {depth}")
@@ -683,8 +691,7 @@ def octree_figure(image: Any, report: Any) -> Image.Image:
     >>> octree_figure(*pp.render(scene, method="octree", explain=True)).mode
     'RGB'
     """
-    rgb = _checked(image, report, ["cell footprint", "cell level", "cell is leaf",
-                                   "cell outcome"])
+    rgb = _checked(image, report, OCTREE_KEYS)
     outcome = np.asarray(report.arrays["cell outcome"])
     shown = np.asarray(report.arrays["cell is leaf"]) | (outcome == 2)
     return _octree_board(rgb, report, shown, "all levels")

@@ -37,12 +37,12 @@ they are decided.
 
 from __future__ import annotations
 
-import concurrent.futures
 import dataclasses
 import time
 
 import numpy as np
 
+from pixelpath._threads import in_runs
 from pixelpath.hsr import pipeline
 from pixelpath.renderer import Frame, RenderOptions, View
 from pixelpath.scene import Scene
@@ -272,8 +272,6 @@ def _traverse(octree: Octree, prepared: pipeline.Prepared, view: View,
     Returns the counts (bands, levels, k) and the cells' footprints with what each band did
     with each node (``record``; else an empty table).
     """
-    import numba
-
     from pixelpath.hsr._kernels import octree as kernels
     from pixelpath.raster._arrays import kernel_array
 
@@ -296,13 +294,7 @@ def _traverse(octree: Octree, prepared: pipeline.Prepared, view: View,
         kernels.traverse(tree, rects, outside, eye, scan, bands, view.x0, view.y0, *visibility,
                          *work, stats, outcomes)
 
-    # Bands are independent: threads take them one at a time (the kernel releases the GIL).
-    workers = min(numba.get_num_threads(), count)
-    if workers <= 1:
-        run(order)
-    else:
-        with concurrent.futures.ThreadPoolExecutor(workers) as pool:
-            list(pool.map(run, np.array_split(order, count)))
+    in_runs(run, order)  # bands are independent (the kernel releases the GIL)
     return stats, (rects, outcomes)
 
 
