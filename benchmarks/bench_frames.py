@@ -7,6 +7,9 @@ files three ways, in the same run:
 - on a local Dask cluster of 1 worker process and of 2 worker processes, one Numba thread each
   (workers warmed and the scene scattered before the clock starts: that cost is printed apart);
 
+in ``--rounds`` rounds (3), each in another order (the shared machine's speed drifts over a run,
+so no run always goes first), printing every round and the medians;
+
 then Dask's per-task overhead: tasks that take the scattered scene and return nothing, timed
 over many, on the 2-worker cluster. The anchor is the serial run: a cluster must beat it.
 
@@ -14,7 +17,8 @@ over many, on the 2-worker cluster. The anchor is the serial run: a cluster must
 command line (the request is checked by rendering one pixel here, then the cluster starts and
 its workers warm up): run it with an empty compile cache::
 
-    python benchmarks/bench_frames.py [--frames 120] [--size 640x400] [--empty-tasks 2000]
+    python benchmarks/bench_frames.py [--frames 120] [--size 640x400] [--rounds 3]
+        [--empty-tasks 2000]
     PIXELPATH_CACHE_DIR=$(mktemp -d) python benchmarks/bench_frames.py --cold
 """
 
@@ -22,6 +26,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import statistics
 import tempfile
 import time
 from pathlib import Path
@@ -103,10 +108,42 @@ def cold(scene) -> None:
     print(f"cold total before the first frame:                        {warmed:6.1f} s")
 
 
+RUNS = ("serial", 1, 2)  # the serial run, then local clusters of 1 and 2 worker processes
+
+
+def timed_round(scene, frames: range, folder: Path, order: tuple) -> dict:
+    """Return {run: (seconds to start and warm, seconds for the frames)} for runs in ``order``."""
+    times = {}
+    for run in order:
+        if run == "serial":
+            times[run] = (None, serial(scene, frames, folder))
+        else:
+            times[run] = on_cluster(scene, frames, folder, run)
+    return times
+
+
+def rotations(runs: tuple, count: int) -> list[tuple]:
+    """``count`` orders of ``runs``, each starting one later: each run goes first in turn.
+
+    The machine's speed drifts over a run (a shared host): rotating the order keeps a run that
+    always comes first, or last, from taking the drift alone.
+    """
+    return [runs[i % len(runs) :] + runs[: i % len(runs)] for i in range(count)]
+
+
+def same_files(folder: Path) -> bool:
+    names = sorted(path.name for path in folder.glob("serial_*.png"))
+    return bool(names) and all(
+        (folder / name).read_bytes() == (folder / name.replace("serial", "w2")).read_bytes()
+        for name in names
+    )
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--frames", type=int, default=120)
     parser.add_argument("--size", default="640x400")
+    parser.add_argument("--rounds", type=int, default=3, help="rounds of all three runs")
     parser.add_argument("--empty-tasks", type=int, default=2000)
     parser.add_argument("--cold", action="store_true", help="time a cold cluster instead")
     args = parser.parse_args()
@@ -117,25 +154,35 @@ def main() -> None:
     frames = range(args.frames)
     cores = len(os.sched_getaffinity(0))
     print(f"showcase turntable, {args.frames} frames at {args.size}, PNG files, {cores} cores")
+    rounds = []
     with tempfile.TemporaryDirectory() as folder:
-        seconds = serial(scene, frames, Path(folder))
-        rows = [("serial, 1 process, Numba threads on all cores", None, seconds)]
-        for workers in (1, 2):
-            ready, seconds = on_cluster(scene, frames, Path(folder), workers)
-            label = f"Dask, {workers} worker process{'es' * (workers > 1)}, 1 Numba thread each"
-            rows.append((label, ready, seconds))
-        names = sorted(path.name for path in Path(folder).glob("serial_*.png"))
-        same = all(
-            (Path(folder) / name).read_bytes()
-            == (Path(folder) / name.replace("serial", "w2")).read_bytes()
-            for name in names
-        )
-    base = rows[0][2]
+        for order in rotations(RUNS, args.rounds):
+            times = timed_round(scene, frames, Path(folder), order)
+            rounds.append(times)
+            fps = "  ".join(f"{run}: {args.frames / times[run][1]:5.1f}" for run in order)
+            ratio = times[1][1] / times[2][1]
+            print(f"round, frames/s in the order run: {fps}  2w/1w {ratio:.2f}x")
+        same = same_files(Path(folder))
+    seconds = {run: statistics.median(times[run][1] for times in rounds) for run in RUNS}
+    ready = {run: statistics.median(times[run][0] for times in rounds) for run in RUNS[1:]}
+    labels = {
+        "serial": "serial, 1 process, Numba threads on all cores",
+        1: "Dask, 1 worker process, 1 Numba thread each",
+        2: "Dask, 2 worker processes, 1 Numba thread each",
+    }
+    print(f"medians of {args.rounds} rounds:")
     print(f"{'':52} {'frames/s':>9} {'vs serial':>10} {'start+warm':>11}")
-    for label, ready, seconds in rows:
-        start = "" if ready is None else f"{ready:.1f} s"
-        print(f"{label:52} {args.frames / seconds:9.1f} {base / seconds:9.2f}x {start:>11}")
-    print(f"2 workers / 1 worker: {rows[1][2] / rows[2][2]:.2f}x")
+    for run, label in labels.items():
+        start = f"{ready[run]:.1f} s" if run in ready else ""
+        print(
+            f"{label:52} {args.frames / seconds[run]:9.1f} "
+            f"{seconds['serial'] / seconds[run]:9.2f}x {start:>11}"
+        )
+    ratios = sorted(times[1][1] / times[2][1] for times in rounds)
+    print(
+        f"2 workers / 1 worker: {statistics.median(ratios):.2f}x median of the rounds' ratios "
+        f"({', '.join(f'{ratio:.2f}' for ratio in ratios)})"
+    )
     print(f"files of the 2-worker run byte-identical to the serial run: {same}")
     two, one = task_overhead(scene, args.empty_tasks)
     print(

@@ -73,7 +73,7 @@ def test_resume_on_the_cluster_renders_only_missing_frames(client, tmp_path):
     (tmp_path / "f_2.png").write_bytes(b"\x89PNG\r\n\x1a\n")  # a frame cut short
     done = []
     pp.render_frames(scene, range(6), client, out=pattern, resume=True, progress=done.append)
-    assert len(done) == 4  # frames 1, 2, 3 and 5
+    assert sum(done) == 4  # frames 1, 2, 3 and 5
     assert _serial_files(scene, range(6), tmp_path / "serial") == {
         f"f_{frame:03d}.png": (tmp_path / f"f_{frame}.png").read_bytes() for frame in range(6)
     }
@@ -126,5 +126,7 @@ def test_a_frame_lost_with_workers_too_often_is_named():
 
     future = types.SimpleNamespace(status="error", result=lost)
     with pytest.raises(RuntimeError, match="frame 7 was lost with a worker too many times"):
-        run._result(future, None, 7)
-    assert run._result(types.SimpleNamespace(status="finished"), b"png", 7) == b"png"
+        run._result(future, None, [(7, 0), (7, 1)])
+    with pytest.raises(RuntimeError, match=r"frames \[7, 8\] were lost with a worker"):
+        run._result(future, None, [(7, 0), (8, 0)])
+    assert run._result(types.SimpleNamespace(status="finished"), [b"png"], [(7, 0)]) == [b"png"]

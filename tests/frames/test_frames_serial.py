@@ -8,6 +8,8 @@ import sys
 import numpy as np
 import pytest
 from frame_scenes import animated_scene
+from hypothesis import given
+from hypothesis import strategies as st
 
 import pixelpath as pp
 from pixelpath.frames import frame_is_complete, plan_frames, render_frame
@@ -166,3 +168,16 @@ def test_rendering_one_image_does_not_import_dask():
 def _as_file(image, folder):
     image.save(folder / "reference.png")
     return pp.io.read_image(folder / "reference.png")
+
+
+@given(count=st.integers(0, 500), workers=st.integers(1, 64))
+def test_cluster_batches_keep_every_task_once_in_order(count, workers):
+    from pixelpath.frames.run import MOST_TASKS_PER_BATCH, _batches
+
+    tasks = list(range(count))
+    batches = _batches(tasks, workers)
+    sizes = [len(batch) for batch in batches]
+    assert [task for batch in batches for task in batch] == tasks
+    assert all(1 <= size <= MOST_TASKS_PER_BATCH for size in sizes)
+    assert sizes == sorted(sizes, reverse=True)  # large first, the short ones even out the end
+    assert not sizes or sizes[-1] == 1

@@ -60,7 +60,8 @@ def render_frames(
     gamma : float, optional
         Display gamma the files are encoded with, as ``Image.save``.
     progress : callable, optional
-        Called with 1 each time a task (a frame, or a tile) completes.
+        Called with a count of frames (or tiles) each time some complete: one at a time
+        here, a batch at a time on a cluster.
     **options
         Keywords of :func:`pixelpath.render`: ``method``, ``shading``, ``backface_cull``,
         ``ssaa``, ``blinn``, ``style``, ``max_depth``, ``samples``.
@@ -165,6 +166,12 @@ class _Frames:
         write_bytes(self.plan.paths[frame], data)
 
 
+# A task's share of what is left: a few tasks a worker keep every worker busy to the end.
+BATCHES_PER_WORKER = 4
+# Batches stay short enough that progress and retries after a lost worker stay fine-grained.
+MOST_TASKS_PER_BATCH = 8
+
+
 def _run_on(
     client: Any,
     scene: Scene,
@@ -173,32 +180,40 @@ def _run_on(
     frames: _Frames,
     advance: Progress,
 ) -> None:
-    """Run ``tasks`` on a Dask cluster; the scene goes to each worker once, before them."""
+    """Run ``tasks`` on a Dask cluster; the scene goes to each worker once, before them.
+
+    Tasks go to the cluster in batches (:func:`_batch_sizes`), each run in turn on one worker:
+    the scheduler's cost is per batch, not per frame.
+    """
     from distributed import as_completed
 
     from pixelpath.frames.cluster import warm_workers
 
     warm_workers(client, options)
     run = uuid.uuid4().hex[:8]
+    workers = max(1, len(client.scheduler_info()["workers"]))
     shared = client.scatter(scene, broadcast=True, hash=False)
     futures = {}
     try:
         for function, group in _by_function(tasks):
-            places = [(frame, tile) for _, frame, tile, _ in group]
-            keys = [f"pixelpath-{run}-frame-{frame}-tile-{tile}" for frame, tile in places]
-            numbers = [frame for frame, _ in places]
-            columns = zip(*(args for *_, args in group), strict=True)
+            batches = _batches(group, workers)
+            first = [batch[0] for batch in batches]
+            keys = [f"pixelpath-{run}-frame-{frame}-tile-{tile}" for _, frame, tile, _ in first]
+            calls = [[(frame, *args) for _, frame, _, args in batch] for batch in batches]
             submitted = client.map(
-                function, [shared] * len(group), numbers, *columns, key=keys, pure=False
+                work.in_turn, [function] * len(batches), [shared] * len(batches), calls,
+                key=keys, pure=False,
             )
-            futures.update(zip(submitted, places, strict=True))
+            futures.update(zip(submitted, batches, strict=True))
         # Results come with their futures, fetched by the client's event loop: asking each
         # future for its result from this thread costs a round trip to that loop per task.
-        for future, result in as_completed(futures, with_results=True, raise_errors=False):
-            frame, tile = futures[future]
-            frames.add(frame, tile, _result(future, result, frame))
+        for future, results in as_completed(futures, with_results=True, raise_errors=False):
+            batch = futures[future]
+            places = [(frame, tile) for _, frame, tile, _ in batch]
+            for (frame, tile), result in zip(places, _result(future, results, places), strict=True):
+                frames.add(frame, tile, result)
             future.release()
-            advance(1)
+            advance(len(batch))
     finally:
         client.cancel([*futures, shared])
 
@@ -211,16 +226,49 @@ def _by_function(tasks: list) -> list[tuple[Callable, list]]:
     return list(groups.items())
 
 
-def _result(future: Any, result: Any, frame: int) -> Any:
-    """Return a finished task's ``result``; else raise its error (a lost frame explained)."""
+def _batches(tasks: list, workers: int) -> list[list]:
+    """Split ``tasks`` into consecutive batches of :func:`_batch_sizes`."""
+    batches, start = [], 0
+    for size in _batch_sizes(len(tasks), workers):
+        batches.append(tasks[start : start + size])
+        start += size
+    return batches
+
+
+def _batch_sizes(count: int, workers: int) -> list[int]:
+    """Return batch sizes for ``count`` tasks on ``workers``: large first, single ones last.
+
+    Each batch takes a ``1 / (BATCHES_PER_WORKER * workers)`` share of the tasks left (at most
+    ``MOST_TASKS_PER_BATCH``), so the scheduler handles few tasks while the last, short ones
+    even out when the workers finish (guided self-scheduling).
+
+    Examples
+    --------
+    >>> _batch_sizes(40, 2)
+    [5, 4, 3, 3, 3, 2, 2, 2, 2, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1]
+    >>> sum(_batch_sizes(120, 2)), max(_batch_sizes(120, 2)), _batch_sizes(3, 1)
+    (120, 8, [1, 1, 1])
+    """
+    sizes = []
+    while count:
+        size = min(MOST_TASKS_PER_BATCH, max(1, count // (BATCHES_PER_WORKER * workers)))
+        sizes.append(size)
+        count -= size
+    return sizes
+
+
+def _result(future: Any, results: Any, places: list[tuple[int, int]]) -> Any:
+    """Return a finished batch's ``results``; else raise its error (lost frames named)."""
     from distributed import KilledWorker
 
     if future.status == "finished":
-        return result
+        return results
     try:
         return future.result()  # raises the task's exception, with its traceback
     except KilledWorker as exc:
+        numbers = sorted({frame for frame, _ in places})
+        named = f"frame {numbers[0]} was" if len(numbers) == 1 else f"frames {numbers} were"
         raise RuntimeError(
-            f"frame {frame} was lost with a worker too many times ({exc}); see Dask's "
+            f"{named} lost with a worker too many times ({exc}); see Dask's "
             f"distributed.scheduler.allowed-failures"
         ) from None

@@ -7,7 +7,7 @@ frame rendered on a worker is the frame rendered here, to the byte.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from typing import Any
 
 import numpy as np
@@ -51,6 +51,23 @@ def frame_file(
     b'PNG'
     """
     return encode(render_frame(scene, frame, options), suffix, gamma)
+
+
+def in_turn(function: Callable, scene: Scene, calls: Sequence[tuple]) -> list:
+    """Return ``[function(scene, *call) for call in calls]``: several frames as one task.
+
+    A cluster's scheduler spends a few milliseconds of CPU on every task, whatever it does; a
+    task of several frames pays that once for all of them.
+
+    Examples
+    --------
+    >>> import pixelpath as pp
+    >>> from pixelpath.frames.work import in_turn, render_frame
+    >>> scene = pp.Scene(pp.Camera(eye=(0, 0, 5), target=(0, 0, 0), width=8, height=6))
+    >>> [image.shape for image in in_turn(render_frame, scene, [(0, {}), (1, {})])]
+    [(6, 8, 3), (6, 8, 3)]
+    """
+    return [function(scene, *call) for call in calls]
 
 
 def warm_up(options: dict[str, Any]) -> None:
