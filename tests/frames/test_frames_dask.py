@@ -61,7 +61,7 @@ def test_the_scene_reaches_each_worker_once(client):
     before = client.run(unpickled_count)
     images = pp.render_frames(scene, range(12), client, tiles=(2, 1))
     after = client.run(unpickled_count)
-    assert len(images) == 12  # 24 tasks, each naming the scene
+    assert len(images) == 12  # 24 tiles in batches, each batch naming the scene
     assert sorted(after) == sorted(before) and len(after) == 2
     assert all(after[worker] - before[worker] == 1 for worker in after)
 
