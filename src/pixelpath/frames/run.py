@@ -1,12 +1,13 @@
 """``render_frames``: many frames (and tiles of frames), in this process or on a Dask cluster.
 
-Each task is one of the pure functions of :mod:`pixelpath.frames.work` applied to the scene,
-a frame number and the render options. In this process they run one after another (each frame
-uses Numba's threads on every core). With a ``dask.distributed`` client the scene is scattered
-to every worker once, before any task, and tasks name it by its key; a task lost with a worker
-that died is run again on another (Dask retries it up to its ``allowed-failures``). Files are
-written here, atomically, as frames complete: tasks return the encoded bytes, or tiles that are
-stitched here, so workers need no shared disk.
+Each piece of work is one of the pure functions of :mod:`pixelpath.frames.work` applied to the
+scene, a frame number and the render options. In this process they run one after another (each
+frame uses Numba's threads on every core). With a ``dask.distributed`` client the scene is
+scattered to every worker once, before any task, and tasks name it by its key; consecutive
+pieces go to the cluster in batches, one task each (:func:`_batch_sizes`), and a task lost
+with a worker that died is run again on another, its whole batch (Dask retries it up to its
+``allowed-failures``). Files are written here, atomically, as batches complete: tasks return
+the encoded bytes, or tiles that are stitched here, so workers need no shared disk.
 """
 
 from __future__ import annotations
