@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from PIL import Image
+from gif_frames import gif_frames
 
 from pixelpath.cli import main
 from pixelpath.clip import Rect, sutherland_hodgman, weiler_atherton
@@ -16,15 +16,6 @@ WINDOW = Rect(2, 2, 8, 6)
 NOTCHED = [(0, 0), (6, 0), (6, 6), (0, 6), (0, 4), (4, 4), (4, 2), (0, 2)]
 
 
-def _gif_frames(path) -> list[np.ndarray]:
-    with Image.open(path) as gif:
-        frames = []
-        for index in range(gif.n_frames):
-            gif.seek(index)
-            frames.append(np.asarray(gif.convert("RGB")))
-    return frames
-
-
 def _mask(frame: np.ndarray, colour: str) -> np.ndarray:
     return np.all(frame == np.array(COLOURS[colour], dtype=frame.dtype), axis=-1)
 
@@ -34,13 +25,13 @@ def test_animation_has_one_frame_per_step_and_the_result(tmp_path):
     steps = sum(len(stage.steps) for stage in trace.stages)
     path = trace.animate(tmp_path / "steps.gif")
     assert steps == 16
-    assert len(_gif_frames(path)) == steps + 1
+    assert len(gif_frames(path)) == steps + 1
 
 
 def test_each_frame_highlights_exactly_the_points_its_step_emits(tmp_path):
     """The red dots of frame k sit on the pixels of step k's emitted points, and nowhere else."""
     _, trace = sutherland_hodgman(SQUARE, WINDOW, trace=True)
-    frames = _gif_frames(trace.animate(tmp_path / "steps.gif"))
+    frames = gif_frames(trace.animate(tmp_path / "steps.gif"))
     view = _clip_view(trace)
     left, width = DRAWING_BOX[0], DRAWING_BOX[2]
     steps = [step for stage in trace.stages for step in stage.steps]
@@ -70,7 +61,7 @@ def test_first_stage_frame_shades_the_inside_of_the_left_boundary():
 
 def test_walk_animation_frame_count(tmp_path):
     _, trace = weiler_atherton(NOTCHED, Rect(-1, -1, 3, 7), trace=True)
-    assert len(_gif_frames(trace.animate(tmp_path / "walk.gif"))) == 4 + len(trace.steps) + 1
+    assert len(gif_frames(trace.animate(tmp_path / "walk.gif"))) == 4 + len(trace.steps) + 1
     assert len(walk_frames(trace)) == 4 + len(trace.steps) + 1
 
 
@@ -88,7 +79,7 @@ def test_figures_and_rich_display():
 def test_cli_animate_writes_the_gif(tmp_path, capsys):
     path = tmp_path / "steps.gif"
     assert main(["clip", "1,1 9,1 9,7 1,7", "--window", "2,2,8,6", "--animate", str(path)]) == 0
-    assert len(_gif_frames(path)) == 17
+    assert len(gif_frames(path)) == 17
     walk = tmp_path / "walk.gif"
     args = ["clip", "0,0 6,0 6,6 0,6 0,4 4,4 4,2 0,2", "--window=-1,-1,3,7",
             "--method", "weiler-atherton", "--animate", str(walk)]

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from gif_frames import gif_frames
 from PIL import Image
 
 import pixelpath as pp
@@ -56,15 +57,6 @@ def _panel_pixel(figure: Image.Image | np.ndarray, panel: int, x: float, y: floa
                                        left + int((x + 0.5) * scale)])
 
 
-def _gif_frames(path) -> list[np.ndarray]:
-    with Image.open(path) as gif:
-        frames = []
-        for index in range(gif.n_frames):
-            gif.seek(index)
-            frames.append(np.asarray(gif.convert("RGB")))
-    return frames
-
-
 # Two triangles in opposite quarters of a 16 x 16 image: top-left and bottom-right.
 TOP_LEFT = [(1, 1), (1, 6), (6, 1)]
 BOTTOM_RIGHT = [(9, 9), (9, 15), (15, 9)]
@@ -80,7 +72,7 @@ def test_warnock_frames_one_per_level_coloured_by_decision(tmp_path):
     # the top-left and bottom-right hold one triangle each ("single polygon"), the other two
     # none ("empty"). Two levels.
     image, report = pp.render(_quarters_scene(), method="warnock", explain=True)
-    frames = _gif_frames(report.animate(tmp_path / "levels.gif"))
+    frames = gif_frames(report.animate(tmp_path / "levels.gif"))
     assert len(frames) == 2
     first, last = frames
     # Level 1: nothing decided yet; the whole image is outlined where it is cut.

@@ -81,6 +81,13 @@ def open_page(driver, playground, path: str) -> None:
              f"{path} did not load")
 
 
+def open_clipping(driver, playground) -> None:
+    """Open the clipping page and wait for its first Sutherland-Hodgman table."""
+    open_page(driver, playground, "/clipping")
+    wait_for(driver, lambda d: d.find_elements(By.CSS_SELECTOR, "#sh-table tbody tr"),
+             "the Sutherland-Hodgman table did not appear")
+
+
 def test_home_page_links_every_page(browser, playground):
     open_page(browser, playground, "/")
     links = [a.get_attribute("href") for a in browser.find_elements(By.CSS_SELECTOR, "nav a")]
@@ -91,9 +98,7 @@ def test_home_page_links_every_page(browser, playground):
 
 
 def test_clipping_drag_a_vertex_and_step_through_the_table(browser, playground):
-    open_page(browser, playground, "/clipping")
-    wait_for(browser, lambda d: d.find_elements(By.CSS_SELECTOR, "#sh-table tbody tr"),
-             "the Sutherland-Hodgman table did not appear")
+    open_clipping(browser, playground)
     wait_for(browser, lambda d: len(d.find_elements(By.CSS_SELECTOR, ".wa-piece")) == 2,
              "Weiler-Atherton's two pieces of the concave example did not appear")
     assert browser.find_elements(By.CSS_SELECTOR, "line.bridge")
@@ -124,9 +129,7 @@ def test_clipping_drag_a_vertex_and_step_through_the_table(browser, playground):
 
 
 def test_clipping_window_corner_drag_keeps_a_rectangle(browser, playground):
-    open_page(browser, playground, "/clipping")
-    wait_for(browser, lambda d: d.find_elements(By.CSS_SELECTOR, "#sh-table tbody tr"),
-             "the Sutherland-Hodgman table did not appear")
+    open_clipping(browser, playground)
     corner = browser.find_element(By.CSS_SELECTOR, "rect.handle.corner[data-index='2']")
     ActionChains(browser).click_and_hold(corner).move_by_offset(80, 0).release().perform()
     # The window's right side moved from x = 6 to x = 8, so the bridge now lies on x = 8.

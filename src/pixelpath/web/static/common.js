@@ -1,4 +1,4 @@
-// Shared by every page of the playground: navigation, API calls, number formatting.
+// Shared by every page of the playground: navigation, API calls, number formatting, clicks.
 "use strict";
 
 const PAGES = [
@@ -153,3 +153,11 @@ document.addEventListener("DOMContentLoaded", () => {
   buildNavigation();
   showSliderValues();
 });
+
+// The image pixel (x, y) under a click on an image drawn at any size, clamped to the image.
+function clickedPixel(event, width, height) {
+  const box = event.target.getBoundingClientRect();
+  const x = Math.floor(((event.clientX - box.left) / box.width) * width);
+  const y = Math.floor(((event.clientY - box.top) / box.height) * height);
+  return [Math.min(Math.max(x, 0), width - 1), Math.min(Math.max(y, 0), height - 1)];
+}

@@ -76,10 +76,7 @@ function markPoint() {
 }
 
 function pick(event) {
-  const box = event.target.getBoundingClientRect();
-  const x = Math.floor(((event.clientX - box.left) / box.width) * SIZE);
-  const y = Math.floor(((event.clientY - box.top) / box.height) * SIZE);
-  picked = [Math.min(Math.max(x, 0), SIZE - 1), Math.min(Math.max(y, 0), SIZE - 1)];
+  picked = clickedPixel(event, SIZE, SIZE);
   explainPoint();
 }
 

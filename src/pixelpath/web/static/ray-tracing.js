@@ -101,10 +101,7 @@ function nodeItem(node) {
 }
 
 function pick(event) {
-  const box = event.target.getBoundingClientRect();
-  const x = Math.floor(((event.clientX - box.left) / box.width) * WIDTH);
-  const y = Math.floor(((event.clientY - box.top) / box.height) * HEIGHT);
-  picked = [Math.min(Math.max(x, 0), WIDTH - 1), Math.min(Math.max(y, 0), HEIGHT - 1)];
+  picked = clickedPixel(event, WIDTH, HEIGHT);
   trace();
 }
 
