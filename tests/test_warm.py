@@ -24,19 +24,36 @@ def test_every_method_groups_name_known_groups():
 
 
 def test_groups_for_lists_each_group_once_in_table_order():
-    assert _warm.groups_for(["warnock", "zbuffer", "warnock"]) == ("front", "back", "warnock")
+    assert _warm.groups_for(["warnock", "zbuffer", "warnock"], ["phong"]) == (
+        "front", "back", "shade", "warnock")
     assert _warm.groups_for([]) == ()
 
 
+def test_groups_for_adds_vertex_shading_to_raster_methods_only():
+    assert _warm.groups_for(["zbuffer"], ["phong"]) == ("front", "back")
+    assert _warm.groups_for(["zbuffer"], ["flat", "phong"]) == ("front", "vertex-shading", "back")
+    assert _warm.groups_for(["zbuffer"]) == ("front", "vertex-shading", "back")  # every mode
+    assert "vertex-shading" not in _warm.groups_for(["raytrace", "wireframe"], ["flat"])
+
+
 def test_shares_balance_the_estimated_seconds(tmp_path):
-    groups = ["front", "back", "scan", "clip", "color"]  # 5.0, 6.5, 1.5, 4.0, 4.0
+    groups = ["front", "back", "scan", "clip", "color"]  # 4.5, 6.0, 1.5, 4.0, 4.0
     shares = _warm._share_out(groups, 2, tmp_path)
     assert sorted(g for share in shares for g in share) == sorted(groups)
     loads = [sum(_warm.GROUPS[g][1] for g in share) for share in shares]
-    assert loads == [10.5, 10.5]  # back+clip, front+color+scan: the greedy split is even here
+    assert loads == [10.0, 10.0]  # back+color, front+clip+scan: the greedy split is even here
     assert _warm._share_out(groups, 8, tmp_path) == [[g] for g in sorted(
         groups, key=lambda g: -_warm.GROUPS[g][1])]
     assert _warm._share_out([], 4, tmp_path) == []
+
+
+def test_a_group_that_follows_another_shares_its_process_after_it(tmp_path):
+    for follower, leader in _warm.FOLLOWS.items():
+        shares = _warm._share_out([follower, "front", leader, "scan"], 8, tmp_path)
+        with_leader = [share for share in shares if leader in share]
+        assert with_leader == [[leader, follower]]
+        assert len(shares) == 3
+        assert _warm._share_out([follower, "scan"], 8, tmp_path) == [[follower], ["scan"]]
 
 
 def test_recorded_seconds_replace_the_estimate(tmp_path):

@@ -31,7 +31,10 @@ from dataclasses import dataclass
 from pathlib import Path
 
 __all__ = [
+    "FOLLOWS",
     "GROUPS",
+    "METHOD_GROUPS",
+    "SHADING_GROUPS",
     "WarmupReport",
     "cold_groups",
     "compile_groups",
@@ -46,8 +49,10 @@ __all__ = [
 # on; only used to share out work and to say how long a first run will take, before anything
 # was measured here).
 GROUPS: dict[str, tuple[str, float]] = {
-    "front": ("pixelpath.raster._kernels:warm_front", 5.0),
-    "back": ("pixelpath.raster._kernels:warm_back", 6.5),
+    "front": ("pixelpath.raster._kernels:warm_front", 4.5),
+    "vertex-shading": ("pixelpath.raster._kernels:warm_vertex_shading", 1.0),
+    "back": ("pixelpath.raster._kernels:warm_back", 6.0),
+    "shade": ("pixelpath.raster._kernels:warm_shade", 5.0),
     "scan": ("pixelpath.raster._kernels:warm_scan", 1.5),
     "scanline": ("pixelpath.hsr._kernels.scanline:warmup", 4.5),
     "warnock": ("pixelpath.hsr._kernels.warnock:warmup", 5.0),
@@ -67,15 +72,27 @@ GROUPS: dict[str, tuple[str, float]] = {
 # The groups a render with each hidden-surface method calls, and those a drawing style adds.
 METHOD_GROUPS: dict[str, tuple[str, ...]] = {
     "zbuffer": ("front", "back"),
-    "scanline": ("front", "back", "scanline"),
-    "warnock": ("front", "back", "warnock"),
-    "painter": ("front", "back", "scan", "painter"),
-    "bsp": ("front", "back", "scan", "bsp"),
-    "octree": ("front", "back", "octree"),
+    "scanline": ("front", "shade", "scanline"),
+    "warnock": ("front", "shade", "warnock"),
+    "painter": ("front", "shade", "scan", "painter"),
+    "bsp": ("front", "shade", "scan", "bsp"),
+    "octree": ("front", "shade", "octree"),
     "raytrace": ("lighting", "raytrace-bvh", "raytrace"),
     "wireframe": ("lines",),
     "hidden-line": ("lines",),
 }
+
+# What the raster methods (those that run the front end) add for a shading mode: flat and
+# Gouraud shading light points before rasterizing, Phong shading only per pixel.
+SHADING_GROUPS: dict[str, tuple[str, ...]] = {
+    "flat": ("vertex-shading",),
+    "gouraud": ("vertex-shading",),
+    "phong": (),
+}
+
+# Groups that call another group's kernels: when both are cold they compile in one process,
+# the caller after the callee, whose kernels it then reuses instead of compiling them again.
+FOLLOWS: dict[str, str] = {"shade": "back"}  # both run the shading pass per row
 
 
 @dataclass(frozen=True)
@@ -151,16 +168,23 @@ def run_warmups() -> list[WarmupReport]:
     return reports
 
 
-def groups_for(methods: Iterable[str]) -> tuple[str, ...]:
+def groups_for(methods: Iterable[str], shadings: Iterable[str] | None = None) -> tuple[str, ...]:
     """Return the groups renders with ``methods`` (or drawing styles) need, each once, in order.
+
+    ``shadings`` are the shading modes the renders use (default: every mode).
 
     Examples
     --------
     >>> from pixelpath._warm import groups_for
-    >>> groups_for(["zbuffer", "scanline"])
-    ('front', 'back', 'scanline')
+    >>> groups_for(["zbuffer", "scanline"], shadings=["phong"])
+    ('front', 'back', 'shade', 'scanline')
+    >>> groups_for(["zbuffer"], shadings=["gouraud"])
+    ('front', 'vertex-shading', 'back')
     """
     needed = {group for method in methods for group in METHOD_GROUPS.get(method, ())}
+    if "front" in needed:
+        modes = SHADING_GROUPS if shadings is None else shadings
+        needed.update(group for mode in modes for group in SHADING_GROUPS.get(mode, ()))
     return tuple(group for group in GROUPS if group in needed)
 
 
@@ -247,14 +271,23 @@ def _cores() -> int:
 
 
 def _share_out(groups: Sequence[str], processes: int, folder: Path | None) -> list[list[str]]:
-    """Split ``groups`` into at most ``processes`` shares of about equal compile time."""
-    cost = {group: _recorded_seconds(group, folder) for group in groups}
-    shares: list[list[str]] = [[] for _ in range(max(1, min(processes, len(groups))))]
+    """Split ``groups`` into at most ``processes`` shares of about equal compile time.
+
+    A group that :data:`FOLLOWS` another one of ``groups`` goes into that one's share, after it.
+    """
+    units: dict[str, list[str]] = {}
+    for group in groups:
+        leader = FOLLOWS.get(group)
+        units.setdefault(leader if leader in groups else group, []).append(group)
+    for unit in units.values():
+        unit.sort(key=lambda g: g in FOLLOWS)
+    cost = {lead: sum(_recorded_seconds(g, folder) for g in unit) for lead, unit in units.items()}
+    shares: list[list[str]] = [[] for _ in range(max(1, min(processes, len(units))))]
     loads = [0.0] * len(shares)
-    for group in sorted(groups, key=lambda g: -cost[g]):
+    for lead in sorted(units, key=lambda g: -cost[g]):
         lightest = loads.index(min(loads))
-        shares[lightest].append(group)
-        loads[lightest] += cost[group]
+        shares[lightest].extend(units[lead])
+        loads[lightest] += cost[lead]
     return [share for share in shares if share]
 
 

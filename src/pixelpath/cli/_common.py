@@ -46,15 +46,18 @@ def error_console() -> Console:
     return Console(stderr=True, highlight=False, soft_wrap=True)
 
 
-def compile_kernels(methods: Iterable[str], *, quiet: bool = False) -> None:
+def compile_kernels(
+    methods: Iterable[str], shadings: Iterable[str] | None = None, *, quiet: bool = False
+) -> None:
     """Before a first run, compile the kernels that renders with ``methods`` need, on every core.
 
-    Nothing happens when they are in the disk cache already. While they compile, a line on
-    standard error says so (only on a terminal, and not when ``quiet``).
+    ``shadings`` are the shading modes those renders use (default: every mode). Nothing happens
+    when the kernels are in the disk cache already. While they compile, a line on standard
+    error says so (only on a terminal, and not when ``quiet``).
     """
     from pixelpath._warm import cold_groups, compile_groups, estimate_seconds, groups_for
 
-    cold = cold_groups(groups_for(methods))
+    cold = cold_groups(groups_for(methods, shadings))
     if not cold:
         return
     err = error_console()

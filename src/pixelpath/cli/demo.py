@@ -66,7 +66,7 @@ def run(args: argparse.Namespace) -> int:
         method="zbuffer", ssaa=args.ssaa, no_cull=False, blinn=False, gamma=None, quiet=args.quiet
     )
     start = time.perf_counter()
-    compile_kernels([options.method], quiet=args.quiet)
+    compile_kernels([options.method], shadings, quiet=args.quiet)
     count = 0
     for name, path in scenes.items():
         scene = load_scene_sized(str(path), args.size)
@@ -93,7 +93,7 @@ def _showcase_extras(scene: Any, folder: Path, options: argparse.Namespace) -> i
     from pixelpath.figures.methods import methods_side_by_side
     from pixelpath.renderer import METHOD_NAMES
 
-    compile_kernels(METHOD_NAMES, quiet=options.quiet)
+    compile_kernels(METHOD_NAMES, ["phong"], quiet=options.quiet)  # both pictures: Phong
     traced = argparse.Namespace(
         **{**vars(options), "method": "raytrace", "shading": "phong", "ssaa": 1},
         samples=4, max_depth=5,

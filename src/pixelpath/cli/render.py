@@ -166,7 +166,9 @@ def render_to_file(
     if not output.parent.is_dir():
         raise CommandError(f"output directory does not exist: {output.parent}")
     steps = render_steps(args.method)
-    compile_kernels([args.method, getattr(args, "style", "filled")], quiet=args.quiet)
+    compile_kernels(
+        [args.method, getattr(args, "style", "filled")], [args.shading], quiet=args.quiet
+    )
     start = time.perf_counter()
     explain = getattr(args, "explain", False) or wants_figures(args)
     with progress(f"rendering {label}", steps, quiet=args.quiet) as advance:

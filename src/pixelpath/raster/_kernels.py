@@ -898,7 +898,7 @@ def _shade_batch(count, batch, material, surfaces, rgb_row):
             rgb_row[i, channel] = _clamp01(batch.shaded[channel, q])
 
 
-# Warm-up in three groups that compile independently (pixelpath._warm compiles groups in
+# Warm-up in groups that compile independently (pixelpath._warm compiles groups in
 # separate processes at once on a first run): each builds its inputs by hand rather than with
 # another group's kernels. Values do not matter, only types: Numba compiles per type.
 def _tiny_triangle():
@@ -932,7 +932,7 @@ def overlapping_pair():
 
 
 def warm_front() -> None:
-    """Compile the front end's kernels: cull, classify, clip, divide, set up, bin, light."""
+    """Compile the front end's kernels: cull, classify, clip, divide, set up, bin."""
     clip, triangles, setup, rows, _, _, _, _ = _tiny_triangle()
     status = np.empty(1, dtype=np.int8)
     classify_triangles(clip, triangles, np.ones(1, dtype=np.bool_), status)
@@ -943,19 +943,28 @@ def warm_front() -> None:
     clip_to_screen(clip, 8, 8, screen)
     setup_triangles(screen, triangles, 0, 8, setup, rows)
     bin_triangles(rows, 1, BAND_ROWS, 0)
+
+
+def warm_vertex_shading() -> None:
+    """Compile the lighting of points that flat and Gouraud shading do before rasterizing."""
     normals = np.zeros((3, 3))
     normals[:, 2] = 1.0
     shade_points(
-        0, 3, clip[:, :3].copy(), normals, np.zeros(3, np.bool_), np.zeros(3, np.intp),
+        0, 3, np.zeros((3, 3)), normals, np.zeros(3, np.bool_), np.zeros(3, np.intp),
         np.array([[1.0, 1.0, 1.0, 0.1, 0.7, 0.3, 32.0, 0.0]]),
         np.array([[0.0, 0.0, 0.0, 5.0, 1.0, 1.0, 1.0]]), np.full(3, 0.1), np.zeros(3), False,
         np.empty((3, 3)),
     )
 
 
-def warm_back() -> None:
-    """Compile the z-buffer's fused pass and the shading pass every other method runs."""
+def _tiny_shading_pass():
+    """Inputs of the shading pass for the one triangle of :func:`_tiny_triangle`.
+
+    The visibility buffers say that nothing is drawn, as before any method has run.
+    """
     clip, triangles, setup, rows, offsets, items, inv_depth, triangle_id = _tiny_triangle()
+    inv_depth.fill(0.0)
+    triangle_id.fill(-1)
     normals = np.zeros((3, 3))
     normals[:, 2] = 1.0
     surfaces = Surfaces(
@@ -971,8 +980,21 @@ def warm_back() -> None:
         np.empty((8, 8), dtype=np.int32),
     )
     bands = np.zeros(1, dtype=np.intp)
+    return bands, setup, rows, offsets, items, inv_depth, triangle_id, surfaces, out
+
+
+def warm_back() -> None:
+    """Compile the z-buffer's fused pass: depth test and shading, band by band."""
+    bands, setup, rows, offsets, items, inv_depth, triangle_id, surfaces, out = (
+        _tiny_shading_pass()
+    )
     render_bands(bands, setup, rows, offsets, items, BAND_ROWS, 0, 0, inv_depth, triangle_id,
                  surfaces, out)
+
+
+def warm_shade() -> None:
+    """Compile the shading pass the other methods run on the visibility they decided."""
+    bands, _, _, _, _, inv_depth, triangle_id, surfaces, out = _tiny_shading_pass()
     shade_bands(bands, BAND_ROWS, 0, 0, inv_depth, triangle_id, surfaces, out)
 
 
