@@ -23,6 +23,13 @@ def test_every_method_groups_name_known_groups():
         assert set(groups) <= set(_warm.GROUPS)
 
 
+def test_a_method_that_needs_a_following_group_needs_its_leader_first():
+    for groups in _warm.METHOD_GROUPS.values():
+        for follower, leader in _warm.FOLLOWS.items():
+            if follower in groups:
+                assert groups.index(leader) < groups.index(follower)
+
+
 def test_groups_for_lists_each_group_once_in_table_order():
     assert _warm.groups_for(["warnock", "zbuffer", "warnock"], ["phong"]) == (
         "front", "back", "shade", "warnock")

@@ -52,7 +52,8 @@ GROUPS: dict[str, tuple[str, float]] = {
     "front": ("pixelpath.raster._kernels:warm_front", 4.5),
     "vertex-shading": ("pixelpath.raster._kernels:warm_vertex_shading", 1.0),
     "back": ("pixelpath.raster._kernels:warm_back", 6.0),
-    "shade": ("pixelpath.raster._kernels:warm_shade", 5.0),
+    # After "back" (every method that needs it needs "back" too): it reuses that one's kernels.
+    "shade": ("pixelpath.raster._kernels:warm_shade", 1.5),
     "scan": ("pixelpath.raster._kernels:warm_scan", 1.5),
     "scanline": ("pixelpath.hsr._kernels.scanline:warmup", 4.5),
     "warnock": ("pixelpath.hsr._kernels.warnock:warmup", 5.0),
@@ -72,11 +73,11 @@ GROUPS: dict[str, tuple[str, float]] = {
 # The groups a render with each hidden-surface method calls, and those a drawing style adds.
 METHOD_GROUPS: dict[str, tuple[str, ...]] = {
     "zbuffer": ("front", "back"),
-    "scanline": ("front", "shade", "scanline"),
-    "warnock": ("front", "shade", "warnock"),
-    "painter": ("front", "shade", "scan", "painter"),
-    "bsp": ("front", "shade", "scan", "bsp"),
-    "octree": ("front", "shade", "octree"),
+    "scanline": ("front", "back", "shade", "scanline"),
+    "warnock": ("front", "back", "shade", "warnock"),
+    "painter": ("front", "back", "shade", "scan", "painter"),
+    "bsp": ("front", "back", "shade", "scan", "bsp"),
+    "octree": ("front", "back", "shade", "octree"),
     "raytrace": ("lighting", "raytrace-bvh", "raytrace"),
     "wireframe": ("lines",),
     "hidden-line": ("lines",),
@@ -90,9 +91,11 @@ SHADING_GROUPS: dict[str, tuple[str, ...]] = {
     "phong": (),
 }
 
-# Groups that call another group's kernels: when both are cold they compile in one process,
-# the caller after the callee, whose kernels it then reuses instead of compiling them again.
-FOLLOWS: dict[str, str] = {"shade": "back"}  # both run the shading pass per row
+# Groups that call another group's kernels, and are only needed with it: when both are cold
+# they compile in one process, the caller after the callee, whose kernels it then reuses
+# instead of compiling them again (the z-buffer's pass and the others' shading pass both shade
+# rows of pixels with the same kernels).
+FOLLOWS: dict[str, str] = {"shade": "back"}
 
 
 @dataclass(frozen=True)
