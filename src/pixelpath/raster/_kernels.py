@@ -958,7 +958,7 @@ def warm_vertex_shading() -> None:
 
 
 def _tiny_shading_pass():
-    """Inputs of the shading pass for the one triangle of :func:`_tiny_triangle`.
+    """Return the shading pass's inputs for the one triangle of :func:`_tiny_triangle`.
 
     The visibility buffers say that nothing is drawn, as before any method has run.
     """
