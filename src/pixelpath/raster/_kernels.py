@@ -945,15 +945,21 @@ def warm_front() -> None:
     bin_triangles(rows, 1, BAND_ROWS, 0)
 
 
-def warm_vertex_shading() -> None:
-    """Compile the lighting of points that flat and Gouraud shading do before rasterizing."""
+def _tiny_lighting():
+    """Three unit normals along z, one material, one point light and the ambient light."""
     normals = np.zeros((3, 3))
     normals[:, 2] = 1.0
+    materials = np.array([[1.0, 1.0, 1.0, 0.1, 0.7, 0.3, 32.0, 0.0]])
+    lights = np.array([[0.0, 0.0, 0.0, 5.0, 1.0, 1.0, 1.0]])
+    return normals, materials, lights, np.full(3, 0.1)
+
+
+def warm_vertex_shading() -> None:
+    """Compile the lighting of points that flat and Gouraud shading do before rasterizing."""
+    normals, materials, lights, ambient = _tiny_lighting()
     shade_points(
-        0, 3, np.zeros((3, 3)), normals, np.zeros(3, np.bool_), np.zeros(3, np.intp),
-        np.array([[1.0, 1.0, 1.0, 0.1, 0.7, 0.3, 32.0, 0.0]]),
-        np.array([[0.0, 0.0, 0.0, 5.0, 1.0, 1.0, 1.0]]), np.full(3, 0.1), np.zeros(3), False,
-        np.empty((3, 3)),
+        0, 3, np.zeros((3, 3)), normals, np.zeros(3, np.bool_), np.zeros(3, np.intp), materials,
+        lights, ambient, np.zeros(3), False, np.empty((3, 3)),
     )
 
 
@@ -965,13 +971,10 @@ def _tiny_shading_pass():
     clip, triangles, setup, rows, offsets, items, inv_depth, triangle_id = _tiny_triangle()
     inv_depth.fill(0.0)
     triangle_id.fill(-1)
-    normals = np.zeros((3, 3))
-    normals[:, 2] = 1.0
+    normals, materials, lights, ambient = _tiny_lighting()
     surfaces = Surfaces(
         setup, triangles, clip[:, :3].copy(), normals, np.zeros((3, 6)),
-        np.zeros((1, 2), dtype=np.intp), np.ones((1, 3)),
-        np.array([[1.0, 1.0, 1.0, 0.1, 0.7, 0.3, 32.0, 0.0]]),
-        np.array([[0.0, 0.0, 0.0, 5.0, 1.0, 1.0, 1.0]]), np.full(3, 0.1),
+        np.zeros((1, 2), dtype=np.intp), np.ones((1, 3)), materials, lights, ambient,
         np.array([0.0, 0.0, 5.0]), np.zeros(3), PHONG, False,
     )
     out = Buffers(
