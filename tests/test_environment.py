@@ -246,3 +246,32 @@ def test_kernels_give_identical_results_with_one_thread_or_without_jit(
     with np.load(baseline_results) as expected, np.load(out) as got:
         for name in expected.files:
             np.testing.assert_array_equal(got[name], expected[name], err_msg=name)
+
+
+VECTORIZED = """
+import json, platform
+from numba.core import config
+from pixelpath._jit import njit
+
+def scale(a, out):
+    out[0], out[1], out[2], out[3] = a[0] * 3.0, a[1] * 3.0, a[2] * 3.0, a[3] * 3.0
+
+before = config.SLP_VECTORIZE
+lanes = njit(simd=True, cache=False)(scale)
+plain = njit(cache=False)(scale)
+import numpy as np
+out = np.empty(4)
+lanes(np.arange(4.0), out)
+plain(np.arange(4.0), out)
+packed = [f.inspect_asm(f.signatures[0]).count("mulpd") > 0 for f in (lanes, plain)]
+print(json.dumps({"before": before, "after": config.SLP_VECTORIZE, "out": out.tolist(),
+                  "packed": packed, "x86": platform.machine().lower() in ("x86_64", "amd64")}))
+"""
+
+
+def test_vectorized_kernels_use_packed_arithmetic_and_leave_numbas_setting_alone():
+    result = run_python(VECTORIZED, **CACHE_VARIABLES, **JIT_ON)
+    assert result["before"] == result["after"]  # on only while that kernel compiled
+    assert result["out"] == [0.0, 3.0, 6.0, 9.0]
+    if result["x86"]:  # the instruction names are x86's
+        assert result["packed"] == [True, False]

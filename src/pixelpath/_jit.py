@@ -12,13 +12,19 @@ Three rules live here, once:
 * ``fastmath`` is off: the colour and clipping kernels compare floats exactly (ties at hue
   sector borders, points on window edges) and must agree with the pure-Python path.
 * ``NUMBA_DISABLE_JIT=1`` turns every kernel into plain Python (the test suite passes both ways).
+* Kernels that do the same arithmetic on several rays side by side (``njit(simd=True)``) are
+  compiled with LLVM's SLP vectorizer, which Numba leaves off: the setting is switched on only
+  while such a kernel compiles, under Numba's compiler lock, so no other compilation sees it.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
+from contextlib import contextmanager
 
 import numba
+from numba.core import config
+from numba.core.compiler_lock import global_compiler_lock
 
 from pixelpath._cache import cache_dir, enable_cache
 
@@ -30,7 +36,9 @@ prange = numba.prange
 def njit(function: Callable | None = None, /, **options) -> Callable:
     """Compile a kernel with the project's defaults (cached on disk, ``fastmath`` off, nogil).
 
-    Used bare (``@njit``) or with Numba options (``@njit(parallel=True)``).
+    Used bare (``@njit``) or with Numba options (``@njit(parallel=True)``). ``simd=True``
+    compiles the kernel, and the kernels it calls that are compiled with it, with LLVM's SLP
+    vectorizer (without ``fastmath`` it keeps every result bit for bit).
 
     Examples
     --------
@@ -43,11 +51,41 @@ def njit(function: Callable | None = None, /, **options) -> Callable:
     """
     options = {"fastmath": False, "nogil": True, **options}
     cache = options.pop("cache", True)
+    simd = options.pop("simd", False)
 
     def compile_kernel(kernel: Callable) -> Callable:
         dispatcher = numba.njit(**options)(kernel)
-        if cache and not numba.config.DISABLE_JIT:
+        if config.DISABLE_JIT:
+            return dispatcher
+        if cache:
             enable_cache(dispatcher)
+        if simd:
+            dispatcher.compile = _with_slp_vectorizer(dispatcher.compile)
         return dispatcher
 
     return compile_kernel if function is None else compile_kernel(function)
+
+
+@contextmanager
+def _slp_vectorizer():
+    """Switch Numba's SLP setting on for the compilations in this thread, and back afterwards.
+
+    Numba reads ``config.SLP_VECTORIZE`` when it builds the optimization passes of a module,
+    inside a compilation; holding its (reentrant) compiler lock keeps every other thread's
+    compilation out until the setting is restored.
+    """
+    with global_compiler_lock:
+        saved = config.SLP_VECTORIZE
+        config.SLP_VECTORIZE = True
+        try:
+            yield
+        finally:
+            config.SLP_VECTORIZE = saved
+
+
+def _with_slp_vectorizer(compile_signature: Callable) -> Callable:
+    def compile_vectorized(signature):
+        with _slp_vectorizer():
+            return compile_signature(signature)
+
+    return compile_vectorized

@@ -240,12 +240,15 @@ def test_supersampling_is_seeded_and_smooths_edges():
     assert len(np.unique(first)) > len(np.unique(single))
 
 
-def test_a_region_equals_the_same_pixels_of_the_whole_image():
+@pytest.mark.parametrize("samples", [1, 4])
+def test_a_region_equals_the_same_pixels_of_the_whole_image(samples):
+    # Primary rays are traced four at a time along a row: regions whose rows hold a number of
+    # rays that is not a multiple of four start and end the packets elsewhere.
     scene = _busy_scene()
-    whole = pp.render(scene, "raytrace", samples=4)
-    for region in [(0, 0, 20, 12), (20, 12, 48, 32), (7, 5, 31, 29)]:
+    whole = pp.render(scene, "raytrace", samples=samples)
+    for region in [(0, 0, 20, 12), (20, 12, 48, 32), (7, 5, 31, 29), (3, 2, 10, 9), (5, 0, 6, 32)]:
         x0, y0, x1, y1 = region
-        tile = pp.render(scene, "raytrace", samples=4, region=region)
+        tile = pp.render(scene, "raytrace", samples=samples, region=region)
         assert np.array_equal(np.asarray(tile), np.asarray(whole)[y0:y1, x0:x1])
         assert np.array_equal(tile.object_id, whole.object_id[y0:y1, x0:x1])
 

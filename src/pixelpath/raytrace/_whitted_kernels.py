@@ -38,9 +38,11 @@ import numpy as np
 from pixelpath._jit import njit
 from pixelpath.lighting._kernels import light_direction, shade_point
 from pixelpath.raytrace._kernels import (
+    LANES,
     MISS,
     any_triangle,
     closest_triangle,
+    closest_triangles4,
     enters_box,
     plane_t,
     reflect_direction,
@@ -131,12 +133,19 @@ class Work(NamedTuple):
     log: np.ndarray  # (M, LOG_FIELDS) logged rays; M = 0 logs nothing
     log_lights: np.ndarray  # (M, L, 2) per logged ray and light: light let through, blocker
     logged: np.ndarray  # (1,) intp rays logged (may exceed M: the rest were not written)
+    primary: np.ndarray  # (W × samples, 3) t, w1, w2 of each primary ray's nearest hit
+    primary_hit: np.ndarray  # (W × samples, 2) intp its kind and index (MISS when none)
+    packet: np.ndarray  # (LANES, 9) rays traced together: origin, direction, t, w1, w2
+    packet_hit: np.ndarray  # (LANES,) intp the kind of each one's hit
+    lane_hit: np.ndarray  # (LANES,) intp the triangle each one hits
+    lane_t: np.ndarray  # (BVH depth + 1, LANES) the packet's stack of entry distances
 
 
 @njit
-def new_work(scene, settings, bvh_depth, log_size):
-    """Return the scratch space of one thread (with room for ``log_size`` logged rays)."""
+def new_work(scene, settings, bvh_depth, log_size, row_width):
+    """Return one thread's scratch space for rows of ``row_width`` pixels and ``log_size`` logs."""
     lights = scene.lights.shape[0]
+    primary_rays = row_width * settings.samples
     return Work(
         np.empty(bvh_depth + 1, dtype=np.intp),
         np.empty(bvh_depth + 1),
@@ -147,6 +156,12 @@ def new_work(scene, settings, bvh_depth, log_size):
         np.empty((log_size, LOG_FIELDS)),
         np.empty((log_size, lights, 2)),
         np.zeros(1, dtype=np.intp),
+        np.empty((primary_rays, 3)),
+        np.empty((primary_rays, 2), dtype=np.intp),
+        np.empty((LANES, 9)),
+        np.empty(LANES, dtype=np.intp),
+        np.empty(LANES, dtype=np.intp),
+        np.empty((bvh_depth + 1, LANES)),
     )
 
 
@@ -208,6 +223,90 @@ def primary_direction(camera, px, py, width, height):
         camera[10] + ndc_x * camera[4] + ndc_y * camera[7],
         camera[11] + ndc_x * camera[5] + ndc_y * camera[8],
     )
+
+
+@njit
+def primary_hits(y, x0, width, scene, settings, work):
+    """Find the nearest hit of every primary ray of a row, the triangles a packet at a time.
+
+    Ray j is sample ``j % samples`` of pixel ``x0 + j // samples``; primary rays see what lies
+    between the near and far planes, culled like the rasterizer's. Each ray is first tested
+    against the spheres and planes, then the triangles are searched up to the nearest of
+    those: neighbouring rays of a row run through the same boxes of the tree, so
+    ``closest_triangles4`` walks it once for ``LANES`` of them (the row's last few rays go one
+    by one). Writes ``work.primary`` (t, w1, w2) and ``work.primary_hit`` (kind, index; index
+    MISS when nothing is hit) and adds the nodes and triangle tests to ``work.counts``.
+    Arrays are taken out of their tuples once, as in :func:`trace_row`.
+    """
+    spheres, planes, plane_back = scene.spheres, scene.planes, scene.plane_back
+    bounds, links, tris = scene.bounds, scene.links, scene.tris
+    tri_source, tri_back, camera = scene.tri_source, scene.tri_back, scene.camera
+    packet, kinds, lane_hit = work.packet, work.packet_hit, work.lane_hit
+    found, found_hit, counts = work.primary, work.primary_hit, work.counts
+    stack, stack_t, lane_t = work.stack, work.stack_t, work.lane_t
+    samples = settings.samples
+    near, far, cull = settings.near, settings.far, settings.cull
+    count = width * samples
+    full = count - count % LANES
+    x = x0  # the pixel and sample of the next ray
+    sample = 0
+    for start in range(0, count, LANES):
+        lanes = LANES if start < full else count - start
+        for r in range(lanes):
+            sx, sy = sample_position(y * settings.image_width + x, sample, samples)
+            dx, dy, dz = primary_direction(
+                camera, x + sx, y + sy, settings.image_width, settings.image_height
+            )
+            sample += 1
+            if sample == samples:
+                x, sample = x + 1, 0
+            t, kinds[r], found_hit[start + r, 1] = nearest_analytic(
+                spheres, planes, plane_back, camera[0], camera[1], camera[2], dx, dy, dz, near,
+                far, cull,
+            )
+            packet[r, 0], packet[r, 1], packet[r, 2] = camera[0], camera[1], camera[2]
+            packet[r, 3], packet[r, 4], packet[r, 5], packet[r, 6] = dx, dy, dz, t
+            packet[r, 7] = packet[r, 8] = 0.0
+        if links.shape[0] > 0:
+            if lanes == LANES:
+                nodes, tests = closest_triangles4(
+                    bounds, links, tris, tri_source, tri_back, cull, packet, near, lane_hit,
+                    stack, stack_t, lane_t,
+                )
+            else:
+                nodes = tests = 0
+                for r in range(lanes):
+                    t, tri, w1, w2, n, m = closest_triangle(
+                        bounds, links, tris, tri_source, tri_back, cull, packet[r, 0],
+                        packet[r, 1], packet[r, 2], packet[r, 3], packet[r, 4], packet[r, 5],
+                        near, packet[r, 6], stack, stack_t,
+                    )
+                    packet[r, 6], packet[r, 7], packet[r, 8], lane_hit[r] = t, w1, w2, tri
+                    nodes += n
+                    tests += m
+            counts[COUNT_NODES] += nodes
+            counts[COUNT_TESTS] += tests
+            for r in range(lanes):
+                if lane_hit[r] != MISS:
+                    kinds[r], found_hit[start + r, 1] = TRIANGLE, lane_hit[r]
+        for r in range(lanes):
+            found[start + r, 0] = packet[r, 6]
+            found[start + r, 1] = packet[r, 7]
+            found[start + r, 2] = packet[r, 8]
+            found_hit[start + r, 0] = kinds[r]
+
+
+@njit(inline="always")
+def nearest_analytic(spheres, planes, plane_back, ox, oy, oz, dx, dy, dz, t_min, t_max, cull):
+    """Return (t, kind, index) of the nearest sphere or plane hit; (t_max, SPHERE, MISS) if none."""
+    t, kind, index = t_max, SPHERE, MISS
+    if spheres.shape[0] > 0:  # no call (and no passing of arrays) for what the scene lacks
+        t, index = nearest_sphere(spheres, ox, oy, oz, dx, dy, dz, t_min, t, cull)
+    if planes.shape[0] > 0:
+        t_plane, plane = nearest_plane(planes, plane_back, ox, oy, oz, dx, dy, dz, t_min, t, cull)
+        if plane != MISS:
+            t, kind, index = t_plane, PLANE, plane
+    return t, kind, index
 
 
 @njit
@@ -477,11 +576,12 @@ def trace_row(y, x0, width, scene, settings, work, out):
     log_lights = work.log_lights
     logged_rays = work.logged
     log = work.log
-    has_spheres = spheres.shape[0] > 0
-    has_planes = planes.shape[0] > 0
     has_triangles = links.shape[0] > 0
-    has_analytic = has_spheres or has_planes
+    has_analytic = spheres.shape[0] > 0 or planes.shape[0] > 0
     samples = settings.samples
+    primary_found = work.primary
+    primary_hit = work.primary_hit
+    primary_hits(y, x0, width, scene, settings, work)
     for i in range(width):
         x = x0 + i
         pixel = y * settings.image_width + x
@@ -504,33 +604,26 @@ def trace_row(y, x0, width, scene, settings, work, out):
                 dx, dy, dz = rays[top, 3], rays[top, 4], rays[top, 5]
                 weight, depth, kind = rays[top, 6], rays[top, 7], rays[top, 8]
                 primary = depth == 0.0
-                if primary:  # the eye's: between the near and far planes, culled like the raster
+                if primary:  # found for the whole row beforehand
                     counts[COUNT_PRIMARY] += 1
-                    t_min, t_max, cull = settings.near, settings.far, settings.cull
-                else:
+                    ray = i * samples + sample
+                    t, w1, w2 = primary_found[ray, 0], primary_found[ray, 1], primary_found[ray, 2]
+                    hit_kind, index = primary_hit[ray, 0], primary_hit[ray, 1]
+                else:  # secondary rays see both sides of everything, from their origin on
                     counts[COUNT_REFLECTED if kind == REFLECTED else COUNT_REFRACTED] += 1
-                    t_min, t_max, cull = 0.0, math.inf, False
-                t = t_max
-                hit_kind = SPHERE
-                index = MISS
-                w1 = w2 = 0.0
-                if has_spheres:
-                    t, index = nearest_sphere(spheres, ox, oy, oz, dx, dy, dz, t_min, t, cull)
-                if has_planes:
-                    t_plane, plane = nearest_plane(
-                        planes, plane_back, ox, oy, oz, dx, dy, dz, t_min, t, cull
+                    t, hit_kind, index = nearest_analytic(
+                        spheres, planes, plane_back, ox, oy, oz, dx, dy, dz, 0.0, math.inf, False
                     )
-                    if plane != MISS:
-                        t, hit_kind, index = t_plane, PLANE, plane
-                if has_triangles and enters_box(bounds, 0, ox, oy, oz, dx, dy, dz, t_min, t):
-                    t_tri, tri, b1, b2, nodes, tests = closest_triangle(
-                        bounds, links, tris, tri_source, tri_back, cull, ox, oy, oz, dx, dy, dz,
-                        t_min, t, stack, stack_t,
-                    )
-                    counts[COUNT_NODES] += nodes
-                    counts[COUNT_TESTS] += tests
-                    if tri != MISS:
-                        t, hit_kind, index, w1, w2 = t_tri, TRIANGLE, tri, b1, b2
+                    w1 = w2 = 0.0
+                    if has_triangles and enters_box(bounds, 0, ox, oy, oz, dx, dy, dz, 0.0, t):
+                        t_tri, tri, b1, b2, nodes, tests = closest_triangle(
+                            bounds, links, tris, tri_source, tri_back, False, ox, oy, oz, dx, dy,
+                            dz, 0.0, t, stack, stack_t,
+                        )
+                        counts[COUNT_NODES] += nodes
+                        counts[COUNT_TESTS] += tests
+                        if tri != MISS:
+                            t, hit_kind, index, w1, w2 = t_tri, TRIANGLE, tri, b1, b2
                 logged = logged_rays[0]
                 logged_rays[0] += 1
                 if logged < log.shape[0]:
@@ -652,8 +745,8 @@ def render_rows(rows, scene, settings, bvh_depth, x0, y0, rgb, depth, object_id,
     caller runs disjoint lists of rows from several threads (the kernel releases the GIL).
     """
     width = rgb.shape[1]
-    work = new_work(scene, settings, bvh_depth, np.intp(0))  # no log (not a literal 0)
     out = np.empty((width, PIXEL_FIELDS))
+    work = new_work(scene, settings, bvh_depth, np.intp(0), width)  # no log (not a literal 0)
     for k in range(rows.shape[0]):
         row = rows[k]
         for c in range(COUNTS):
@@ -681,5 +774,5 @@ def warmup() -> None:
     with slab_nan_allowed():
         render_rows(np.zeros(1, dtype=np.intp), scene, settings, bvh_depth, 0, 0, rgb, depth,
                     ids, counts)
-        work = new_work(scene, settings, bvh_depth, 8)
+        work = new_work(scene, settings, bvh_depth, 8, 1)
         trace_row(0, 0, 1, scene, settings, work, np.empty((1, PIXEL_FIELDS)))

@@ -296,7 +296,7 @@ def ray_tree(
     )
     world, settings, bvh_depth, _ = pack(scene, scene.camera, options)
     bound = options.samples * (2 ** min(options.max_depth + 1, 20) - 1)
-    work = wk.new_work(world, settings, bvh_depth, min(bound, LOG_LIMIT))
+    work = wk.new_work(world, settings, bvh_depth, min(bound, LOG_LIMIT), 1)
     with slab_nan_allowed():
         out = np.empty((1, wk.PIXEL_FIELDS))
         wk.trace_row(y, x, 1, world, settings, work, out)
