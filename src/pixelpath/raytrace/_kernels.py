@@ -31,6 +31,9 @@ Rays are ``R(t) = o + t d`` with t in units of ``|d|``; a hit counts when ``t_mi
   JCGT 2013) so rounding never prunes a box whose triangle the triangle test would hit. Ties in
   t go to the triangle listed first in the original order (``source``), so the nearest hit is the
   one a brute-force loop over all triangles finds.
+* ``closest_triangles4``: the nearest-hit search for a packet of four rays, one walk of the
+  tree for all four; the box tests of the four rays run side by side, compiled to vector
+  instructions (``njit(simd=True)``), and each ray ends with what ``closest_triangle`` finds.
 """
 
 from __future__ import annotations

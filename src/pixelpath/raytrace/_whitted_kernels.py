@@ -12,6 +12,8 @@ weight, and every ray adds its share as it is traced: no recursion, no values pa
   so t is the depth the rasterizer stores; they see what lies between the camera's near and far
   planes and, when back faces are culled, only the faces the rasterizer keeps (a mesh polygon
   or plane facing away from the eye, a sphere's far side).
+  Their nearest hits are found for a whole row before it is shaded, the triangles four
+  neighbouring rays at a time (``primary_hits``, ``closest_triangles4``).
 * Secondary rays (shadow, reflected, refracted) see both sides of everything. They start at the
   hit point moved ``epsilon`` along the geometric normal, to the side they leave towards, so
   they never hit the surface they start on (no shadow acne, no black glass).
@@ -136,7 +138,7 @@ class Work(NamedTuple):
     primary: np.ndarray  # (W × samples, 3) t, w1, w2 of each primary ray's nearest hit
     primary_hit: np.ndarray  # (W × samples, 2) intp its kind and index (MISS when none)
     packet: np.ndarray  # (LANES, 9) rays traced together: origin, direction, t, w1, w2
-    packet_hit: np.ndarray  # (LANES,) intp the kind of each one's hit
+    packet_kind: np.ndarray  # (LANES,) intp the kind of primitive each one hits
     lane_hit: np.ndarray  # (LANES,) intp the triangle each one hits
     lane_t: np.ndarray  # (BVH depth + 1, LANES) the packet's stack of entry distances
 
@@ -241,7 +243,7 @@ def primary_hits(y, x0, width, scene, settings, work):
     spheres, planes, plane_back = scene.spheres, scene.planes, scene.plane_back
     bounds, links, tris = scene.bounds, scene.links, scene.tris
     tri_source, tri_back, camera = scene.tri_source, scene.tri_back, scene.camera
-    packet, kinds, lane_hit = work.packet, work.packet_hit, work.lane_hit
+    packet, kinds, lane_hit = work.packet, work.packet_kind, work.lane_hit
     found, found_hit, counts = work.primary, work.primary_hit, work.counts
     stack, stack_t, lane_t = work.stack, work.stack_t, work.lane_t
     samples = settings.samples
@@ -540,13 +542,15 @@ def trace_row(y, x0, width, scene, settings, work, out):
     A pixel's fields are r, g, b (the mean of the clamped colours of its samples), depth and
     object (from the nearest sample that hit something). Each sample's eye ray and its tree
     are followed with the stack work.rays: a ray adds ``weight × I_local`` as it is traced.
+    The eye rays' nearest hits are found first, for the whole row (:func:`primary_hits`).
 
     The loops over pixels, samples and rays, and the local light of a hit, share this one
     function on purpose: a compiled call that passes arrays costs two atomic reference-count
     updates per array (in and out), more than the work of a ray that misses. So the scene's
-    and the scratch arrays are taken out of their tuples once per row; per ray only the
-    nearest-hit searches are called (a few arrays each, the triangles' only when the ray enters
-    the root box), per shadow ray the any-hit search, and per hit the normal and Phong kernels.
+    and the scratch arrays are taken out of their tuples once per row; per secondary ray only
+    the nearest-hit searches are called (a few arrays each, the triangles' only when the ray
+    enters the root box), per packet of eye rays the packet's search, per shadow ray the
+    any-hit search, and per hit the normal and Phong kernels.
     """
     spheres = scene.spheres
     planes = scene.planes
