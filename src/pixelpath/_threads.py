@@ -20,12 +20,22 @@ _EXECUTORS: dict[int, concurrent.futures.ThreadPoolExecutor] = {}
 _EXECUTORS_LOCK = threading.Lock()
 
 
-def in_threads(work: Callable[[int, int], object], count: int) -> None:
+def in_threads(
+    work: Callable[[int, int], object],
+    count: int,
+    *,
+    runs: int | None = None,
+    done: Callable[[], object] | None = None,
+) -> None:
     """Call ``work(start, stop)`` on runs of ``range(count)`` from several threads at once.
 
     As many threads as Numba's (``numba.get_num_threads()``, so ``NUMBA_NUM_THREADS`` and
     ``numba.set_num_threads`` apply), each taking runs in turn as it finishes one. The runs
     must write disjoint parts of the output. An exception in a run is raised here.
+
+    ``runs`` sets how many runs (default: a few per thread, or one on a single thread);
+    ``done()`` is called in the calling thread once per run, as the runs finish in order, so a
+    progress bar can follow the work without any barrier between its parts.
 
     Examples
     --------
@@ -34,32 +44,44 @@ def in_threads(work: Callable[[int, int], object], count: int) -> None:
     >>> out = np.zeros(10)
     >>> def fill(start, stop):
     ...     out[start:stop] = np.arange(start, stop)
-    >>> in_threads(fill, 10)
-    >>> out.tolist() == list(range(10))
-    True
+    >>> finished = []
+    >>> in_threads(fill, 10, runs=5, done=lambda: finished.append(1))
+    >>> out.tolist() == list(range(10)), len(finished)
+    (True, 5)
     """
     import numba
 
     threads = numba.get_num_threads()
-    if threads == 1 or count <= 1:
-        work(0, count)
-        return
-    runs = min(count, RUNS_PER_THREAD * threads)
+    if runs is None:
+        runs = 1 if threads == 1 else RUNS_PER_THREAD * threads
+    runs = max(min(count, runs), 1)
     bounds = np.linspace(0, count, runs + 1).astype(int).tolist()
-    with _EXECUTORS_LOCK:
-        executor = _EXECUTORS.get(threads)
-        if executor is None:
-            executor = concurrent.futures.ThreadPoolExecutor(threads, "pixelpath")
-            _EXECUTORS[threads] = executor
-    for _ in executor.map(work, bounds[:-1], bounds[1:]):
-        pass  # re-raises a run's exception here
+    if threads == 1 or runs == 1:
+        results = map(work, bounds[:-1], bounds[1:])
+    else:
+        with _EXECUTORS_LOCK:
+            executor = _EXECUTORS.get(threads)
+            if executor is None:
+                executor = concurrent.futures.ThreadPoolExecutor(threads, "pixelpath")
+                _EXECUTORS[threads] = executor
+        results = executor.map(work, bounds[:-1], bounds[1:])
+    for _ in results:  # re-raises a run's exception here
+        if done is not None:
+            done()
 
 
-def in_runs(work: Callable[[Sequence], object], items: Sequence) -> None:
+def in_runs(
+    work: Callable[[Sequence], object],
+    items: Sequence,
+    *,
+    runs: int | None = None,
+    done: Callable[[], object] | None = None,
+) -> None:
     """Call ``work(run)`` on consecutive runs of ``items`` from several threads at once.
 
     List the items so that every run holds a fair share of the work (the raster methods list
     their bands of rows interleaved, even ones then odd ones, so each run spans the image).
+    ``runs`` and ``done`` are :func:`in_threads`'.
 
     Examples
     --------
@@ -70,4 +92,4 @@ def in_runs(work: Callable[[Sequence], object], items: Sequence) -> None:
     >>> sorted(seen)
     [0, 1, 2, 3, 4, 5]
     """
-    in_threads(lambda start, stop: work(items[start:stop]), len(items))
+    in_threads(lambda start, stop: work(items[start:stop]), len(items), runs=runs, done=done)

@@ -123,3 +123,50 @@ def test_rays_whose_directions_differ_in_sign_are_traced_one_by_one():
     assert packet == single
     assert (nodes, tests) == (single_nodes, single_tests)
     assert all(hit[1] >= 0 for hit in packet)  # from the centre every ray hits
+
+
+def _any_hits(bvh, segments, pass_through, packet):
+    """any_triangles4 (packet) or any_triangle per segment: [(light, blocker)], nodes, tests."""
+    stack = np.empty(bvh.depth + 2, dtype=np.intp)
+    with kernels.slab_nan_allowed():
+        if packet:
+            rays = np.zeros((kernels.LANES, 8))
+            rays[:, :7] = segments
+            hit = np.empty(kernels.LANES, dtype=np.intp)
+            nodes, tests = kernels.any_triangles4(
+                bvh.bounds, bvh.links, bvh.corners, pass_through, rays, 0.0, hit, stack
+            )
+            return [(rays[r, 7], hit[r]) for r in range(4)], nodes, tests
+        found, nodes, tests = [], 0, 0
+        for segment in segments:
+            light, blocker, n, m = kernels.any_triangle(
+                bvh.bounds, bvh.links, bvh.corners, pass_through, *segment[:6], 0.0, segment[6],
+                stack,
+            )
+            found.append((light, blocker))
+            nodes += n
+            tests += m
+        return found, nodes, tests
+
+
+@pytest.mark.parametrize("spread", [0.02, 0.3])
+def test_a_packet_of_shadow_rays_finds_what_each_finds_alone(spread):
+    # A shell of see-through and opaque triangles between points and a light: the same
+    # blocker, the same light let through (its product taken in the same order), and the
+    # same nodes and triangle tests for each ray as on its own.
+    rng = np.random.default_rng(7)
+    shell = icosphere(2, 1.0)
+    bvh = BVH.build(shell.vertices, shell.triangles)
+    pass_through = rng.choice([0.0, 0.5, 0.9], size=len(bvh.corners), p=[0.3, 0.4, 0.3])
+    light = np.array([0.3, 3.0, 0.5])
+    outcomes = set()
+    for _ in range(200):
+        points = rng.normal(scale=spread, size=(4, 3)) + rng.uniform(-0.6, 0.6, 3)
+        segments = np.column_stack([points, light - points, np.ones(4)])
+        packet, nodes, tests = _any_hits(bvh, segments, pass_through, packet=True)
+        single, single_nodes, single_tests = _any_hits(bvh, segments, pass_through, packet=False)
+        assert packet == single
+        assert (nodes, tests) == (single_nodes, single_tests)
+        outcomes.update("blocked" if blocker >= 0 else "dimmed" if light_let < 1 else "lit"
+                        for light_let, blocker in single)
+    assert {"blocked", "dimmed"} <= outcomes  # rays from inside leave through a triangle

@@ -31,9 +31,10 @@ Rays are ``R(t) = o + t d`` with t in units of ``|d|``; a hit counts when ``t_mi
   JCGT 2013) so rounding never prunes a box whose triangle the triangle test would hit. Ties in
   t go to the triangle listed first in the original order (``source``), so the nearest hit is the
   one a brute-force loop over all triangles finds.
-* ``closest_triangles4``: the nearest-hit search for a packet of four rays, one walk of the
-  tree for all four; the box tests of the four rays run side by side, compiled to vector
-  instructions (``njit(simd=True)``), and each ray ends with what ``closest_triangle`` finds.
+* ``closest_triangles4`` and ``any_triangles4``: both searches for a packet of four rays, one
+  walk of the tree for all four; the box tests of the four rays run side by side, compiled to
+  vector instructions (``njit(simd=True)``), and each ray ends with what the one-ray search
+  finds.
 """
 
 from __future__ import annotations
@@ -496,6 +497,120 @@ def closest_triangles4(bounds, links, tris, source, skip, cull, rays, t_min, hit
         top -= 1
         k = stack[top]
         entry = (lane_t[top, 0], lane_t[top, 1], lane_t[top, 2], lane_t[top, 3])
+    return nodes, tests
+
+
+@njit(inline="always")
+def _lanes_in(entry):
+    """Return the bit mask of the lanes whose entry is finite (bit r for lane r)."""
+    return (
+        (1 if entry[0] < math.inf else 0) | (2 if entry[1] < math.inf else 0)
+        | (4 if entry[2] < math.inf else 0) | (8 if entry[3] < math.inf else 0)
+    )
+
+
+@njit(inline="always")
+def _lane_count(mask):
+    return (mask & 1) + ((mask >> 1) & 1) + ((mask >> 2) & 1) + ((mask >> 3) & 1)
+
+
+@njit(simd=True)
+def any_triangles4(bounds, links, tris, pass_through, rays, t_min, hit, stack):
+    """Run :func:`any_triangle` for each of ``LANES`` segments, in one walk of the tree.
+
+    ``rays`` (LANES, 8) holds each segment's origin and direction in columns 0-5 and its
+    t_max in column 6; the kernel writes the light let through into column 7 and the blocker
+    (MISS when none) into ``hit``. Returns (nodes, tests) summed over the rays. The walk takes
+    the children in any_triangle's fixed order, each ray only into the boxes it enters and
+    only until it is blocked, so each ray visits the nodes, tests the triangles and multiplies
+    the fractions let through that it would alone, in the same order: the same blocker and
+    bit for bit the same light. The stack holds a node and the mask of the rays entering it
+    (``node << LANES | mask``); rays whose directions differ in sign on an axis go one by one.
+    """
+    nodes = 0
+    tests = 0
+    ix = (reciprocal(rays[0, 3]), reciprocal(rays[1, 3]), reciprocal(rays[2, 3]),
+          reciprocal(rays[3, 3]))
+    iy = (reciprocal(rays[0, 4]), reciprocal(rays[1, 4]), reciprocal(rays[2, 4]),
+          reciprocal(rays[3, 4]))
+    iz = (reciprocal(rays[0, 5]), reciprocal(rays[1, 5]), reciprocal(rays[2, 5]),
+          reciprocal(rays[3, 5]))
+    columns = slab_columns(ix[0], iy[0], iz[0])
+    coherent = links.shape[0] > 0
+    for r in range(1, LANES):
+        coherent &= slab_columns(_lane(ix, r), _lane(iy, r), _lane(iz, r)) == columns
+    if not coherent:
+        for r in range(LANES):
+            rays[r, 7], hit[r], n, m = any_triangle(
+                bounds, links, tris, pass_through, rays[r, 0], rays[r, 1], rays[r, 2],
+                rays[r, 3], rays[r, 4], rays[r, 5], t_min, rays[r, 6], stack,
+            )
+            nodes += n
+            tests += m
+        return nodes, tests
+    for r in range(LANES):
+        rays[r, 7] = 1.0
+        hit[r] = MISS
+    ox = (rays[0, 0], rays[1, 0], rays[2, 0], rays[3, 0])
+    oy = (rays[0, 1], rays[1, 1], rays[2, 1], rays[3, 1])
+    oz = (rays[0, 2], rays[1, 2], rays[2, 2], rays[3, 2])
+    t_max = (rays[0, 6], rays[1, 6], rays[2, 6], rays[3, 6])
+    limit = _lane_limits(t_max)
+    active = _lanes_in(_enter_lanes(bounds, 0, ox, oy, oz, ix, iy, iz, columns, t_min, limit))
+    if active == 0:
+        return nodes, tests
+    shear = (
+        shear_setup(ox[0], oy[0], oz[0], rays[0, 3], rays[0, 4], rays[0, 5]),
+        shear_setup(ox[1], oy[1], oz[1], rays[1, 3], rays[1, 4], rays[1, 5]),
+        shear_setup(ox[2], oy[2], oz[2], rays[2, 3], rays[2, 4], rays[2, 5]),
+        shear_setup(ox[3], oy[3], oz[3], rays[3, 3], rays[3, 4], rays[3, 5]),
+    )
+    blocked = 0
+    k = 0
+    top = 0
+    while True:
+        # Node k's box is entered by the rays of ``active``: test its triangles for them, or
+        # go on into the second child with the rays entering it (the first kept for later).
+        nodes += _lane_count(active)
+        first = links[k, 0]
+        count = links[k, 1]
+        if count == 0:
+            in_first = active & _lanes_in(
+                _enter_lanes(bounds, first, ox, oy, oz, ix, iy, iz, columns, t_min, limit)
+            )
+            in_second = active & _lanes_in(
+                _enter_lanes(bounds, first + 1, ox, oy, oz, ix, iy, iz, columns, t_min, limit)
+            )
+            if in_second:
+                if in_first:
+                    stack[top] = first << LANES | in_first
+                    top += 1
+                k, active = first + 1, in_second
+                continue
+            if in_first:
+                k, active = first, in_first
+                continue
+        else:
+            for r in range(LANES):
+                if not (active >> r) & 1:
+                    continue
+                kx, ky, kz, okx, oky, okz, sx, sy, sz = shear[r]
+                for i in range(first, first + count):
+                    tests += 1
+                    t, _, _ = triangle_t(tris, i, kx, ky, kz, okx, oky, okz, sx, sy, sz)
+                    if t_min < t < _lane(t_max, r):
+                        if pass_through[i] == 0.0:
+                            rays[r, 7], hit[r] = 0.0, i
+                            blocked |= 1 << r
+                            break
+                        rays[r, 7] *= pass_through[i]
+        active = 0
+        while active == 0 and top > 0:  # the next node kept, for the rays not yet blocked
+            top -= 1
+            k = stack[top] >> LANES
+            active = stack[top] & ~blocked & (2**LANES - 1)
+        if active == 0:
+            break
     return nodes, tests
 
 

@@ -43,6 +43,7 @@ from pixelpath.raytrace._kernels import (
     LANES,
     MISS,
     any_triangle,
+    any_triangles4,
     closest_triangle,
     closest_triangles4,
     enters_box,
@@ -81,6 +82,9 @@ LOG_FIELDS = 33
 
 # Pending rays on the stack: origin, direction, weight, depth, kind, log index of the parent.
 RAY_FIELDS = 10
+# Stored primary hits: point, geometric normal, shading normal, then these two.
+GEOMETRY_OBJECT, GEOMETRY_ENTERING = 9, 10
+GEOMETRY_FIELDS = 11
 
 
 class TraceScene(NamedTuple):
@@ -135,12 +139,17 @@ class Work(NamedTuple):
     log: np.ndarray  # (M, LOG_FIELDS) logged rays; M = 0 logs nothing
     log_lights: np.ndarray  # (M, L, 2) per logged ray and light: light let through, blocker
     logged: np.ndarray  # (1,) intp rays logged (may exceed M: the rest were not written)
-    primary: np.ndarray  # (W × samples, 3) t, w1, w2 of each primary ray's nearest hit
+    primary: np.ndarray  # (W × samples, 6) t, w1, w2 of each primary ray's hit, its direction
     primary_hit: np.ndarray  # (W × samples, 2) intp its kind and index (MISS when none)
     packet: np.ndarray  # (LANES, 9) rays traced together: origin, direction, t, w1, w2
     packet_kind: np.ndarray  # (LANES,) intp the kind of primitive each one hits
     lane_hit: np.ndarray  # (LANES,) intp the triangle each one hits
     lane_t: np.ndarray  # (BVH depth + 1, LANES) the packet's stack of entry distances
+    primary_geometry: np.ndarray  # (W × samples, GEOMETRY_FIELDS) what each hit is
+    primary_shadow: np.ndarray  # (W × samples, L, 2) light let through, blocker per light
+    shadows: np.ndarray  # (LANES, 9) shadow rays traced together: origin, direction, t_max,
+    # light let through by the triangles, by the spheres and planes
+    shadow_of: np.ndarray  # (LANES, 2) intp the primary ray and the light of each
 
 
 @njit
@@ -158,12 +167,16 @@ def new_work(scene, settings, bvh_depth, log_size, row_width):
         np.empty((log_size, LOG_FIELDS)),
         np.empty((log_size, lights, 2)),
         np.zeros(1, dtype=np.intp),
-        np.empty((primary_rays, 3)),
+        np.empty((primary_rays, 6)),
         np.empty((primary_rays, 2), dtype=np.intp),
         np.empty((LANES, 9)),
         np.empty(LANES, dtype=np.intp),
         np.empty(LANES, dtype=np.intp),
         np.empty((bvh_depth + 1, LANES)),
+        np.empty((primary_rays, GEOMETRY_FIELDS)),
+        np.empty((primary_rays, lights, 2)),
+        np.empty((LANES, 9)),
+        np.empty((LANES, 2), dtype=np.intp),
     )
 
 
@@ -292,10 +305,158 @@ def primary_hits(y, x0, width, scene, settings, work):
                 if lane_hit[r] != MISS:
                     kinds[r], found_hit[start + r, 1] = TRIANGLE, lane_hit[r]
         for r in range(lanes):
-            found[start + r, 0] = packet[r, 6]
-            found[start + r, 1] = packet[r, 7]
-            found[start + r, 2] = packet[r, 8]
+            for field in range(3):
+                found[start + r, field] = packet[r, 6 + field]  # t, w1, w2
+                found[start + r, 3 + field] = packet[r, 3 + field]  # the direction
             found_hit[start + r, 0] = kinds[r]
+
+
+@njit
+def primary_shadows(count, scene, settings, work):
+    """Test the shadow rays of the first ``count`` primary hits of a row, a packet at a time.
+
+    First each hit's object, point and normals (:func:`hit_geometry`) go into
+    ``work.primary_geometry``, where :func:`trace_row` reads them back. Then, light by light,
+    the shadow ray of each hit in front of which the light is (the one :func:`trace_row`
+    would make) is tested against the spheres and planes, and the rays that none of them
+    blocks are gathered four at a time and tested against the triangles together
+    (``any_triangles4``): neighbouring pixels' rays towards one light run through the same
+    boxes. Writes the light let through and the blocker (MISS when none) into
+    ``work.primary_shadow`` and adds nodes and triangle tests to ``work.counts``.
+    """
+    spheres, planes, materials = scene.spheres, scene.planes, scene.materials
+    sphere_object, plane_object = scene.sphere_object, scene.plane_object
+    bounds, links, tris, tri_pass = scene.bounds, scene.links, scene.tris, scene.tri_pass
+    tri_normals, tri_flat, tri_object = scene.tri_normals, scene.tri_flat, scene.tri_object
+    lights, camera = scene.lights, scene.camera
+    found, found_hit, result = work.primary, work.primary_hit, work.primary_shadow
+    geometry = work.primary_geometry
+    shadows, shadow_of, hit = work.shadows, work.shadow_of, work.lane_hit
+    stack, counts = work.stack, work.counts
+    has_analytic = spheres.shape[0] > 0 or planes.shape[0] > 0
+    has_triangles = links.shape[0] > 0
+    for ray in range(count):
+        if found_hit[ray, 1] != MISS:
+            obj, px, py, pz, gx, gy, gz, nx, ny, nz, entering = hit_geometry(
+                spheres, sphere_object, planes, plane_object, tris, tri_normals, tri_flat,
+                tri_object, settings.flat, camera[0], camera[1], camera[2], found[ray, 3],
+                found[ray, 4], found[ray, 5], found[ray, 0], found_hit[ray, 0],
+                found_hit[ray, 1], found[ray, 1], found[ray, 2],
+            )
+            for field, value in enumerate((px, py, pz, gx, gy, gz, nx, ny, nz)):
+                geometry[ray, field] = value
+            geometry[ray, GEOMETRY_OBJECT] = obj
+            geometry[ray, GEOMETRY_ENTERING] = entering
+    for light in range(lights.shape[0]):
+        queued = 0
+        for ray in range(count):
+            if found_hit[ray, 1] == MISS:
+                continue
+            px, py, pz, gx, gy, gz, nx, ny, nz = _stored_geometry(geometry, ray)
+            lx, ly, lz = light_direction(lights, light, px, py, pz)
+            if not nx * lx + ny * ly + nz * lz > 0.0:
+                continue
+            through, blocker, sx, sy, sz, lx, ly, lz, t_light = shadow_start(
+                spheres, sphere_object, planes, plane_object, materials, lights, light, px, py,
+                pz, gx, gy, gz, lx, ly, lz, settings.epsilon, has_analytic,
+            )
+            if blocker != MISS or not has_triangles:
+                result[ray, light, 0], result[ray, light, 1] = through, blocker
+                continue
+            shadows[queued, 0], shadows[queued, 1], shadows[queued, 2] = sx, sy, sz
+            shadows[queued, 3], shadows[queued, 4], shadows[queued, 5] = lx, ly, lz
+            shadows[queued, 6], shadows[queued, 8] = t_light, through
+            shadow_of[queued, 0], shadow_of[queued, 1] = ray, light
+            queued += 1
+            if queued == LANES:
+                _shadow_packet(queued, bounds, links, tris, tri_pass, tri_object, shadows,
+                               shadow_of, hit, stack, counts, result)
+                queued = 0
+        _shadow_packet(queued, bounds, links, tris, tri_pass, tri_object, shadows, shadow_of,
+                       hit, stack, counts, result)
+
+
+@njit(inline="always")
+def _stored_geometry(geometry, ray):
+    """Return a primary hit's point, geometric and shading normals from work.primary_geometry."""
+    g = geometry
+    return (g[ray, 0], g[ray, 1], g[ray, 2], g[ray, 3], g[ray, 4], g[ray, 5], g[ray, 6],
+            g[ray, 7], g[ray, 8])
+
+
+@njit(inline="always")
+def _shadow_packet(lanes, bounds, links, tris, tri_pass, tri_object, shadows, shadow_of, hit,
+                   stack, counts, result):
+    """Test the ``lanes`` queued shadow rays against the triangles and write their results.
+
+    Inlined into :func:`primary_shadows`: a call would pass a dozen arrays per packet.
+    """
+    if lanes == LANES:
+        nodes, tests = any_triangles4(bounds, links, tris, tri_pass, shadows, 0.0, hit, stack)
+    else:  # the row's last few, one by one
+        nodes = tests = 0
+        for r in range(lanes):
+            shadows[r, 7], hit[r], n, m = any_triangle(
+                bounds, links, tris, tri_pass, shadows[r, 0], shadows[r, 1], shadows[r, 2],
+                shadows[r, 3], shadows[r, 4], shadows[r, 5], 0.0, shadows[r, 6], stack,
+            )
+            nodes += n
+            tests += m
+    counts[COUNT_NODES] += nodes
+    counts[COUNT_TESTS] += tests
+    for r in range(lanes):
+        ray, light = shadow_of[r, 0], shadow_of[r, 1]
+        if hit[r] != MISS:
+            result[ray, light, 0], result[ray, light, 1] = 0.0, tri_object[hit[r]]
+        else:
+            result[ray, light, 0], result[ray, light, 1] = shadows[r, 8] * shadows[r, 7], MISS
+
+
+@njit(inline="always")
+def hit_geometry(spheres, sphere_object, planes, plane_object, tris, tri_normals, tri_flat,
+                 tri_object, flat, ox, oy, oz, dx, dy, dz, t, kind, index, w1, w2):
+    """Return what a ray's hit is: (object, point, geometric normal, shading normal, entering).
+
+    Both normals are turned towards the ray when it meets the surface from behind (or from
+    inside); ``entering`` tells which.
+    """
+    px, py, pz = ox + t * dx, oy + t * dy, oz + t * dz
+    if kind == SPHERE:
+        obj = sphere_object[index]
+        gx, gy, gz = sphere_normal(spheres[index, 0], spheres[index, 1], spheres[index, 2],
+                                   spheres[index, 3], px, py, pz)
+        nx, ny, nz = gx, gy, gz
+    elif kind == PLANE:
+        obj = plane_object[index]
+        gx, gy, gz = planes[index, 3], planes[index, 4], planes[index, 5]
+        nx, ny, nz = gx, gy, gz
+    else:
+        obj = tri_object[index]
+        gx, gy, gz, nx, ny, nz = triangle_normals(tris, tri_normals, tri_flat, flat, index, w1, w2)
+    entering = gx * dx + gy * dy + gz * dz < 0.0
+    if not entering:
+        gx, gy, gz, nx, ny, nz = -gx, -gy, -gz, -nx, -ny, -nz
+    return obj, px, py, pz, gx, gy, gz, nx, ny, nz, entering
+
+
+@njit(inline="always")
+def shadow_start(spheres, sphere_object, planes, plane_object, materials, lights, light, px, py,
+                 pz, gx, gy, gz, lx, ly, lz, epsilon, has_analytic):
+    """Return the shadow ray of a hit towards a light, with what the spheres and planes do to it.
+
+    (light let through by them, their blocker or MISS, origin, direction, t_max); the
+    triangles are the caller's business.
+    """
+    sx, sy, sz, lx, ly, lz, t_light = shadow_ray(
+        lights, light, px, py, pz, gx, gy, gz, lx, ly, lz, epsilon
+    )
+    through, blocker = 1.0, MISS
+    if has_analytic:
+        through, blocker = analytic_let_through(
+            spheres, sphere_object, planes, plane_object, materials, sx, sy, sz, lx, ly, lz,
+            t_light,
+        )
+    return through, blocker, sx, sy, sz, lx, ly, lz, t_light
 
 
 @njit(inline="always")
@@ -585,7 +746,10 @@ def trace_row(y, x0, width, scene, settings, work, out):
     samples = settings.samples
     primary_found = work.primary
     primary_hit = work.primary_hit
+    primary_shadow = work.primary_shadow
+    primary_geometry = work.primary_geometry
     primary_hits(y, x0, width, scene, settings, work)
+    primary_shadows(width * samples, scene, settings, work)
     for i in range(width):
         x = x0 + i
         pixel = y * settings.image_width + x
@@ -641,24 +805,16 @@ def trace_row(y, x0, width, scene, settings, work, out):
                     if logged < log.shape[0]:
                         _log_miss(log, logged, background)
                     continue
-                px, py, pz = ox + t * dx, oy + t * dy, oz + t * dz
-                if hit_kind == SPHERE:
-                    obj = sphere_object[index]
-                    gx, gy, gz = sphere_normal(spheres[index, 0], spheres[index, 1],
-                                               spheres[index, 2], spheres[index, 3], px, py, pz)
-                    nx, ny, nz = gx, gy, gz
-                elif hit_kind == PLANE:
-                    obj = plane_object[index]
-                    gx, gy, gz = planes[index, 3], planes[index, 4], planes[index, 5]
-                    nx, ny, nz = gx, gy, gz
+                if primary:
+                    px, py, pz, gx, gy, gz, nx, ny, nz = _stored_geometry(primary_geometry, ray)
+                    obj = int(primary_geometry[ray, GEOMETRY_OBJECT])
+                    entering = primary_geometry[ray, GEOMETRY_ENTERING] != 0.0
                 else:
-                    obj = tri_object[index]
-                    gx, gy, gz, nx, ny, nz = triangle_normals(
-                        tris, tri_normals, tri_flat, settings.flat, index, w1, w2
+                    obj, px, py, pz, gx, gy, gz, nx, ny, nz, entering = hit_geometry(
+                        spheres, sphere_object, planes, plane_object, tris, tri_normals,
+                        tri_flat, tri_object, settings.flat, ox, oy, oz, dx, dy, dz, t, hit_kind,
+                        index, w1, w2,
                     )
-                entering = gx * dx + gy * dy + gz * dz < 0.0
-                if not entering:  # seen from behind (or from inside): normals towards the ray
-                    gx, gy, gz, nx, ny, nz = -gx, -gy, -gz, -nx, -ny, -nz
                 # Local light: a light behind the surface (N·L <= 0) contributes nothing and
                 # needs no shadow ray; each other light enters the model scaled by the light
                 # its shadow ray lets through (work.lights holds them).
@@ -669,26 +825,26 @@ def trace_row(y, x0, width, scene, settings, work, out):
                     blocker = MISS
                     if nx * lx + ny * ly + nz * lz > 0.0:
                         counts[COUNT_SHADOW] += 1
-                        sx, sy, sz, lx, ly, lz, t_light = shadow_ray(
-                            lights, light, px, py, pz, gx, gy, gz, lx, ly, lz, settings.epsilon
-                        )
-                        through = 1.0
-                        if has_analytic:
-                            through, blocker = analytic_let_through(
-                                spheres, sphere_object, planes, plane_object, materials, sx, sy,
-                                sz, lx, ly, lz, t_light,
+                        if primary:  # tested for the whole row beforehand
+                            through = primary_shadow[ray, light, 0]
+                            blocker = int(primary_shadow[ray, light, 1])
+                        else:
+                            through, blocker, sx, sy, sz, lx, ly, lz, t_light = shadow_start(
+                                spheres, sphere_object, planes, plane_object, materials, lights,
+                                light, px, py, pz, gx, gy, gz, lx, ly, lz, settings.epsilon,
+                                has_analytic,
                             )
-                        if blocker == MISS and has_triangles:  # the any-hit query
-                            fraction, hit, nodes, tests = any_triangle(
-                                bounds, links, tris, tri_pass, sx, sy, sz, lx, ly, lz, 0.0,
-                                t_light, stack,
-                            )
-                            counts[COUNT_NODES] += nodes
-                            counts[COUNT_TESTS] += tests
-                            if hit != MISS:
-                                through, blocker = 0.0, tri_object[hit]
-                            else:
-                                through *= fraction
+                            if blocker == MISS and has_triangles:  # the any-hit query
+                                fraction, hit, nodes, tests = any_triangle(
+                                    bounds, links, tris, tri_pass, sx, sy, sz, lx, ly, lz, 0.0,
+                                    t_light, stack,
+                                )
+                                counts[COUNT_NODES] += nodes
+                                counts[COUNT_TESTS] += tests
+                                if hit != MISS:
+                                    through, blocker = 0.0, tri_object[hit]
+                                else:
+                                    through *= fraction
                         if through > 0.0:
                             for field in range(4):
                                 lit[lit_count, field] = lights[light, field]

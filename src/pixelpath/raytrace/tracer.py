@@ -46,6 +46,7 @@ __all__ = ["EPSILON_SCALE", "STEPS", "render_frame"]
 EPSILON_SCALE = 1e-9
 TRACE_SLICES = 16  # progress steps while tracing (each a share of the rows, run on several threads)
 STEPS = 1 + TRACE_SLICES  # packing the scene (and building the BVH), then tracing
+RUNS_PER_STEP = 4  # runs of rows handed to the threads per progress step
 
 
 @dataclasses.dataclass(frozen=True)
@@ -286,10 +287,19 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
             wk.render_rows(run, world, settings, bvh_depth, view.x0, view.y0, rgb, depth,
                            object_id, counts)
 
-    for part in np.array_split(rows, TRACE_SLICES):
-        if len(part):
-            in_runs(trace, part)
-        options.progress(1)
+    # Runs of rows go to the threads as they free up, with no wait between progress steps:
+    # each step is reported when its share of the runs has finished.
+    runs = min(len(rows), TRACE_SLICES * RUNS_PER_STEP)
+    finished = 0
+
+    def report() -> None:
+        nonlocal finished
+        finished += 1
+        steps = finished * TRACE_SLICES // runs - (finished - 1) * TRACE_SLICES // runs
+        if steps:
+            options.progress(steps)
+
+    in_runs(trace, rows, runs=runs, done=report)
     stats = _stats(world, counts.sum(axis=0))
     report = _report(stats, triangles, settings) if options.explain else None
     return Frame(rgb, depth, object_id, stats, report)
