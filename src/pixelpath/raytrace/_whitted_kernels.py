@@ -757,6 +757,14 @@ def trace_row(y, x0, width, scene, settings, work, out):
         nearest = math.inf
         nearest_object = MISS
         for sample in range(samples):
+            if primary_hit[i * samples + sample, 1] == MISS and log.shape[0] == 0:
+                # An eye ray that hits nothing brings the background: no tree to follow.
+                counts[COUNT_PRIMARY] += 1
+                counts[COUNT_MISSED] += 1
+                red += _clamp01(background[0])
+                green += _clamp01(background[1])
+                blue += _clamp01(background[2])
+                continue
             sx, sy = sample_position(pixel, sample, samples)
             dx, dy, dz = primary_direction(
                 camera, x + sx, y + sy, settings.image_width, settings.image_height

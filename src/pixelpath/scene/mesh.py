@@ -179,13 +179,19 @@ class Mesh:
     def bounds(self) -> np.ndarray:
         """Return the (2, 3) axis-aligned bounding box ``[minimum, maximum]`` of the vertices.
 
+        Computed once per mesh (every render asks for it); the array is read-only.
+
         Examples
         --------
         >>> from pixelpath.scene import Box
         >>> Box((0, 0, 0), (1, 2, 3)).to_mesh().bounds().tolist()
         [[0.0, 0.0, 0.0], [1.0, 2.0, 3.0]]
         """
-        return np.stack([self.vertices.min(axis=0), self.vertices.max(axis=0)])
+        return self._bounds
+
+    @functools.cached_property
+    def _bounds(self) -> np.ndarray:
+        return v.frozen(np.stack([self.vertices.min(axis=0), self.vertices.max(axis=0)]))
 
     def transformed(self, matrix: Any) -> Mesh:
         """Return this mesh under an affine (4, 4) transform; normals use the inverse transpose.
