@@ -13,11 +13,12 @@
 * The bundled showcase (a chrome and a glass sphere among analytic and mesh objects) at
   1024×768 with ``max_depth=5``.
 
-Each figure is the best of ``--repeat`` runs after a warm-up run (compilation excluded); the
-shadowed bunny also shows the least CPU time of the process (all threads), which moves less
-than wall time with the load of a shared machine. The anchors are optional (``pip install
-embreex mitsuba``, in the ``bench`` extra) and are skipped with a message when absent. Ratios
-are only meaningful between figures of the same run.
+Each figure is the best of ``--repeat`` runs after a warm-up run (compilation excluded). The
+shadowed bunny's two renderers take turns (pixelpath, Mitsuba, pixelpath, ...), so that both
+meet the same moods of a shared machine; it also shows each one's median and least CPU time
+of the process (all threads), which moves less than wall time with the load. The anchors are
+optional (``pip install embreex mitsuba``, in the ``bench`` extra) and are skipped with a
+message when absent. Ratios are only meaningful between figures of the same run.
 
 Usage::
 
@@ -29,6 +30,7 @@ from __future__ import annotations
 import argparse
 import dataclasses
 import importlib.util
+import statistics
 import time
 from pathlib import Path
 
@@ -81,24 +83,38 @@ def primary_rays(camera: pp.Camera) -> tuple[np.ndarray, np.ndarray]:
 
 def best_of(repeat: int, call) -> tuple[float, object]:
     """Seconds of the fastest of ``repeat`` calls after a warm-up call, and its result."""
-    best, _, result = best_of_with_cpu(repeat, call)
-    return best, result
+    (timing,) = interleaved(repeat, [call])
+    return timing.best, timing.result
 
 
-def best_of_with_cpu(repeat: int, call) -> tuple[float, float, object]:
-    """Like :func:`best_of`, with the least CPU time of the process (all its threads) too.
+@dataclasses.dataclass
+class Timing:
+    best: float  # seconds, the fastest call
+    best_cpu: float  # the least CPU time of the process (all threads) of a call
+    median: float  # seconds
+    result: object
 
-    CPU time counts only the work done, not the time other jobs on a shared machine took
-    the cores, so its ratio between two programs moves less with the load than wall time.
+
+def interleaved(repeat: int, calls) -> list[Timing]:
+    """Time each call ``repeat`` times after a warm-up call each, taking turns.
+
+    Taking turns (a, b, a, b, ...) lets every program meet the same moods of a shared machine,
+    whose speed drifts by 10-25 % within a minute, so their ratio means something. CPU time
+    counts only the work done, not the time other jobs took the cores.
     """
-    result = call()
-    best = best_cpu = float("inf")
+    results = [call() for call in calls]
+    times: list[list[float]] = [[] for _ in calls]
+    cpu = [float("inf")] * len(calls)
     for _ in range(repeat):
-        start, start_cpu = time.perf_counter(), time.process_time()
-        result = call()
-        best = min(best, time.perf_counter() - start)
-        best_cpu = min(best_cpu, time.process_time() - start_cpu)
-    return best, best_cpu, result
+        for k, call in enumerate(calls):
+            start, start_cpu = time.perf_counter(), time.process_time()
+            results[k] = call()
+            times[k].append(time.perf_counter() - start)
+            cpu[k] = min(cpu[k], time.process_time() - start_cpu)
+    return [
+        Timing(min(t), c, statistics.median(t), result)
+        for t, c, result in zip(times, cpu, results, strict=True)
+    ]
 
 
 def bench_primary(mesh: pp.Mesh, size: int, repeat: int) -> None:
@@ -164,26 +180,29 @@ def bench_shadowed(mesh: pp.Mesh, path: Path | None, size: int, repeat: int) -> 
     diffuse = pp.Material(color=(0.8, 0.8, 0.8), ka=0.0, kd=1.0, ks=0.0)
     bunny = pp.Mesh(mesh.vertices, mesh.faces, material=diffuse, normals=mesh.normals)
     scene = pp.Scene(camera, [bunny], [pp.PointLight(light)], ambient=0.0)
-    seconds, cpu, image = best_of_with_cpu(
-        repeat, lambda: pp.render(scene, "raytrace", max_depth=0)
-    )
+    render = lambda: pp.render(scene, "raytrace", max_depth=0)  # noqa: E731
+    mitsuba = mitsuba_scene(mesh, path, camera, light, size)
+    calls = [render] if mitsuba is None else [render, lambda: mitsuba[0].render(mitsuba[1], spp=1)]
+    timings = interleaved(repeat, calls)
+    ours = timings[0]
+    image = ours.result
     print(
-        f"  pixelpath raytrace      {1000 * seconds:8.0f} ms  (CPU {1000 * cpu:.0f} ms; "
+        f"  pixelpath raytrace      {1000 * ours.best:8.0f} ms  (median "
+        f"{1000 * ours.median:.0f} ms, CPU {1000 * ours.best_cpu:.0f} ms; "
         f"{int((image.object_id >= 0).sum()):,} pixels on the bunny, "
         f"{image.stats['shadow rays']:,} shadow rays)"
     )
-    mitsuba = mitsuba_scene(mesh, path, camera, light, size)
     if mitsuba is None:
         return
-    mi, mi_scene = mitsuba
-    m_seconds, m_cpu, _ = best_of_with_cpu(repeat, lambda: mi.render(mi_scene, spp=1))
+    theirs = timings[1]
     print(
-        f"  Mitsuba 3 scalar_rgb    {1000 * m_seconds:8.0f} ms  (CPU {1000 * m_cpu:.0f} ms; "
-        "direct integrator, 1 spp)"
+        f"  Mitsuba 3 scalar_rgb    {1000 * theirs.best:8.0f} ms  (median "
+        f"{1000 * theirs.median:.0f} ms, CPU {1000 * theirs.best_cpu:.0f} ms; direct "
+        "integrator, 1 spp)"
     )
     print(
-        f"  ratio pixelpath / Mitsuba time: {seconds / m_seconds:.2f} "
-        f"(CPU time: {cpu / m_cpu:.2f})"
+        f"  ratio pixelpath / Mitsuba time: {ours.best / theirs.best:.2f} (medians: "
+        f"{ours.median / theirs.median:.2f}; CPU time: {ours.best_cpu / theirs.best_cpu:.2f})"
     )
 
 
@@ -242,10 +261,13 @@ def main() -> None:
     parser.add_argument("--size", type=int, default=1024, help="image side in pixels")
     args = parser.parse_args()
     label, mesh, path = load_bunny()
-    print(f"\n{label}: {len(mesh.triangles):,} triangles, {args.size}² primary rays")
-    bench_primary(mesh, args.size, args.repeat)
+    # The shadowed bunny first: Embree's worker threads, once started by the primary-ray
+    # section, stay in the process and slowed pixelpath's two threads by about 10 % (and sped
+    # Mitsuba up by about 5 %) in the renders that followed.
     print(f"\nshadowed {label} at {args.size}²: one point light, diffuse, one sample")
     bench_shadowed(mesh, path, args.size, args.repeat)
+    print(f"\n{label}: {len(mesh.triangles):,} triangles, {args.size}² primary rays")
+    bench_primary(mesh, args.size, args.repeat)
     height = args.size * 3 // 4
     print(f"\nshowcase (chrome and glass spheres) at {args.size}x{height}, max_depth 5")
     bench_showcase(args.size, height, args.repeat)
