@@ -358,14 +358,52 @@ def any_triangle(bounds, links, tris, pass_through, ox, oy, oz, dx, dy, dz, t_mi
     return let_through, MISS, nodes, tests
 
 
-@njit(inline="always")
+@njit(simd=True)
 def _enter_lanes(bounds, k, ox, oy, oz, ix, iy, iz, columns, t_min, limit):
-    """Return box k's entry distance for each lane (``box_entry``, four times side by side)."""
+    """Return box k's entry distance for each lane (``box_entry``, four times side by side).
+
+    Not inlined at Numba's level (LLVM inlines it): typing four copies of the box test at each
+    call site made the packet searches take seconds longer to compile.
+    """
     return (
         box_entry(bounds, k, ox[0], oy[0], oz[0], ix[0], iy[0], iz[0], columns, t_min, limit[0]),
         box_entry(bounds, k, ox[1], oy[1], oz[1], ix[1], iy[1], iz[1], columns, t_min, limit[1]),
         box_entry(bounds, k, ox[2], oy[2], oz[2], ix[2], iy[2], iz[2], columns, t_min, limit[2]),
         box_entry(bounds, k, ox[3], oy[3], oz[3], ix[3], iy[3], iz[3], columns, t_min, limit[3]),
+    )
+
+
+@njit
+def _packet(rays):
+    """Return a packet's (coherent, slab columns, ox, oy, oz, 1/dx, 1/dy, 1/dz), each a 4-tuple.
+
+    ``coherent``: every ray's direction has the signs of the first's, so all enter a box
+    through the same planes (:func:`slab_columns`).
+    """
+    ix = (reciprocal(rays[0, 3]), reciprocal(rays[1, 3]), reciprocal(rays[2, 3]),
+          reciprocal(rays[3, 3]))
+    iy = (reciprocal(rays[0, 4]), reciprocal(rays[1, 4]), reciprocal(rays[2, 4]),
+          reciprocal(rays[3, 4]))
+    iz = (reciprocal(rays[0, 5]), reciprocal(rays[1, 5]), reciprocal(rays[2, 5]),
+          reciprocal(rays[3, 5]))
+    columns = slab_columns(ix[0], iy[0], iz[0])
+    coherent = True
+    for r in range(1, LANES):
+        coherent &= slab_columns(_lane(ix, r), _lane(iy, r), _lane(iz, r)) == columns
+    ox = (rays[0, 0], rays[1, 0], rays[2, 0], rays[3, 0])
+    oy = (rays[0, 1], rays[1, 1], rays[2, 1], rays[3, 1])
+    oz = (rays[0, 2], rays[1, 2], rays[2, 2], rays[3, 2])
+    return coherent, columns, ox, oy, oz, ix, iy, iz
+
+
+@njit
+def _packet_shear(rays):
+    """Return each ray's :func:`shear_setup` (the watertight triangle test's constants)."""
+    return (
+        shear_setup(rays[0, 0], rays[0, 1], rays[0, 2], rays[0, 3], rays[0, 4], rays[0, 5]),
+        shear_setup(rays[1, 0], rays[1, 1], rays[1, 2], rays[1, 3], rays[1, 4], rays[1, 5]),
+        shear_setup(rays[2, 0], rays[2, 1], rays[2, 2], rays[2, 3], rays[2, 4], rays[2, 5]),
+        shear_setup(rays[3, 0], rays[3, 1], rays[3, 2], rays[3, 3], rays[3, 4], rays[3, 5]),
     )
 
 
@@ -410,17 +448,8 @@ def closest_triangles4(bounds, links, tris, source, skip, cull, rays, t_min, hit
     """
     nodes = 0
     tests = 0
-    ix = (reciprocal(rays[0, 3]), reciprocal(rays[1, 3]), reciprocal(rays[2, 3]),
-          reciprocal(rays[3, 3]))
-    iy = (reciprocal(rays[0, 4]), reciprocal(rays[1, 4]), reciprocal(rays[2, 4]),
-          reciprocal(rays[3, 4]))
-    iz = (reciprocal(rays[0, 5]), reciprocal(rays[1, 5]), reciprocal(rays[2, 5]),
-          reciprocal(rays[3, 5]))
-    columns = slab_columns(ix[0], iy[0], iz[0])
-    coherent = links.shape[0] > 0
-    for r in range(1, LANES):
-        coherent &= slab_columns(_lane(ix, r), _lane(iy, r), _lane(iz, r)) == columns
-    if not coherent:
+    coherent, columns, ox, oy, oz, ix, iy, iz = _packet(rays)
+    if not coherent or links.shape[0] == 0:
         for r in range(LANES):
             t, i, w1, w2, n, m = closest_triangle(
                 bounds, links, tris, source, skip, cull, rays[r, 0], rays[r, 1], rays[r, 2],
@@ -433,20 +462,12 @@ def closest_triangles4(bounds, links, tris, source, skip, cull, rays, t_min, hit
     for r in range(LANES):
         hit[r] = MISS
     best_t = rays[:, 6]
-    ox = (rays[0, 0], rays[1, 0], rays[2, 0], rays[3, 0])
-    oy = (rays[0, 1], rays[1, 1], rays[2, 1], rays[3, 1])
-    oz = (rays[0, 2], rays[1, 2], rays[2, 2], rays[3, 2])
     entry = _enter_lanes(bounds, 0, ox, oy, oz, ix, iy, iz, columns, t_min,
                          (best_t[0], best_t[1], best_t[2], best_t[3]))
     limit = _lane_limits(best_t)
     if _lanes_entering(entry, limit) == 0:
         return nodes, tests
-    shear = (
-        shear_setup(ox[0], oy[0], oz[0], rays[0, 3], rays[0, 4], rays[0, 5]),
-        shear_setup(ox[1], oy[1], oz[1], rays[1, 3], rays[1, 4], rays[1, 5]),
-        shear_setup(ox[2], oy[2], oz[2], rays[2, 3], rays[2, 4], rays[2, 5]),
-        shear_setup(ox[3], oy[3], oz[3], rays[3, 3], rays[3, 4], rays[3, 5]),
-    )
+    shear = _packet_shear(rays)
     k = 0
     top = 0
     while True:
@@ -529,17 +550,8 @@ def any_triangles4(bounds, links, tris, pass_through, rays, t_min, hit, stack):
     """
     nodes = 0
     tests = 0
-    ix = (reciprocal(rays[0, 3]), reciprocal(rays[1, 3]), reciprocal(rays[2, 3]),
-          reciprocal(rays[3, 3]))
-    iy = (reciprocal(rays[0, 4]), reciprocal(rays[1, 4]), reciprocal(rays[2, 4]),
-          reciprocal(rays[3, 4]))
-    iz = (reciprocal(rays[0, 5]), reciprocal(rays[1, 5]), reciprocal(rays[2, 5]),
-          reciprocal(rays[3, 5]))
-    columns = slab_columns(ix[0], iy[0], iz[0])
-    coherent = links.shape[0] > 0
-    for r in range(1, LANES):
-        coherent &= slab_columns(_lane(ix, r), _lane(iy, r), _lane(iz, r)) == columns
-    if not coherent:
+    coherent, columns, ox, oy, oz, ix, iy, iz = _packet(rays)
+    if not coherent or links.shape[0] == 0:
         for r in range(LANES):
             rays[r, 7], hit[r], n, m = any_triangle(
                 bounds, links, tris, pass_through, rays[r, 0], rays[r, 1], rays[r, 2],
@@ -551,20 +563,12 @@ def any_triangles4(bounds, links, tris, pass_through, rays, t_min, hit, stack):
     for r in range(LANES):
         rays[r, 7] = 1.0
         hit[r] = MISS
-    ox = (rays[0, 0], rays[1, 0], rays[2, 0], rays[3, 0])
-    oy = (rays[0, 1], rays[1, 1], rays[2, 1], rays[3, 1])
-    oz = (rays[0, 2], rays[1, 2], rays[2, 2], rays[3, 2])
     t_max = (rays[0, 6], rays[1, 6], rays[2, 6], rays[3, 6])
     limit = _lane_limits(t_max)
     active = _lanes_in(_enter_lanes(bounds, 0, ox, oy, oz, ix, iy, iz, columns, t_min, limit))
     if active == 0:
         return nodes, tests
-    shear = (
-        shear_setup(ox[0], oy[0], oz[0], rays[0, 3], rays[0, 4], rays[0, 5]),
-        shear_setup(ox[1], oy[1], oz[1], rays[1, 3], rays[1, 4], rays[1, 5]),
-        shear_setup(ox[2], oy[2], oz[2], rays[2, 3], rays[2, 4], rays[2, 5]),
-        shear_setup(ox[3], oy[3], oz[3], rays[3, 3], rays[3, 4], rays[3, 5]),
-    )
+    shear = _packet_shear(rays)
     blocked = 0
     k = 0
     top = 0
