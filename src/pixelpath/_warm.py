@@ -64,8 +64,9 @@ GROUPS: dict[str, tuple[str, float]] = {
     "color": ("pixelpath.color._kernels:warmup", 4.0),
     "raytrace-bvh": ("pixelpath.raytrace._kernels:warmup", 9.0),
     # The tracer's warm-up packs a one-pixel scene with the renderer's own code (BVH build,
-    # back-face test), so it also compiles those kernels if no other process did.
-    "raytrace": ("pixelpath.raytrace._whitted_kernels:warmup", 15.0),
+    # back-face test), so it also compiles those kernels if no other process did. Its packet
+    # searches (four rays at a time, vectorized) make it the longest group to compile.
+    "raytrace": ("pixelpath.raytrace._whitted_kernels:warmup", 35.0),
     "octree": ("pixelpath.hsr._kernels.octree:warmup", 5.0),
     "lines": ("pixelpath.raster._line_kernels:warmup", 3.0),
 }
