@@ -361,10 +361,11 @@ def primary_shadows(count, scene, settings, work):
                 spheres, sphere_object, planes, plane_object, materials, lights, light, px, py,
                 pz, gx, gy, gz, lx, ly, lz, settings.epsilon, has_analytic,
             )
-            if blocker != MISS or not (  # blocked already, or the tree is out of its way
-                has_triangles and enters_box(bounds, 0, sx, sy, sz, lx, ly, lz, 0.0,
-                                             t_light + abs(t_light) * BOX_SLACK)
-            ):  # (the root-box test of any_triangle, with its limit)
+            # Blocked already, or the tree is out of its way (any_triangle's own root-box test,
+            # with its limit): nothing for a packet to find.
+            if blocker != MISS or not has_triangles or not enters_box(
+                bounds, 0, sx, sy, sz, lx, ly, lz, 0.0, t_light + abs(t_light) * BOX_SLACK
+            ):
                 result[ray, light, 0], result[ray, light, 1] = through, blocker
                 continue
             shadows[queued, 0], shadows[queued, 1], shadows[queued, 2] = sx, sy, sz
