@@ -23,7 +23,8 @@ def _packet_hits(bvh, rays, t_min=0.0, cull=False, skip=None):
     stack = np.empty(bvh.depth + 1, dtype=np.intp)
     with kernels.slab_nan_allowed():
         nodes, tests = kernels.closest_triangles4(
-            bvh.bounds, bvh.links, bvh.corners, bvh.order, skip, cull, packet, t_min, hit, stack,
+            bvh.bounds, bvh.links, bvh.corners, bvh.order, skip, cull, packet, kernels.LANES, t_min,
+            hit, stack,
             np.empty(bvh.depth + 1), np.empty((bvh.depth + 1, kernels.LANES)),
         )
     return [(packet[r, 6], hit[r], packet[r, 7], packet[r, 8]) for r in range(4)], nodes, tests
@@ -134,7 +135,8 @@ def _any_hits(bvh, segments, pass_through, packet):
             rays[:, :7] = segments
             hit = np.empty(kernels.LANES, dtype=np.intp)
             nodes, tests = kernels.any_triangles4(
-                bvh.bounds, bvh.links, bvh.corners, pass_through, rays, 0.0, hit, stack
+                bvh.bounds, bvh.links, bvh.corners, pass_through, rays, kernels.LANES, 0.0, hit,
+                stack,
             )
             return [(rays[r, 7], hit[r]) for r in range(4)], nodes, tests
         found, nodes, tests = [], 0, 0

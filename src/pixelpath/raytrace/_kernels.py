@@ -432,12 +432,13 @@ def _lanes_entering(entry, limit):
 
 
 @njit(simd=True)
-def closest_triangles4(bounds, links, tris, source, skip, cull, rays, t_min, hit, stack, stack_t,
-                       lane_t):
+def closest_triangles4(bounds, links, tris, source, skip, cull, rays, lanes, t_min, hit, stack,
+                       stack_t, lane_t):
     """Find what :func:`closest_triangle` finds for each of ``LANES`` rays, in one walk.
 
-    ``rays`` (LANES, 9) holds each ray's origin and direction in columns 0-5 and its t_max in
-    column 6; the kernel writes t (left at t_max on a miss) and the weights w1, w2 into
+    The first ``lanes`` rows of ``rays`` (LANES, 9) are traced (fewer than ``LANES``: one by
+    one, as at the end of a row); each holds a ray's origin and direction in columns 0-5 and
+    its t_max in column 6; the kernel writes t (left at t_max on a miss) and the weights w1, w2 into
     columns 6-8 and the triangle (MISS on a miss) into ``hit``. Returns (nodes, tests) summed
     over the rays: a node counts once for each ray that enters it. The walk visits a node when
     any ray enters it before its nearest hit so far, testing both children's boxes for all
@@ -449,8 +450,8 @@ def closest_triangles4(bounds, links, tris, source, skip, cull, rays, t_min, hit
     nodes = 0
     tests = 0
     coherent, columns, ox, oy, oz, ix, iy, iz = _packet(rays)
-    if not coherent or links.shape[0] == 0:
-        for r in range(LANES):
+    if lanes < LANES or not coherent or links.shape[0] == 0:
+        for r in range(lanes):
             t, i, w1, w2, n, m = closest_triangle(
                 bounds, links, tris, source, skip, cull, rays[r, 0], rays[r, 1], rays[r, 2],
                 rays[r, 3], rays[r, 4], rays[r, 5], t_min, rays[r, 6], stack, stack_t,
@@ -536,11 +537,12 @@ def _lane_count(mask):
 
 
 @njit(simd=True)
-def any_triangles4(bounds, links, tris, pass_through, rays, t_min, hit, stack):
+def any_triangles4(bounds, links, tris, pass_through, rays, lanes, t_min, hit, stack):
     """Run :func:`any_triangle` for each of ``LANES`` segments, in one walk of the tree.
 
-    ``rays`` (LANES, 8) holds each segment's origin and direction in columns 0-5 and its
-    t_max in column 6; the kernel writes the light let through into column 7 and the blocker
+    The first ``lanes`` rows of ``rays`` (LANES, 8) are traced (fewer than ``LANES``: one by
+    one); each holds a segment's origin and direction in columns 0-5 and its t_max in
+    column 6; the kernel writes the light let through into column 7 and the blocker
     (MISS when none) into ``hit``. Returns (nodes, tests) summed over the rays. The walk takes
     the children in any_triangle's fixed order, each ray only into the boxes it enters and
     only until it is blocked, so each ray visits the nodes, tests the triangles and multiplies
@@ -551,8 +553,8 @@ def any_triangles4(bounds, links, tris, pass_through, rays, t_min, hit, stack):
     nodes = 0
     tests = 0
     coherent, columns, ox, oy, oz, ix, iy, iz = _packet(rays)
-    if not coherent or links.shape[0] == 0:
-        for r in range(LANES):
+    if lanes < LANES or not coherent or links.shape[0] == 0:
+        for r in range(lanes):
             rays[r, 7], hit[r], n, m = any_triangle(
                 bounds, links, tris, pass_through, rays[r, 0], rays[r, 1], rays[r, 2],
                 rays[r, 3], rays[r, 4], rays[r, 5], t_min, rays[r, 6], stack,

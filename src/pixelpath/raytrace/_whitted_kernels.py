@@ -284,22 +284,10 @@ def primary_hits(y, x0, width, scene, settings, work):
             packet[r, 3], packet[r, 4], packet[r, 5], packet[r, 6] = dx, dy, dz, t
             packet[r, 7] = packet[r, 8] = 0.0
         if links.shape[0] > 0:
-            if lanes == LANES:
-                nodes, tests = closest_triangles4(
-                    bounds, links, tris, tri_source, tri_back, cull, packet, near, lane_hit,
-                    stack, stack_t, lane_t,
-                )
-            else:
-                nodes = tests = 0
-                for r in range(lanes):
-                    t, tri, w1, w2, n, m = closest_triangle(
-                        bounds, links, tris, tri_source, tri_back, cull, packet[r, 0],
-                        packet[r, 1], packet[r, 2], packet[r, 3], packet[r, 4], packet[r, 5],
-                        near, packet[r, 6], stack, stack_t,
-                    )
-                    packet[r, 6], packet[r, 7], packet[r, 8], lane_hit[r] = t, w1, w2, tri
-                    nodes += n
-                    tests += m
+            nodes, tests = closest_triangles4(
+                bounds, links, tris, tri_source, tri_back, cull, packet, lanes, near, lane_hit,
+                stack, stack_t, lane_t,
+            )
             counts[COUNT_NODES] += nodes
             counts[COUNT_TESTS] += tests
             for r in range(lanes):
@@ -396,17 +384,7 @@ def _shadow_packet(lanes, bounds, links, tris, tri_pass, tri_object, shadows, sh
 
     Inlined into :func:`primary_shadows`: a call would pass a dozen arrays per packet.
     """
-    if lanes == LANES:
-        nodes, tests = any_triangles4(bounds, links, tris, tri_pass, shadows, 0.0, hit, stack)
-    else:  # the row's last few, one by one
-        nodes = tests = 0
-        for r in range(lanes):
-            shadows[r, 7], hit[r], n, m = any_triangle(
-                bounds, links, tris, tri_pass, shadows[r, 0], shadows[r, 1], shadows[r, 2],
-                shadows[r, 3], shadows[r, 4], shadows[r, 5], 0.0, shadows[r, 6], stack,
-            )
-            nodes += n
-            tests += m
+    nodes, tests = any_triangles4(bounds, links, tris, tri_pass, shadows, lanes, 0.0, hit, stack)
     counts[COUNT_NODES] += nodes
     counts[COUNT_TESTS] += tests
     for r in range(lanes):
@@ -756,13 +734,12 @@ def trace_row(y, x0, width, scene, settings, work, out):
     primary_hits(y, x0, width, scene, settings, work)
     primary_shadows(width * samples, scene, settings, work)
     for i in range(width):
-        x = x0 + i
-        pixel = y * settings.image_width + x
         red = green = blue = 0.0
         nearest = math.inf
         nearest_object = MISS
         for sample in range(samples):
-            if primary_hit[i * samples + sample, 1] == MISS and log.shape[0] == 0:
+            ray = i * samples + sample  # its eye ray's place in the row's primary pass
+            if primary_hit[ray, 1] == MISS and log.shape[0] == 0:
                 # An eye ray that hits nothing brings the background: no tree to follow.
                 counts[COUNT_PRIMARY] += 1
                 counts[COUNT_MISSED] += 1
@@ -770,12 +747,9 @@ def trace_row(y, x0, width, scene, settings, work, out):
                 green += _clamp01(background[1])
                 blue += _clamp01(background[2])
                 continue
-            sx, sy = sample_position(pixel, sample, samples)
-            dx, dy, dz = primary_direction(
-                camera, x + sx, y + sy, settings.image_width, settings.image_height
-            )
-            top = _push(rays, 0, camera[0], camera[1], camera[2], dx, dy, dz, 1.0, 0.0,
-                        float(PRIMARY), -1.0)
+            top = _push(rays, 0, camera[0], camera[1], camera[2], primary_found[ray, 3],
+                        primary_found[ray, 4], primary_found[ray, 5], 1.0, 0.0, float(PRIMARY),
+                        -1.0)
             r = g = b = 0.0
             first_t = math.inf
             first_object = MISS
@@ -787,7 +761,6 @@ def trace_row(y, x0, width, scene, settings, work, out):
                 primary = depth == 0.0
                 if primary:  # found for the whole row beforehand
                     counts[COUNT_PRIMARY] += 1
-                    ray = i * samples + sample
                     t, w1, w2 = primary_found[ray, 0], primary_found[ray, 1], primary_found[ray, 2]
                     hit_kind, index = primary_hit[ray, 0], primary_hit[ray, 1]
                 else:  # secondary rays see both sides of everything, from their origin on
