@@ -170,13 +170,13 @@ def new_work(scene, settings, bvh_depth, log_size, row_width):
         np.zeros(1, dtype=np.intp),
         np.empty((primary_rays, 6)),
         np.empty((primary_rays, 2), dtype=np.intp),
-        np.empty((LANES, 9)),
+        np.zeros((LANES, 9)),  # zeros: a short packet's unused rows are read, never used
         np.empty(LANES, dtype=np.intp),
         np.empty(LANES, dtype=np.intp),
         np.empty((bvh_depth + 1, LANES)),
         np.empty((primary_rays, GEOMETRY_FIELDS)),
         np.empty((primary_rays, lights, 2)),
-        np.empty((LANES, 9)),
+        np.zeros((LANES, 9)),
         np.empty((LANES, 2), dtype=np.intp),
     )
 
