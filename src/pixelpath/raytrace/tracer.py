@@ -47,6 +47,7 @@ EPSILON_SCALE = 1e-9
 TRACE_SLICES = 16  # progress steps while tracing (each a share of the rows, run on several threads)
 STEPS = 1 + TRACE_SLICES  # packing the scene (and building the BVH), then tracing
 RUNS_PER_STEP = 4  # runs of rows handed to the threads per progress step
+ROWS_PER_BLOCK = 16  # neighbouring rows traced one after the other (8-32 measured alike)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -221,8 +222,8 @@ def pack(scene: Scene, camera: Camera, options: RenderOptions):
 def spread(count: int) -> np.ndarray:
     """Return 0..count-1 in bit-reversed order: every run of it samples the whole range.
 
-    Threads take contiguous runs of the rows they are given; in this order each run holds rows
-    from all over the image, so each thread gets its share of busy and empty rows.
+    The tracer hands its blocks of rows to the threads in this order, so the blocks finished
+    by any progress step come from all over the image and each step is a fair share of the work.
 
     Examples
     --------
@@ -281,14 +282,21 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     depth = _pool.empty(shape, np.float32)
     object_id = _pool.empty(shape, np.int32)
     counts = np.zeros((view.height, wk.COUNTS), dtype=np.int64)
-    rows = spread(view.height)
+    # Blocks of neighbouring rows go to the threads as they free up: the next row's rays meet
+    # the boxes and triangles this row's brought into the cache (rows taken from all over the
+    # image one by one took 15-20 % longer on the bunny). The blocks themselves are taken from
+    # all over the image (spread), so each run of them, and each progress step, holds busy and
+    # empty rows alike. No wait between progress steps: each is reported when its share of the
+    # runs has finished.
+    blocks = np.array_split(np.arange(view.height, dtype=np.intp),
+                            -(-view.height // ROWS_PER_BLOCK))
+    rows = np.concatenate([blocks[k] for k in spread(len(blocks))])
+
     def trace(run: np.ndarray) -> None:
         with slab_nan_allowed():
             wk.render_rows(run, world, settings, bvh_depth, view.x0, view.y0, rgb, depth,
                            object_id, counts)
 
-    # Runs of rows go to the threads as they free up, with no wait between progress steps:
-    # each step is reported when its share of the runs has finished.
     runs = min(len(rows), TRACE_SLICES * RUNS_PER_STEP)
     finished = 0
 
