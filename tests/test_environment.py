@@ -275,3 +275,50 @@ def test_vectorized_kernels_use_packed_arithmetic_and_leave_numbas_setting_alone
     assert result["out"] == [0.0, 3.0, 6.0, 9.0]
     if result["x86"]:  # the instruction names are x86's
         assert result["packed"] == [True, False]
+
+
+UNCOUNTED = """
+import json
+import numpy as np
+from numba.core.errors import TypingError
+from pixelpath._jit import njit
+
+@njit(cache=False)
+def checked(values, k):
+    if values[k] < 0.0:
+        raise ValueError("negative")
+    return values[k]
+
+@njit(inline="always", cache=False)
+def pick(values, k):
+    return checked(values, k) if values.shape[0] > 0 else 0.0
+
+def total(values):
+    s = 0.0
+    for k in range(values.shape[0]):
+        s += pick(values, k)  # counted: the inlined helper's array is a new reference, per k
+    return s
+
+def allocates(n):
+    return np.zeros(n)[0]
+
+counted = njit(cache=False)(total)
+uncounted = njit(refcount=False, cache=False)(total)
+values = np.arange(5.0)
+sums = [counted(values), uncounted(values)]
+updates = [f.inspect_asm(f.signatures[0]).count("NRT_incref") for f in (counted, uncounted)]
+try:
+    njit(refcount=False, cache=False)(allocates)(3)
+    refused = False
+except TypingError:
+    refused = True
+print(json.dumps({"sums": sums, "updates": updates, "refused": refused}))
+"""
+
+
+def test_uncounted_kernels_update_no_reference_counts_and_may_not_allocate():
+    result = run_python(UNCOUNTED, **CACHE_VARIABLES, **JIT_ON)
+    assert result["sums"] == [10.0, 10.0]
+    counted, uncounted = result["updates"]
+    assert counted > 0 and uncounted == 0
+    assert result["refused"]

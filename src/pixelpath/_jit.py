@@ -15,6 +15,9 @@ Three rules live here, once:
 * Kernels that do the same arithmetic on several rays side by side (``njit(simd=True)``) are
   compiled with LLVM's SLP vectorizer, which Numba leaves off: the setting is switched on only
   while such a kernel compiles, under Numba's compiler lock, so no other compilation sees it.
+* Kernels that only work on the arrays they are given (``njit(refcount=False)``) are compiled
+  without Numba's reference counting, whose atomic updates of the shared arrays' counts, at
+  every call and inlined helper, the threads tracing one scene contended for.
 """
 
 from __future__ import annotations
@@ -40,6 +43,14 @@ def njit(function: Callable | None = None, /, **options) -> Callable:
     compiles the kernel, and the kernels it calls that are compiled with it, with LLVM's SLP
     vectorizer (without ``fastmath`` it keeps every result bit for bit).
 
+    ``refcount=False`` compiles the kernel without Numba's reference counting of arrays
+    (its runtime, NRT), for kernels that allocate no array and return none: they only read
+    and write the arrays they are given, which their caller keeps alive. Numba refuses to
+    compile an allocation in such a kernel. With counting on, every array handed to a call or
+    to an inlined helper gets an atomic increment and decrement of its count: per ray in the
+    ray tracer, on the scene's arrays, whose counts threads tracing the same scene then pass
+    back and forth between cores.
+
     Examples
     --------
     >>> from pixelpath._jit import njit
@@ -52,6 +63,8 @@ def njit(function: Callable | None = None, /, **options) -> Callable:
     options = {"fastmath": False, "nogil": True, **options}
     cache = options.pop("cache", True)
     simd = options.pop("simd", False)
+    if not options.pop("refcount", True):
+        options["_nrt"] = False  # the option Numba uses itself for kernels such as its sorts
 
     def compile_kernel(kernel: Callable) -> Callable:
         dispatcher = numba.njit(**options)(kernel)

@@ -230,7 +230,7 @@ def enters_box(bounds, k, ox, oy, oz, dx, dy, dz, t_min, t_max):
     return box_entry(bounds, k, ox, oy, oz, ix, iy, iz, columns, t_min, t_max) < math.inf
 
 
-@njit
+@njit(refcount=False)
 def closest_triangle(bounds, links, tris, source, skip, cull, ox, oy, oz, dx, dy, dz, t_min,
                      t_max, stack, stack_t):
     """Return the nearest triangle hit in (t_min, t_max): (t, i, w1, w2, nodes, tests).
@@ -298,7 +298,7 @@ def closest_triangle(bounds, links, tris, source, skip, cull, ox, oy, oz, dx, dy
     return best_t, best, best_w1, best_w2, nodes, tests
 
 
-@njit
+@njit(refcount=False)
 def any_triangle(bounds, links, tris, pass_through, ox, oy, oz, dx, dy, dz, t_min, t_max,
                  stack):
     """Return (light let through, blocker, nodes, tests) for the segment (t_min, t_max).
@@ -358,7 +358,7 @@ def any_triangle(bounds, links, tris, pass_through, ox, oy, oz, dx, dy, dz, t_mi
     return let_through, MISS, nodes, tests
 
 
-@njit(simd=True)
+@njit(simd=True, refcount=False)
 def _enter_lanes(bounds, k, ox, oy, oz, ix, iy, iz, columns, t_min, limit):
     """Return box k's entry distance for each lane (``box_entry``, four times side by side).
 
@@ -373,7 +373,7 @@ def _enter_lanes(bounds, k, ox, oy, oz, ix, iy, iz, columns, t_min, limit):
     )
 
 
-@njit
+@njit(refcount=False)
 def _packet(rays):
     """Return a packet's (coherent, slab columns, ox, oy, oz, 1/dx, 1/dy, 1/dz), each a 4-tuple.
 
@@ -396,7 +396,7 @@ def _packet(rays):
     return coherent, columns, ox, oy, oz, ix, iy, iz
 
 
-@njit
+@njit(refcount=False)
 def _packet_shear(rays):
     """Return each ray's :func:`shear_setup` (the watertight triangle test's constants)."""
     return (
@@ -431,7 +431,7 @@ def _lanes_entering(entry, limit):
     )
 
 
-@njit(simd=True)
+@njit(simd=True, refcount=False)
 def closest_triangles4(bounds, links, tris, source, skip, cull, rays, lanes, t_min, hit, stack,
                        stack_t, lane_t):
     """Find what :func:`closest_triangle` finds for each of ``LANES`` rays, in one walk.
@@ -536,7 +536,7 @@ def _lane_count(mask):
     return (mask & 1) + ((mask >> 1) & 1) + ((mask >> 2) & 1) + ((mask >> 3) & 1)
 
 
-@njit(simd=True)
+@njit(simd=True, refcount=False)
 def any_triangles4(bounds, links, tris, pass_through, rays, lanes, t_min, hit, stack):
     """Run :func:`any_triangle` for each of ``LANES`` segments, in one walk of the tree.
 

@@ -241,7 +241,7 @@ def primary_direction(camera, px, py, width, height):
     )
 
 
-@njit
+@njit(refcount=False)
 def primary_hits(y, x0, width, scene, settings, work):
     """Find the nearest hit of every primary ray of a row, the triangles a packet at a time.
 
@@ -300,7 +300,7 @@ def primary_hits(y, x0, width, scene, settings, work):
             found_hit[start + r, 0] = kinds[r]
 
 
-@njit
+@njit(refcount=False)
 def primary_shadows(count, scene, settings, work):
     """Test the shadow rays of the first ``count`` primary hits of a row, a packet at a time.
 
@@ -455,7 +455,7 @@ def nearest_analytic(spheres, planes, plane_back, ox, oy, oz, dx, dy, dz, t_min,
     return t, kind, index
 
 
-@njit
+@njit(refcount=False)
 def nearest_sphere(spheres, ox, oy, oz, dx, dy, dz, t_min, t_max, cull):
     """Return (t, index) of the nearest sphere hit in (t_min, t_max); (t_max, MISS) if none.
 
@@ -473,7 +473,7 @@ def nearest_sphere(spheres, ox, oy, oz, dx, dy, dz, t_min, t_max, cull):
     return best_t, index
 
 
-@njit
+@njit(refcount=False)
 def nearest_plane(planes, plane_back, ox, oy, oz, dx, dy, dz, t_min, t_max, cull):
     """Return (t, index) of the nearest plane hit in (t_min, t_max); (t_max, MISS) if none.
 
@@ -506,7 +506,7 @@ def sphere_normal(cx, cy, cz, radius, px, py, pz):
     return _unit((px - cx) / radius, (py - cy) / radius, (pz - cz) / radius)
 
 
-@njit
+@njit(refcount=False)
 def triangle_normals(tris, tri_normals, tri_flat, flat, index, w1, w2):
     """Return (geometric normal, shading normal) of triangle ``index`` at barycentric (w1, w2).
 
@@ -539,7 +539,7 @@ def _offset(px, py, pz, gx, gy, gz, dx, dy, dz, epsilon):
     return px + side * gx, py + side * gy, pz + side * gz
 
 
-@njit
+@njit(refcount=False)
 def analytic_let_through(spheres, sphere_object, planes, plane_object, materials, ox, oy, oz,
                          dx, dy, dz, t_max):
     """Return (light let through, blocking object or MISS) by the spheres and planes.
@@ -629,7 +629,7 @@ def transmission(ux, uy, uz, nx, ny, nz, entering, kr, kt, ior, bounce, fresnel)
     return kr, kt, total, term, eta, tx, ty, tz
 
 
-@njit
+@njit(refcount=False)
 def _log_ray(log, row, parent, kind, depth, weight, ox, oy, oz, dx, dy, dz, sample):
     log[row, PARENT] = parent
     log[row, KIND] = kind
@@ -640,7 +640,7 @@ def _log_ray(log, row, parent, kind, depth, weight, ox, oy, oz, dx, dy, dz, samp
     log[row, SAMPLE] = sample
 
 
-@njit
+@njit(refcount=False)
 def _log_miss(log, row, background):
     log[row, T] = math.inf
     log[row, OBJECT] = MISS
@@ -649,7 +649,7 @@ def _log_miss(log, row, background):
         log[row, LOCAL + c] = background[c]
 
 
-@njit
+@njit(refcount=False)
 def _log_hit(log, row, t, obj, kind, index, source, px, py, pz, nx, ny, nz, gx, gy, gz,
              entering, shaded, kr, kt, total, fresnel, eta):
     log[row, T] = t
@@ -679,7 +679,7 @@ RED, GREEN, BLUE, PIXEL_DEPTH, PIXEL_OBJECT = 0, 1, 2, 3, 4
 PIXEL_FIELDS = 5
 
 
-@njit
+@njit(refcount=False)
 def trace_row(y, x0, width, scene, settings, work, out):
     """Trace pixels x0 .. x0 + width − 1 of row y of the whole image into out (width, 5).
 
@@ -689,12 +689,14 @@ def trace_row(y, x0, width, scene, settings, work, out):
     The eye rays' nearest hits are found first, for the whole row (:func:`primary_hits`).
 
     The loops over pixels, samples and rays, and the local light of a hit, share this one
-    function on purpose: a compiled call that passes arrays costs two atomic reference-count
-    updates per array (in and out), more than the work of a ray that misses. So the scene's
-    and the scratch arrays are taken out of their tuples once per row; per secondary ray only
-    the nearest-hit searches are called (a few arrays each, the triangles' only when the ray
-    enters the root box), per packet of eye rays the packet's search, per shadow ray the
-    any-hit search, and per hit the normal and Phong kernels.
+    function on purpose: a compiled call passes each array as several machine words, more
+    work than a ray that misses needs. So the scene's and the scratch arrays are taken out of
+    their tuples once per row; per secondary ray only the nearest-hit searches are called (a
+    few arrays each, the triangles' only when the ray enters the root box), per packet of eye
+    rays the packet's search, per shadow ray the any-hit search, and per hit the normal and
+    Phong kernels. Like the searches, the row kernels count no references
+    (``njit(refcount=False)``): counted, the scene's arrays had their counts updated atomically
+    at each of those calls and inlined helpers, per ray, from every thread.
     """
     spheres = scene.spheres
     planes = scene.planes
