@@ -3,7 +3,7 @@
 Importing this module imports Numba, so the public modules import their ``_kernels``
 lazily (at first call) and ``import pixelpath`` stays fast.
 
-Three rules live here, once:
+The rules live here, once:
 
 * Kernels are cached on disk in a per-user folder, never inside site-packages, through a cache
   of their own (:mod:`pixelpath._cache`): no environment variable and no Numba setting is
@@ -16,8 +16,8 @@ Three rules live here, once:
   compiled with LLVM's SLP vectorizer, which Numba leaves off: the setting is switched on only
   while such a kernel compiles, under Numba's compiler lock, so no other compilation sees it.
 * Kernels that only work on the arrays they are given (``njit(refcount=False)``) are compiled
-  without Numba's reference counting, whose atomic updates of the shared arrays' counts, at
-  every call and inlined helper, the threads tracing one scene contended for.
+  without Numba's reference counting: its atomic updates of the arrays' counts, at every call
+  and inlined helper, made the threads tracing one scene contend for the same cache lines.
 """
 
 from __future__ import annotations
