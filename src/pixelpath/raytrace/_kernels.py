@@ -55,6 +55,7 @@ MAX_LEAF = 8  # a node holding more triangles than this is split even when a lea
 NODE_COST = 1.0  # SAH: cost of visiting a node, relative to one triangle test
 MISS = -1
 LANES = 4  # rays of a packet: one 256-bit vector of float64
+ROOT = np.intp(0)  # the root node: not the literal 0, which _enter_lanes was compiled for again
 
 
 @njit(inline="always")
@@ -463,7 +464,7 @@ def closest_triangles4(bounds, links, tris, source, skip, cull, rays, lanes, t_m
     for r in range(LANES):
         hit[r] = MISS
     best_t = rays[:, 6]
-    entry = _enter_lanes(bounds, 0, ox, oy, oz, ix, iy, iz, columns, t_min,
+    entry = _enter_lanes(bounds, ROOT, ox, oy, oz, ix, iy, iz, columns, t_min,
                          (best_t[0], best_t[1], best_t[2], best_t[3]))
     limit = _lane_limits(best_t)
     if _lanes_entering(entry, limit) == 0:
@@ -567,7 +568,7 @@ def any_triangles4(bounds, links, tris, pass_through, rays, lanes, t_min, hit, s
         hit[r] = MISS
     t_max = (rays[0, 6], rays[1, 6], rays[2, 6], rays[3, 6])
     limit = _lane_limits(t_max)
-    active = _lanes_in(_enter_lanes(bounds, 0, ox, oy, oz, ix, iy, iz, columns, t_min, limit))
+    active = _lanes_in(_enter_lanes(bounds, ROOT, ox, oy, oz, ix, iy, iz, columns, t_min, limit))
     if active == 0:
         return nodes, tests
     shear = _packet_shear(rays)

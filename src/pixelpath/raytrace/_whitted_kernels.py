@@ -337,7 +337,7 @@ def primary_shadows(count, scene, settings, work):
             geometry[ray, GEOMETRY_OBJECT] = obj
             geometry[ray, GEOMETRY_ENTERING] = entering
     for light in range(lights.shape[0]):
-        queued = 0
+        queued = np.intp(0)  # not the literal 0, for which any_triangles4 was compiled again
         for ray in range(count):
             if found_hit[ray, 1] == MISS:
                 continue
@@ -364,7 +364,7 @@ def primary_shadows(count, scene, settings, work):
             if queued == LANES:
                 _shadow_packet(queued, bounds, links, tris, tri_pass, tri_object, shadows,
                                shadow_of, hit, stack, counts, result)
-                queued = 0
+                queued = np.intp(0)
         _shadow_packet(queued, bounds, links, tris, tri_pass, tri_object, shadows, shadow_of,
                        hit, stack, counts, result)
 
@@ -733,6 +733,8 @@ def trace_row(y, x0, width, scene, settings, work, out):
     primary_hit = work.primary_hit
     primary_shadow = work.primary_shadow
     primary_geometry = work.primary_geometry
+    # Not the literal False: the searches would be compiled a second time for it.
+    cull_none = np.bool_(False)
     primary_hits(y, x0, width, scene, settings, work)
     primary_shadows(width * samples, scene, settings, work)
     for i in range(width):
@@ -768,13 +770,14 @@ def trace_row(y, x0, width, scene, settings, work, out):
                 else:  # secondary rays see both sides of everything, from their origin on
                     counts[COUNT_REFLECTED if kind == REFLECTED else COUNT_REFRACTED] += 1
                     t, hit_kind, index = nearest_analytic(
-                        spheres, planes, plane_back, ox, oy, oz, dx, dy, dz, 0.0, math.inf, False
+                        spheres, planes, plane_back, ox, oy, oz, dx, dy, dz, 0.0, math.inf,
+                        cull_none,
                     )
                     w1 = w2 = 0.0
                     if has_triangles and enters_box(bounds, 0, ox, oy, oz, dx, dy, dz, 0.0, t):
                         t_tri, tri, b1, b2, nodes, tests = closest_triangle(
-                            bounds, links, tris, tri_source, tri_back, False, ox, oy, oz, dx, dy,
-                            dz, 0.0, t, stack, stack_t,
+                            bounds, links, tris, tri_source, tri_back, cull_none, ox, oy, oz, dx,
+                            dy, dz, 0.0, t, stack, stack_t,
                         )
                         counts[COUNT_NODES] += nodes
                         counts[COUNT_TESTS] += tests
