@@ -245,7 +245,7 @@ def depth_sort(attrs, screen, count, triangles, planes, width, height, eps, max_
         rest[slack + i] = i
     first, end = slack, slack + n
     stack = np.empty(16, dtype=np.intp)
-    top = 0
+    top = np.intp(0)  # not the literal 0: Numba compiled its callees again for it
     order = np.empty(n, dtype=np.intp)
     drawn = 0
     pieces = np.empty((3, 4), dtype=np.intp)

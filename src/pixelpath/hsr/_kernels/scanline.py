@@ -96,7 +96,7 @@ def _scan_band(setup, rows, band_items, first_row, stop_row, x0, y0, inv_depth, 
     for k in range(n):
         where[k] = -1
     stack = np.empty((width + 1, 2), dtype=np.intp)  # spans [first, stop) still to resolve
-    active = 0
+    active = np.intp(0)  # not the literal 0: Numba compiled its callees again for it
     for j in range(first_row, stop_row):
         line = counts[j - y0]
         start, stop = entering[j - first_row], entering[j - first_row + 1]
@@ -255,7 +255,7 @@ def _walk(setup, band_items, ints, ael, ael_x, active, y, col_first, col_stop, d
     Each crossing puts its triangle into the in-list (with its 1/w along the line) or takes
     it out (the last place moves into its place).
     """
-    inside = 0
+    inside = np.intp(0)  # not the literal 0: Numba compiled its callees again for it
     current = col_first
     crossings = 0
     for q in range(active + 1):

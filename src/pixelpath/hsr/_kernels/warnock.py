@@ -31,6 +31,8 @@ DISJOINT, INTERSECTING, CONTAINED, SURROUNDING = 0, 1, 2, 3
 # How an area was decided (the report's columns, in this order).
 EMPTY, SINGLE, IN_FRONT, SUBDIVIDED, PIXEL = 0, 1, 2, 3, 4
 DECISIONS = 5
+NONE = np.intp(-1)  # no triangle: the background
+CLIPPED, WHOLE = np.bool_(True), np.bool_(False)  # _fill_area: covered pixels only, or all
 # Columns of a coverage box and of an area: the first and stop rows, then columns.
 ROW_FIRST, ROW_STOP, COL_FIRST, COL_STOP = 0, 1, 2, 3
 
@@ -108,7 +110,9 @@ def _decide_area(area, lo, hi, candidates, setup, boxes, x0, y0, inv_depth, tria
     test at its centre. A surrounding triangle nearer than every other over the whole area
     (compared at the corner pixel centres): fill the area with it. Otherwise: subdivide.
     """
-    count, only, front, front_value = 0, -1, -1, 0.0
+    # No literal -1, True or False reaches a call: Numba would compile the callee once more
+    # for each such value (it did, four times for _fill_area).
+    count, only, front, front_value = 0, NONE, NONE, 0.0
     corner_x, corner_y = area[COL_FIRST] + 0.5, area[ROW_FIRST] + 0.5
     for k in range(lo, hi):
         t = candidates[k]
@@ -123,17 +127,17 @@ def _decide_area(area, lo, hi, candidates, setup, boxes, x0, y0, inv_depth, tria
             if wins_depth_test(value, t, front_value, front):
                 front, front_value = t, value
     if count == 0:
-        _fill_area(area, -1, setup, boxes, x0, y0, inv_depth, triangle_id, False)
+        _fill_area(area, NONE, setup, boxes, x0, y0, inv_depth, triangle_id, WHOLE)
         return EMPTY
     if count == 1:
-        _fill_area(area, only, setup, boxes, x0, y0, inv_depth, triangle_id, True)
+        _fill_area(area, only, setup, boxes, x0, y0, inv_depth, triangle_id, CLIPPED)
         return SINGLE
     if area[COL_STOP] - area[COL_FIRST] == 1 and area[ROW_STOP] - area[ROW_FIRST] == 1:
         nearest = _nearest(corner_x, corner_y, lo, hi, candidates, kept, setup)
-        _fill_area(area, nearest, setup, boxes, x0, y0, inv_depth, triangle_id, False)
+        _fill_area(area, nearest, setup, boxes, x0, y0, inv_depth, triangle_id, WHOLE)
         return PIXEL
     if front >= 0 and _in_front(front, area, lo, hi, candidates, kept, setup):
-        _fill_area(area, front, setup, boxes, x0, y0, inv_depth, triangle_id, False)
+        _fill_area(area, front, setup, boxes, x0, y0, inv_depth, triangle_id, WHOLE)
         return IN_FRONT
     return SUBDIVIDED
 
