@@ -22,6 +22,9 @@ from pixelpath.raster._kernels import FRUSTUM_PLANES
 
 # Columns of a screen segment: both ends' (x, y, 1/w) in pixels.
 SEGMENT_FIELDS = 6
+# Where each end's (x, y, 1/w) starts in a segment's row; not literals, for which Numba
+# compiled _to_screen once per value.
+START_END, STOP_END = np.intp(0), np.intp(3)
 
 
 @njit
@@ -56,8 +59,8 @@ def clip_segments(starts, ends, matrix, screen, kept, width, height):
             continue
         if first > 0.0 or last < 1.0:
             cut += 1
-        _to_screen(a, b, first, screen, e, 0, width, height)
-        _to_screen(a, b, last, screen, e, 3, width, height)
+        _to_screen(a, b, first, screen, e, START_END, width, height)
+        _to_screen(a, b, last, screen, e, STOP_END, width, height)
     return cut
 
 
