@@ -47,27 +47,28 @@ __all__ = [
 # Every kernel module's warm-up, the one registry of them. Group name -> (warm-up function as
 # "module:function", seconds it took to compile on the 2-core machine pixelpath is developed
 # on; only used to share out work and to say how long a first run will take, before anything
-# was measured here).
+# was measured here). Measured 2026-11-23: clip and color alone in one process, the others in
+# cold demos and renders that compile them in two processes side by side.
 GROUPS: dict[str, tuple[str, float]] = {
-    "front": ("pixelpath.raster._kernels:warm_front", 4.5),
+    "front": ("pixelpath.raster._kernels:warm_front", 9.0),
     "vertex-shading": ("pixelpath.raster._kernels:warm_vertex_shading", 1.0),
-    "back": ("pixelpath.raster._kernels:warm_back", 6.0),
+    "back": ("pixelpath.raster._kernels:warm_back", 10.0),
     # After "back" (every method that needs it needs "back" too): it reuses that one's kernels.
-    "shade": ("pixelpath.raster._kernels:warm_shade", 1.5),
+    "shade": ("pixelpath.raster._kernels:warm_shade", 1.0),
     "scan": ("pixelpath.raster._kernels:warm_scan", 1.5),
-    "scanline": ("pixelpath.hsr._kernels.scanline:warmup", 4.5),
-    "warnock": ("pixelpath.hsr._kernels.warnock:warmup", 5.0),
-    "painter": ("pixelpath.hsr._kernels.painter:warmup", 9.5),
-    "bsp": ("pixelpath.hsr._kernels.bsp:warmup", 13.0),
-    "lighting": ("pixelpath.lighting._kernels:warmup", 1.5),
-    "clip": ("pixelpath.clip._kernels:warmup", 4.0),
-    "color": ("pixelpath.color._kernels:warmup", 4.0),
+    "scanline": ("pixelpath.hsr._kernels.scanline:warmup", 6.5),
+    "warnock": ("pixelpath.hsr._kernels.warnock:warmup", 4.5),
+    "painter": ("pixelpath.hsr._kernels.painter:warmup", 7.5),
+    "bsp": ("pixelpath.hsr._kernels.bsp:warmup", 16.0),
+    "lighting": ("pixelpath.lighting._kernels:warmup", 1.0),
+    "clip": ("pixelpath.clip._kernels:warmup", 35.0),
+    "color": ("pixelpath.color._kernels:warmup", 32.0),
     "raytrace-bvh": ("pixelpath.raytrace._kernels:warmup", 9.0),
     # The tracer's warm-up packs a one-pixel scene with the renderer's own code (BVH build,
     # back-face test), so it also compiles those kernels if no other process did. Its packet
     # searches (four rays at a time, vectorized) make it the longest group to compile.
-    "raytrace": ("pixelpath.raytrace._whitted_kernels:warmup", 35.0),
-    "octree": ("pixelpath.hsr._kernels.octree:warmup", 5.0),
+    "raytrace": ("pixelpath.raytrace._whitted_kernels:warmup", 36.0),
+    "octree": ("pixelpath.hsr._kernels.octree:warmup", 9.0),
     "lines": ("pixelpath.raster._line_kernels:warmup", 3.0),
 }
 
