@@ -196,6 +196,16 @@ def slab_columns(ix, iy, iz):
 
 
 @njit(inline="always")
+def box_limit(t):
+    """Return t grown by the box test's rounding bound: the farthest box entry worth visiting.
+
+    A box entered up to here may still hold a hit at t (or end the segment there); the same
+    growth widens the exit distance inside :func:`box_entry`.
+    """
+    return t + abs(t) * BOX_SLACK
+
+
+@njit(inline="always")
 def box_entry(bounds, k, ox, oy, oz, ix, iy, iz, columns, t_min, t_max):
     """Return where the ray enters box k within [t_min, t_max], inf when it misses it.
 
@@ -216,7 +226,7 @@ def box_entry(bounds, k, ox, oy, oz, ix, iy, iz, columns, t_min, t_max):
     hi = far_x if far_x < t_max else t_max
     hi = far_y if far_y < hi else hi
     hi = far_z if far_z < hi else hi
-    return lo if lo <= hi + abs(hi) * BOX_SLACK else math.inf
+    return lo if lo <= box_limit(hi) else math.inf
 
 
 @njit(inline="always")
@@ -260,7 +270,7 @@ def closest_triangle(bounds, links, tris, source, skip, cull, ox, oy, oz, dx, dy
     while True:
         # Visit node k (entered at k_t) unless it lies beyond the nearest hit found so far,
         # then go on with its nearer child hit, or else the node last pushed.
-        limit = best_t + abs(best_t) * BOX_SLACK
+        limit = box_limit(best_t)
         descend = False
         if k_t <= limit:
             nodes += 1
@@ -317,7 +327,7 @@ def any_triangle(bounds, links, tris, pass_through, ox, oy, oz, dx, dy, dz, t_mi
     ix, iy, iz = reciprocal(dx), reciprocal(dy), reciprocal(dz)
     columns = slab_columns(ix, iy, iz)
     kx, ky, kz, okx, oky, okz, sx, sy, sz = shear_setup(ox, oy, oz, dx, dy, dz)
-    limit = t_max + abs(t_max) * BOX_SLACK
+    limit = box_limit(t_max)
     if box_entry(bounds, 0, ox, oy, oz, ix, iy, iz, columns, t_min, limit) == math.inf:
         return let_through, MISS, nodes, tests
     k = 0
@@ -412,10 +422,7 @@ def _packet_shear(rays):
 def _lane_limits(best_t):
     """Return each lane's farthest box entry still worth visiting (its nearest hit, grown)."""
     return (
-        best_t[0] + abs(best_t[0]) * BOX_SLACK,
-        best_t[1] + abs(best_t[1]) * BOX_SLACK,
-        best_t[2] + abs(best_t[2]) * BOX_SLACK,
-        best_t[3] + abs(best_t[3]) * BOX_SLACK,
+        box_limit(best_t[0]), box_limit(best_t[1]), box_limit(best_t[2]), box_limit(best_t[3])
     )
 
 

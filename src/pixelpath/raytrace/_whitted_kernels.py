@@ -40,11 +40,11 @@ import numpy as np
 from pixelpath._jit import njit
 from pixelpath.lighting._kernels import light_direction, shade_point
 from pixelpath.raytrace._kernels import (
-    BOX_SLACK,
     LANES,
     MISS,
     any_triangle,
     any_triangles4,
+    box_limit,
     closest_triangle,
     closest_triangles4,
     enters_box,
@@ -352,7 +352,7 @@ def primary_shadows(count, scene, settings, work):
             # Blocked already, or the tree is out of its way (any_triangle's own root-box test,
             # with its limit): nothing for a packet to find.
             if blocker != MISS or not has_triangles or not enters_box(
-                bounds, 0, sx, sy, sz, lx, ly, lz, 0.0, t_light + abs(t_light) * BOX_SLACK
+                bounds, 0, sx, sy, sz, lx, ly, lz, 0.0, box_limit(t_light)
             ):
                 result[ray, light, 0], result[ray, light, 1] = through, blocker
                 continue
