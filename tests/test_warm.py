@@ -70,8 +70,8 @@ def test_a_group_that_follows_another_shares_its_process_after_it(tmp_path):
 def test_recorded_seconds_replace_the_estimate(tmp_path):
     (tmp_path / "front").write_text("0.250\n")
     (tmp_path / "back").write_text("not a number\n")
-    assert _warm._recorded_seconds("front", tmp_path) == 0.25
-    assert _warm._recorded_seconds("back", tmp_path) == _warm.GROUPS["back"][1]
+    assert _warm.recorded_seconds("front", tmp_path) == 0.25
+    assert _warm.recorded_seconds("back", tmp_path) == _warm.GROUPS["back"][1]
 
 
 def test_unknown_groups_are_refused():
@@ -153,7 +153,9 @@ _RENDER_EVERY_METHOD = textwrap.dedent(
 @needs_jit
 @pytest.mark.slow
 def test_after_compiling_the_groups_a_render_compiles_nothing(tmp_path):
-    env = {**os.environ, "PIXELPATH_CACHE_DIR": str(tmp_path)}
+    # PIXELPATH_PRECOMPILED=0: an installed package's own kernels stay out of this empty cache,
+    # so that the groups really compile here.
+    env = {**os.environ, "PIXELPATH_CACHE_DIR": str(tmp_path), "PIXELPATH_PRECOMPILED": "0"}
     env.pop("NUMBA_CACHE_DIR", None)
     methods = sorted(_warm.METHOD_GROUPS)
     warm = (
@@ -170,3 +172,21 @@ def test_after_compiling_the_groups_a_render_compiles_nothing(tmp_path):
     result = subprocess.run([sys.executable, "-c", _RENDER_EVERY_METHOD, *methods], env=env,
                             check=True, capture_output=True, text=True)
     assert json.loads(result.stdout) == []
+
+
+@needs_jit
+@pytest.mark.slow
+def test_with_the_kernels_compiled_at_build_time_a_first_render_compiles_nothing(tmp_path):
+    from pixelpath._precompiled import MANIFEST, SHIPPED
+
+    if not (SHIPPED / MANIFEST).is_file():
+        pytest.skip("no kernels compiled at build time here (an editable install, or "
+                    "PIXELPATH_PRECOMPILED=0 when it was built)")
+    env = {**os.environ, "PIXELPATH_CACHE_DIR": str(tmp_path)}
+    env.pop("NUMBA_CACHE_DIR", None)
+    env.pop("PIXELPATH_PRECOMPILED", None)
+    methods = sorted(_warm.METHOD_GROUPS)
+    result = subprocess.run([sys.executable, "-c", _RENDER_EVERY_METHOD, *methods], env=env,
+                            check=True, capture_output=True, text=True)
+    assert json.loads(result.stdout) == []
+    assert (tmp_path / "numba" / "precompiled").is_dir()  # copied from the package, not compiled

@@ -112,12 +112,13 @@ def writable_cache_dir() -> Path | None:
 
     :func:`cache_dir` when it can be written; else the private temporary folder
     ``pixelpath-<uid>/numba`` with one :class:`CacheWarning`; else None (the kernels compile
-    in every new process) with one :class:`CacheWarning`. Decided once per process.
+    in every new process) with one :class:`CacheWarning`. Decided once per process, when the
+    kernels compiled at build time are also copied into it (:mod:`pixelpath._precompiled`).
     """
     preferred = cache_dir()
     reason = _unwritable_reason(preferred)
     if reason is None:
-        return preferred
+        return _seeded(preferred)
     advice = "set PIXELPATH_CACHE_DIR to a writable folder to choose where"
     try:
         fallback = _fallback_dir()
@@ -137,7 +138,15 @@ def writable_cache_dir() -> Path | None:
         CacheWarning,
         stacklevel=2,
     )
-    return fallback
+    return None if fallback is None else _seeded(fallback)
+
+
+def _seeded(folder: Path) -> Path:
+    """Hand ``folder`` the kernels compiled when pixelpath was built (once), and return it."""
+    from pixelpath._precompiled import seed
+
+    seed(folder)
+    return folder
 
 
 def _module_file(name: str) -> Path | None:
@@ -215,6 +224,22 @@ def source_stamp(path: Path) -> str:
     return digest.hexdigest()
 
 
+def kernel_cache_folder(root: Path, source_folder: Path) -> Path:
+    """Return the folder of ``root`` that caches the kernels of the files in ``source_folder``.
+
+    Named as Numba names its own: the folder's name and a hash of its resolved path.
+
+    Examples
+    --------
+    >>> from pathlib import Path
+    >>> from pixelpath._cache import PACKAGE_DIR, kernel_cache_folder
+    >>> kernel_cache_folder(Path("/cache"), PACKAGE_DIR / "raster").name.startswith("raster_")
+    True
+    """
+    resolved = source_folder.resolve()
+    return root / _CacheLocator.get_suitable_cache_subpath(str(resolved / "kernels.py"))
+
+
 class KernelCacheLocator(_CacheLocator):
     """Numba cache locator for pixelpath's kernels: the folder and the stamp described above.
 
@@ -227,7 +252,7 @@ class KernelCacheLocator(_CacheLocator):
     def __init__(self, py_func, py_file: str, root: Path) -> None:
         self._py_file = Path(py_file).resolve()
         self._lineno = py_func.__code__.co_firstlineno
-        self._cache_path = str(root / self.get_suitable_cache_subpath(py_file))
+        self._cache_path = str(kernel_cache_folder(root, self._py_file.parent))
 
     def get_cache_path(self) -> str:
         """Return the folder of this kernel's cache files."""

@@ -26,7 +26,7 @@ import os
 import subprocess
 import sys
 import time
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -41,7 +41,11 @@ __all__ = [
     "estimate_seconds",
     "groups_for",
     "kernel_modules",
+    "marker_folder",
+    "recorded_seconds",
     "run_warmups",
+    "sources_digest",
+    "write_markers",
 ]
 
 # Every kernel module's warm-up, the one registry of them. Group name -> (warm-up function as
@@ -169,7 +173,7 @@ def run_warmups() -> list[WarmupReport]:
         reports.append(WarmupReport(module, elapsed, compiled, loaded))
     folder = _marker_folder() if _jit_enabled() else None
     if folder is not None:
-        _write_markers(folder, seconds)
+        write_markers(folder, seconds)
     return reports
 
 
@@ -194,6 +198,24 @@ def groups_for(methods: Iterable[str], shadings: Iterable[str] | None = None) ->
 
 
 @functools.cache
+def sources_digest() -> str:
+    """Return a hash of pixelpath's source files, their names and contents.
+
+    Examples
+    --------
+    >>> from pixelpath._warm import sources_digest
+    >>> len(sources_digest())
+    64
+    """
+    package = Path(__file__).resolve().parent
+    digest = hashlib.sha256()
+    for path in sorted(package.rglob("*.py")):
+        digest.update(path.relative_to(package).as_posix().encode())
+        digest.update(path.read_bytes())
+    return digest.hexdigest()
+
+
+@functools.cache
 def _stamp() -> str:
     """Hash of where pixelpath is installed, its source files and the Python and Numba versions.
 
@@ -203,11 +225,21 @@ def _stamp() -> str:
     import numba
 
     package = Path(__file__).resolve().parent
-    digest = hashlib.sha256(f"{sys.version}|{numba.__version__}|{package}".encode())
-    for path in sorted(package.rglob("*.py")):
-        digest.update(path.relative_to(package).as_posix().encode())
-        digest.update(path.read_bytes())
-    return digest.hexdigest()[:16]
+    where = f"{sys.version}|{numba.__version__}|{package}|{sources_digest()}"
+    return hashlib.sha256(where.encode()).hexdigest()[:16]
+
+
+def marker_folder(root: Path) -> Path:
+    """Return the folder of the markers of this installation's groups in the kernel cache ``root``.
+
+    Examples
+    --------
+    >>> from pathlib import Path
+    >>> from pixelpath._warm import marker_folder
+    >>> marker_folder(Path("/cache")).parent.as_posix()
+    '/cache/warm'
+    """
+    return root / "warm" / _stamp()
 
 
 def _marker_folder() -> Path | None:
@@ -215,7 +247,7 @@ def _marker_folder() -> Path | None:
     from pixelpath._cache import writable_cache_dir
 
     root = writable_cache_dir()
-    return None if root is None else root / "warm" / _stamp()
+    return None if root is None else marker_folder(root)
 
 
 def _jit_enabled() -> bool:
@@ -243,7 +275,17 @@ def cold_groups(groups: Iterable[str]) -> list[str]:
     return [group for group in groups if not (folder / group).is_file()]
 
 
-def _recorded_seconds(group: str, folder: Path | None) -> float:
+def recorded_seconds(group: str, folder: Path | None) -> float:
+    """Return the seconds ``group`` took to compile here, else its built-in estimate.
+
+    The seconds are read from the group's marker in ``folder``; the estimate is :data:`GROUPS`'.
+
+    Examples
+    --------
+    >>> from pixelpath._warm import GROUPS, recorded_seconds
+    >>> recorded_seconds("front", None) == GROUPS["front"][1]
+    True
+    """
     if folder is None:
         return GROUPS[group][1]
     try:
@@ -265,7 +307,7 @@ def estimate_seconds(groups: Sequence[str], processes: int | None = None) -> flo
     """
     folder = _marker_folder()
     shares = _share_out(groups, processes or _cores(), folder)
-    return max((sum(_recorded_seconds(g, folder) for g in share) for share in shares), default=0)
+    return max((sum(recorded_seconds(g, folder) for g in share) for share in shares), default=0)
 
 
 def _cores() -> int:
@@ -286,7 +328,7 @@ def _share_out(groups: Sequence[str], processes: int, folder: Path | None) -> li
         units.setdefault(leader if leader in groups else group, []).append(group)
     for unit in units.values():
         unit.sort(key=lambda g: g in FOLLOWS)
-    cost = {lead: sum(_recorded_seconds(g, folder) for g in unit) for lead, unit in units.items()}
+    cost = {lead: sum(recorded_seconds(g, folder) for g in unit) for lead, unit in units.items()}
     shares: list[list[str]] = [[] for _ in range(max(1, min(processes, len(units))))]
     loads = [0.0] * len(shares)
     for lead in sorted(units, key=lambda g: -cost[g]):
@@ -345,7 +387,7 @@ def compile_groups(groups: Sequence[str], processes: int | None = None) -> dict[
     seconds = _compile_here(shares[0])
     for share, worker in zip(shares[1:], workers, strict=True):
         seconds.update(_finish_worker(share, worker))
-    _write_markers(folder, seconds)
+    write_markers(folder, seconds)
     return seconds
 
 
@@ -370,8 +412,11 @@ def _finish_worker(share: list[str], worker: subprocess.Popen) -> dict[str, floa
     return {group: float(value) for group, value in seconds.items()}
 
 
-def _write_markers(folder: Path, seconds: dict[str, float]) -> None:
-    """Record each compiled group; an unwritable cache only means the next run checks again."""
+def write_markers(folder: Path, seconds: Mapping[str, float]) -> None:
+    """Record each compiled group and its seconds in the markers' ``folder``.
+
+    An unwritable cache only means that the next run checks again.
+    """
     try:
         folder.mkdir(parents=True, exist_ok=True)
         for group, value in seconds.items():

@@ -1,0 +1,203 @@
+"""Kernels compiled at build time: shipped as Numba cache files, copied into a fresh cache on
+first use, and loaded there instead of compiled. The round trip runs in fresh interpreters
+(a process's kernels are located once), with the small ``lighting`` group."""
+
+from __future__ import annotations
+
+import json
+import os
+import pickle
+import subprocess
+import sys
+import textwrap
+from pathlib import Path
+
+import numba
+import pytest
+
+from pixelpath import _precompiled, _warm
+
+needs_jit = pytest.mark.skipif(
+    numba.config.DISABLE_JIT, reason="NUMBA_DISABLE_JIT=1: nothing is compiled or cached"
+)
+
+
+def run_python(code: str, *args: str, **changes: str) -> dict:
+    """Run ``code`` with ``args`` in a fresh interpreter, the environment changed; parse its JSON.
+
+    ``NUMBA_CACHE_DIR`` is dropped, so that ``PIXELPATH_CACHE_DIR`` alone says where the
+    kernels go.
+    """
+    env = {k: v for k, v in os.environ.items() if k != "NUMBA_CACHE_DIR"}
+    result = subprocess.run(
+        [sys.executable, "-c", textwrap.dedent(code), *args],
+        capture_output=True,
+        text=True,
+        env={**env, **changes},
+        timeout=300,
+        check=False,
+    )
+    assert result.returncode == 0, result.stderr
+    return json.loads(result.stdout.splitlines()[-1])
+
+
+# As setup.py runs it: the package's own shipped kernels (if any) are not copied into the cache
+# the build compiles in (PIXELPATH_PRECOMPILED=0), so the group really compiles.
+BUILD = """
+import json, sys
+from pathlib import Path
+from pixelpath import _precompiled
+print(json.dumps(_precompiled.build(Path(sys.argv[1]), ["lighting"])))
+"""
+
+# Points the package at the files built above instead of its own, then runs the lighting
+# group's warm-up and reports what Numba compiled and what it loaded from the disk cache.
+USE = """
+import json, sys
+from pathlib import Path
+from pixelpath import _precompiled
+_precompiled.SHIPPED = Path(sys.argv[1])
+from pixelpath import _warm
+cold = _warm.cold_groups(["lighting"])
+_warm.compile_groups(["lighting"], processes=1)
+compiled, loaded = _warm._specializations("pixelpath.lighting._kernels")
+print(json.dumps({"cold": cold, "compiled": compiled, "loaded": loaded}))
+"""
+
+
+def write_index(path: Path, version: object, stamp: object, data: dict[str, bytes]) -> None:
+    """Write a cache index as Numba does (its version, then (stamp, overloads)) and its data."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    with path.open("wb") as index:
+        pickle.dump(version, index)
+        pickle.dump((stamp, {f"key{i}": name for i, name in enumerate(data)}), index)
+    for name, content in data.items():
+        (path.parent / name).write_bytes(content)
+
+
+STALE_INDEX = "_kernels.removed-1.py311.nbi"
+
+
+@pytest.fixture(scope="module")
+def shipped(tmp_path_factory) -> Path:
+    """The lighting group's kernels built as setup.py builds them, from a scratch cache.
+
+    The cache also holds the index of a kernel compiled from older sources, as a build folder
+    reused across edits does.
+    """
+    if numba.config.DISABLE_JIT:
+        pytest.skip("NUMBA_DISABLE_JIT=1: nothing is compiled or cached")
+    from pixelpath._cache import PACKAGE_DIR, kernel_cache_folder
+
+    build_cache = tmp_path_factory.mktemp("build-cache")
+    old = kernel_cache_folder(build_cache / "numba", PACKAGE_DIR / "lighting")
+    write_index(old / STALE_INDEX, numba.__version__, "older sources",
+                {STALE_INDEX.replace(".nbi", ".1.nbc"): b"old code"})
+    destination = tmp_path_factory.mktemp("shipped") / "_precompiled"
+    run_python(BUILD, str(destination), PIXELPATH_CACHE_DIR=str(build_cache),
+               PIXELPATH_PRECOMPILED="0")
+    return destination
+
+
+def test_the_build_ships_fresh_indexes_with_the_data_they_name(shipped):
+    manifest = json.loads((shipped / "manifest.json").read_text())
+    assert set(manifest["groups"]) == {"lighting"} and manifest["groups"]["lighting"] > 0
+    assert manifest["sources"] == _warm.sources_digest()
+    assert manifest["numba"] == numba.__version__
+    indexes = sorted((shipped / "lighting").glob("*.nbi"))
+    assert indexes and STALE_INDEX not in {index.name for index in indexes}
+    named = set()
+    for path in indexes:
+        index = _precompiled._Index.read(path)
+        assert index is not None and index.version == numba.__version__
+        named |= index.data_files
+    assert named == {p.name for p in (shipped / "lighting").glob("*.nbc")}
+
+
+@needs_jit
+def test_a_fresh_cache_loads_the_shipped_kernels_instead_of_compiling_them(shipped, tmp_path):
+    used = run_python(USE, str(shipped), PIXELPATH_CACHE_DIR=str(tmp_path))
+    assert used["cold"] == []  # the group's marker came with the kernels
+    assert used["compiled"] == 0 and used["loaded"] > 0
+    again = run_python(USE, str(shipped), PIXELPATH_CACHE_DIR=str(tmp_path))
+    assert again == used
+
+
+@needs_jit
+@pytest.mark.parametrize(
+    ("change", "environment"),
+    [
+        ({"numba": "0.0.0"}, {}),
+        ({"target": ["another", "cpu", ""]}, {}),
+        ({"sources": "edited since the build"}, {}),
+        ({}, {"PIXELPATH_PRECOMPILED": "0"}),
+    ],
+    ids=["other-numba", "other-cpu", "other-sources", "turned-off"],
+)
+def test_kernels_that_do_not_fit_are_compiled_instead(shipped, tmp_path, change, environment):
+    elsewhere = tmp_path / "shipped"
+    elsewhere.mkdir()
+    for path in shipped.rglob("*"):
+        if path.is_file():
+            target = elsewhere / path.relative_to(shipped)
+            target.parent.mkdir(parents=True, exist_ok=True)
+            target.write_bytes(path.read_bytes())
+    manifest = json.loads((shipped / "manifest.json").read_text())
+    (elsewhere / "manifest.json").write_text(json.dumps(manifest | change))
+    used = run_python(USE, str(elsewhere), PIXELPATH_CACHE_DIR=str(tmp_path / "cache"),
+                      **environment)
+    assert used["cold"] == ["lighting"]
+    assert used["compiled"] > 0 and used["loaded"] == 0
+
+
+def test_seeding_keeps_a_current_index_and_replaces_a_stale_one(tmp_path):
+    shipped, cache = tmp_path / "shipped", tmp_path / "cache"
+
+    def index(kernel: int) -> str:
+        return f"_kernels.kernel-{kernel}.py311.nbi"
+
+    def data(kernel: int, entry: int = 1) -> str:
+        return f"_kernels.kernel-{kernel}.py311.{entry}.nbc"
+
+    for kernel in (1, 2, 3):
+        write_index(shipped / index(kernel), "1.0", "now", {data(kernel): b"shipped"})
+    # Kernel 2: the user's own current index, with one more entry; kernel 3: a stale one.
+    write_index(cache / index(2), "1.0", "now", {data(2, 1): b"mine", data(2, 2): b"mine"})
+    write_index(cache / index(3), "1.0", "before", {data(3): b"old"})
+    _precompiled._seed_folder(shipped, cache)
+    assert (cache / data(1)).read_bytes() == b"shipped"
+    assert _precompiled._Index.read(cache / index(2)).data_files == {data(2, 1), data(2, 2)}
+    assert (cache / data(2)).read_bytes() == b"mine"
+    assert _precompiled._Index.read(cache / index(3)).stamp == "now"
+    assert (cache / data(3)).read_bytes() == b"shipped"
+    assert not list(cache.glob(".*"))  # no temporary file left behind
+
+
+def test_an_index_is_read_without_importing_the_classes_its_signatures_name(tmp_path, monkeypatch):
+    # Seeding runs while the first kernel module is being imported, before the classes its
+    # kernels take (named tuples) exist: an index naming one must still be read.
+    (tmp_path / "vanishing_module.py").write_text("class Scene:\n    pass\n")
+    monkeypatch.syspath_prepend(str(tmp_path))
+    import vanishing_module
+
+    path = tmp_path / "_kernels.kernel-1.py311.nbi"
+    with path.open("wb") as index:
+        pickle.dump("1.0", index)
+        pickle.dump(("now", {(vanishing_module.Scene(), "int64"): "_kernels.kernel-1.py311.1.nbc"}),
+                    index)
+    monkeypatch.delitem(sys.modules, "vanishing_module")
+    (tmp_path / "vanishing_module.py").unlink()
+    with path.open("rb") as index, pytest.raises(ModuleNotFoundError):
+        pickle.load(index), pickle.load(index)
+    read = _precompiled._Index.read(path)
+    assert read == _precompiled._Index("1.0", "now", frozenset({"_kernels.kernel-1.py311.1.nbc"}))
+
+
+def test_an_installed_package_ships_kernels_for_its_own_sources():
+    manifest_path = _precompiled.SHIPPED / _precompiled.MANIFEST
+    if not manifest_path.is_file():
+        pytest.skip("no kernels compiled at build time here (an editable install, or "
+                    "PIXELPATH_PRECOMPILED=0 when it was built)")
+    manifest = json.loads(manifest_path.read_text())
+    assert set(manifest["groups"]) == set(_precompiled.BUILT_GROUPS)
+    assert manifest["sources"] == _warm.sources_digest()
