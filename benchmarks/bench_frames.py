@@ -15,11 +15,14 @@ over many, on the 2-worker cluster. The anchor is the serial run: a cluster must
 
 ``--cold`` instead measures what a cold run costs before its first frame, in the order of the
 command line (the request is checked by rendering one pixel here, then the cluster starts and
-its workers warm up): run it with an empty compile cache::
+its workers warm up): run it with an empty compile cache, where an installed package copies in
+the kernels it was built with (``PIXELPATH_PRECOMPILED=0`` compiles them instead)::
 
     python benchmarks/bench_frames.py [--frames 120] [--size 640x400] [--rounds 3]
         [--empty-tasks 2000]
     PIXELPATH_CACHE_DIR=$(mktemp -d) python benchmarks/bench_frames.py --cold
+    PIXELPATH_PRECOMPILED=0 PIXELPATH_CACHE_DIR=$(mktemp -d) \\
+        python benchmarks/bench_frames.py --cold
 """
 
 from __future__ import annotations
@@ -101,7 +104,7 @@ def cold(scene) -> None:
             warmed = time.perf_counter() - start
             pp.frames.run_plan(plan, client)
             frames = time.perf_counter() - start
-    print(f"client checks the request (renders 1 pixel, compiling):   {planned:6.1f} s")
+    print(f"client checks the request (renders 1 pixel, compiling?):  {planned:6.1f} s")
     print(f"cluster of 2 processes up:                                {up - planned:6.1f} s")
     print(f"workers warmed (render a tiny scene, kernels from cache): {warmed - up:6.1f} s")
     print(f"first two frames:                                         {frames - warmed:6.1f} s")
