@@ -26,9 +26,10 @@ def run_python(code: str, *args: str, **changes: str) -> dict:
     """Run ``code`` with ``args`` in a fresh interpreter, the environment changed; parse its JSON.
 
     ``NUMBA_CACHE_DIR`` is dropped, so that ``PIXELPATH_CACHE_DIR`` alone says where the
-    kernels go.
+    kernels go, and so is a ``PIXELPATH_PRECOMPILED`` of the user's.
     """
-    env = {k: v for k, v in os.environ.items() if k != "NUMBA_CACHE_DIR"}
+    env = {k: v for k, v in os.environ.items()
+           if k not in ("NUMBA_CACHE_DIR", "PIXELPATH_PRECOMPILED")}
     result = subprocess.run(
         [sys.executable, "-c", textwrap.dedent(code), *args],
         capture_output=True,
