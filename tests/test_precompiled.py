@@ -129,11 +129,12 @@ def test_a_fresh_cache_loads_the_shipped_kernels_instead_of_compiling_them(shipp
     ("change", "environment"),
     [
         ({"numba": "0.0.0"}, {}),
+        ({"numpy": "1.0.0"}, {}),
         ({"target": ["another", "cpu", ""]}, {}),
         ({"sources": "edited since the build"}, {}),
         ({}, {"PIXELPATH_PRECOMPILED": "0"}),
     ],
-    ids=["other-numba", "other-cpu", "other-sources", "turned-off"],
+    ids=["other-numba", "other-numpy", "other-cpu", "other-sources", "turned-off"],
 )
 def test_kernels_that_do_not_fit_are_compiled_instead(shipped, tmp_path, change, environment):
     elsewhere = tmp_path / "shipped"

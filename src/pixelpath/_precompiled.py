@@ -4,7 +4,7 @@ A render's kernels take Numba about 20 s of CPU to compile (its typing in Python
 which a first run would otherwise spend before its first picture. So building pixelpath (the
 wheel that ``pip install .`` makes) compiles the groups of :data:`BUILT_GROUPS` and ships the
 compiled code in the package's ``_precompiled`` folder, as Numba's own cache files, sorted by the
-source folder they belong to, with a manifest saying what they were compiled for (Numba and
+source folder they belong to, with a manifest saying what they were compiled for (Numba, NumPy and
 Python versions, the CPU) and how long each group took.
 
 On first use after installing, :func:`seed` copies those files into the kernel cache (each
@@ -13,9 +13,9 @@ and writes the groups' markers, so that Numba loads the kernels instead of compi
 the CLI compiles nothing ahead. The cache's freshness stamp is a hash of the sources, not of
 where they are, so files compiled in the build folder are valid where the package is installed.
 Nothing is copied when the manifest does not match what is here (sources edited since the
-build, another Numba, Python or CPU): the kernels then compile on first use as they would
-without this module; nor when ``PIXELPATH_PRECOMPILED=0`` (which also skips compiling them at
-build time).
+build, another Numba, NumPy, Python or CPU): the kernels then compile on first use as they
+would without this module; nor when ``PIXELPATH_PRECOMPILED=0`` (which also skips compiling
+them at build time).
 
 Run as ``python -m pixelpath._precompiled FOLDER`` (what ``setup.py`` does while building) it
 compiles the groups and writes the files into FOLDER.
@@ -35,6 +35,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numba
+import numpy as np
 from numba.core.registry import cpu_target
 
 from pixelpath._cache import PACKAGE_DIR, kernel_cache_folder, source_stamp, writable_cache_dir
@@ -73,10 +74,15 @@ def enabled(environ: Mapping[str, str] | None = None) -> bool:
 
 
 def _compiled_for() -> dict[str, object]:
-    """Return what compiled code depends on: the sources, Numba, Python and the target CPU."""
+    """Return what compiled code depends on: the sources, Numba, NumPy, Python and the CPU.
+
+    NumPy's version is there because Numba types some arithmetic after NumPy's promotion
+    rules, which changed between NumPy 1 and 2, and its cache does not check it.
+    """
     return {
         "sources": sources_digest(),
         "numba": numba.__version__,
+        "numpy": np.__version__,
         "python": sys.version,
         "target": list(cpu_target.target_context.codegen().magic_tuple()),
     }
