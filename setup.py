@@ -27,20 +27,13 @@ class BuildWithKernels(build_py):
     def run(self) -> None:
         """Run setuptools' build_py, then the kernels' compile into the built package."""
         super().run()
-        if self.editable_mode or os.environ.get("PIXELPATH_PRECOMPILED", "1").strip() == "0":
+        if self.editable_mode:
             return
         build_lib = Path(self.build_lib).resolve()
         destination = build_lib / "pixelpath" / "_precompiled"
-        sys.stderr.write("compiling pixelpath's render kernels (PIXELPATH_PRECOMPILED=0 skips)\n")
         paths = [str(build_lib), *filter(None, [os.environ.get("PYTHONPATH")])]
-        env = {
-            **os.environ,
-            "PYTHONPATH": os.pathsep.join(paths),
-            "PIXELPATH_CACHE_DIR": str(KERNEL_CACHE),
-            # The kernels of an earlier build, still in build/lib, are not copied in: what is
-            # shipped is what these sources compile to (or load from the kernel cache above).
-            "PIXELPATH_PRECOMPILED": "0",
-        }
+        env = {**os.environ, "PYTHONPATH": os.pathsep.join(paths),
+               "PIXELPATH_CACHE_DIR": str(KERNEL_CACHE)}
         command = [sys.executable, "-m", "pixelpath._precompiled", str(destination)]
         try:
             subprocess.run(command, env=env, check=True, timeout=TIMEOUT_S)
@@ -50,6 +43,5 @@ class BuildWithKernels(build_py):
                 f"warning: pixelpath's kernels were not compiled ahead ({exc}); "
                 "they will compile on first use\n"
             )
-
 
 setup(cmdclass={"build_py": BuildWithKernels})

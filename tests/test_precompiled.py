@@ -203,3 +203,14 @@ def test_an_installed_package_ships_kernels_for_its_own_sources():
     manifest = json.loads(manifest_path.read_text())
     assert set(manifest["groups"]) == set(_precompiled.BUILT_GROUPS)
     assert manifest["sources"] == _warm.sources_digest()
+
+
+def test_a_build_with_precompiling_off_ships_nothing_not_even_an_earlier_builds(
+    tmp_path, monkeypatch
+):
+    earlier = tmp_path / "_precompiled"  # as setuptools' build folder keeps it between builds
+    (earlier / "raster").mkdir(parents=True)
+    (earlier / _precompiled.MANIFEST).write_text("{}")
+    monkeypatch.setenv("PIXELPATH_PRECOMPILED", "0")
+    _precompiled._build_for_setup(earlier)
+    assert not earlier.exists()

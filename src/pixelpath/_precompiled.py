@@ -18,7 +18,7 @@ would without this module; nor when ``PIXELPATH_PRECOMPILED=0`` (which also skip
 them at build time).
 
 Run as ``python -m pixelpath._precompiled FOLDER`` (what ``setup.py`` does while building) it
-compiles the groups and writes the files into FOLDER.
+compiles the groups and writes the files into FOLDER, unless ``PIXELPATH_PRECOMPILED=0``.
 """
 
 from __future__ import annotations
@@ -171,8 +171,7 @@ def build(destination: Path, groups: Iterable[str] = BUILT_GROUPS) -> dict:
     if root is None or numba.config.DISABLE_JIT:
         raise RuntimeError("kernels cannot be compiled into a cache (JIT disabled or no folder)")
     compile_groups(cold_groups(groups))
-    if destination.exists():
-        shutil.rmtree(destination)
+    shutil.rmtree(destination, ignore_errors=True)
     digest = hashlib.sha256()
     for folder in _source_folders():
         compiled = kernel_cache_folder(root, folder)
@@ -259,6 +258,21 @@ def seed(root: Path, shipped: Path | None = None) -> bool:
     return True
 
 
-if __name__ == "__main__":
-    written = build(Path(sys.argv[1]))
+def _build_for_setup(destination: Path) -> None:
+    """Compile into ``destination`` for ``setup.py``, unless ``PIXELPATH_PRECOMPILED=0``.
+
+    Either way no files of an earlier build (still in setuptools' build folder) are left there.
+    """
+    shutil.rmtree(destination, ignore_errors=True)
+    if not enabled():
+        return
+    sys.stderr.write("compiling pixelpath's render kernels (PIXELPATH_PRECOMPILED=0 skips)\n")
+    # What is shipped is what these sources compile to: neither this process nor the worker
+    # processes it starts copy shipped kernels into the cache they compile in.
+    os.environ["PIXELPATH_PRECOMPILED"] = "0"
+    written = build(destination)
     sys.stdout.write(json.dumps(written["groups"]) + "\n")
+
+
+if __name__ == "__main__":
+    _build_for_setup(Path(sys.argv[1]))
