@@ -10,13 +10,14 @@ import os
 import signal
 import types
 
+import dask
 import numpy as np
 import pytest
 from frame_scenes import animated_scene, broken_on_workers, counting, unpickled_count
 
 import pixelpath as pp
 from pixelpath.frames import run
-from pixelpath.frames.cluster import connect, local_client
+from pixelpath.frames.cluster import LOCAL_CLUSTER_CONFIG, connect, local_client
 
 
 @pytest.fixture(scope="module")
@@ -77,6 +78,17 @@ def test_resume_on_the_cluster_renders_only_missing_frames(client, tmp_path):
     assert _serial_files(scene, range(6), tmp_path / "serial") == {
         f"f_{frame:03d}.png": (tmp_path / f"f_{frame}.png").read_bytes() for frame in range(6)
     }
+
+
+def test_local_workers_start_with_pixelpath_s_dask_settings(client):
+    trim = "MALLOC_TRIM_THRESHOLD_"
+    for key, value in LOCAL_CLUSTER_CONFIG.items():
+        if not key.endswith(trim):
+            assert set(client.run(dask.config.get, key).values()) == {value}, key
+    # Dask's nannies would set it to 65536 (here too); unset, workers inherit this process's.
+    assert all(trim not in nanny.pre_spawn_env for nanny in client.cluster.workers.values())
+    assert set(client.run(os.getenv, trim).values()) == {os.getenv(trim)}
+    assert dask.config.get("distributed.worker.profile.enabled")  # this process: untouched
 
 
 def test_an_unreachable_scheduler_is_a_quick_clear_error():

@@ -10,12 +10,34 @@ import logging
 import time
 from typing import Any
 
+import dask
 from distributed import Client, LocalCluster
 from distributed.diagnostics.plugin import WorkerPlugin
 
 from pixelpath.frames.plan import available_cores
 
 CONNECT_TIMEOUT_S = 5.0
+
+# Dask settings for the local clusters pixelpath starts (not for a cluster it connects to).
+# Measured with benchmarks/bench_frames.py on 2 cores, where every CPU-millisecond the workers'
+# event loops spend is one the other worker cannot render with.
+LOCAL_CLUSTER_CONFIG = {
+    # The statistical profiler samples each worker's task thread 100 times a second, on its
+    # event loop, for a dashboard profile page that frames never need.
+    "distributed.worker.profile.enabled": False,
+    # Dask's nanny starts workers with MALLOC_TRIM_THRESHOLD_=65536, so that glibc hands freed
+    # memory back to the system at once. A render allocates its buffers anew each frame, and
+    # under that setting each frame maps them afresh and faults in every page: frames rendered
+    # 20 % slower. Unset, the variable is whatever this process's environment says.
+    "distributed.nanny.pre-spawn-environ.MALLOC_TRIM_THRESHOLD_": None,
+    # Housekeeping timers, slowed from 20 ms, 500 ms and 100 ms: the event-loop health tick,
+    # the CPU/memory/network monitor behind the dashboard's graphs, and the memory checks that
+    # pause or restart a worker near its memory limit (a render's memory does not creep).
+    # Together they took 67 ms of CPU a second on an idle 2-worker cluster; now 25 ms.
+    "distributed.admin.tick.interval": "200ms",
+    "distributed.admin.system-monitor.interval": "2s",
+    "distributed.worker.memory.monitor-interval": "500ms",
+}
 
 
 class WarmKernels(WorkerPlugin):
@@ -55,21 +77,23 @@ def local_client(workers: int | None = None, numba_threads: int | None = None) -
     """Start a local cluster of ``workers`` processes (default: one per core) and connect.
 
     Each worker runs one task at a time with ``numba_threads`` Numba threads (default:
-    ``cores // workers``, at least one), so workers do not fight over cores. Closing the client
-    closes the cluster.
+    ``cores // workers``, at least one), so workers do not fight over cores. The cluster runs
+    with :data:`LOCAL_CLUSTER_CONFIG` (no statistical profiler, glibc's own memory trimming).
+    Closing the client closes the cluster.
     """
     cores = available_cores()
     count = workers or cores
     threads = numba_threads or max(1, cores // count)
-    cluster = LocalCluster(
-        n_workers=count,
-        threads_per_worker=1,
-        processes=True,
-        dashboard_address=None,  # no dashboard; its HTTP server on a free local port, not 8787
-        scheduler_kwargs={"dashboard_address": "127.0.0.1:0"},
-        silence_logs=logging.CRITICAL,  # worker chatter at shutdown; task errors reach us
-        env={"NUMBA_NUM_THREADS": str(threads)},
-    )
+    with dask.config.set(LOCAL_CLUSTER_CONFIG):  # workers take the config they start with
+        cluster = LocalCluster(
+            n_workers=count,
+            threads_per_worker=1,
+            processes=True,
+            dashboard_address=None,  # no dashboard; its HTTP server on a free local port
+            scheduler_kwargs={"dashboard_address": "127.0.0.1:0"},
+            silence_logs=logging.CRITICAL,  # worker chatter at shutdown; task errors reach us
+            env={"NUMBA_NUM_THREADS": str(threads)},
+        )
     client = Client(cluster)
     client.close = _closing_cluster(client.close, cluster)
     return client
