@@ -80,6 +80,13 @@ def local_client(workers: int | None = None, numba_threads: int | None = None) -
     ``cores // workers``, at least one), so workers do not fight over cores. The cluster runs
     with :data:`LOCAL_CLUSTER_CONFIG` (no statistical profiler, glibc's own memory trimming).
     Closing the client closes the cluster.
+
+    Examples
+    --------
+    >>> client = local_client(workers=1)
+    >>> len(client.scheduler_info()["workers"])
+    1
+    >>> client.close()
     """
     cores = available_cores()
     count = workers or cores
@@ -89,7 +96,7 @@ def local_client(workers: int | None = None, numba_threads: int | None = None) -
             n_workers=count,
             threads_per_worker=1,
             processes=True,
-            dashboard_address=None,  # no dashboard; its HTTP server on a free local port
+            dashboard_address=None,  # nothing on port 8787; the scheduler's HTTP on a free port
             scheduler_kwargs={"dashboard_address": "127.0.0.1:0"},
             silence_logs=logging.CRITICAL,  # worker chatter at shutdown; task errors reach us
             env={"NUMBA_NUM_THREADS": str(threads)},
