@@ -30,6 +30,7 @@ _LAZY_NAMES = {
     "Box": "pixelpath.scene",
     "Mesh": "pixelpath.scene",
     "Scene": "pixelpath.scene",
+    "Texture": "pixelpath.scene",
     "load_scene": "pixelpath.scene",
     "Image": "pixelpath.image",
     "render": "pixelpath.renderer",  # a module named "render" would shadow the function
@@ -47,6 +48,7 @@ __all__ = [
     "PointLight",
     "Scene",
     "Sphere",
+    "Texture",
     "clip",
     "color",
     "frames",
@@ -77,6 +79,7 @@ if TYPE_CHECKING:
         PointLight,
         Scene,
         Sphere,
+        Texture,
         load_scene,
     )
 

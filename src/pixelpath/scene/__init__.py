@@ -23,6 +23,7 @@ from pixelpath.scene.mesh import Mesh
 from pixelpath.scene.primitives import Box, Plane, Sphere
 from pixelpath.scene.procedural import icosphere, torus
 from pixelpath.scene.scene import Scene
+from pixelpath.scene.texture import Texture
 from pixelpath.scene.transform import transform_matrix
 
 # The model (scene.py) knows nothing of its file format; the dict form is attached here, where
@@ -43,6 +44,7 @@ __all__ = [
     "PointLight",
     "Scene",
     "Sphere",
+    "Texture",
     "Turntable",
     "bundled_scene",
     "bundled_scenes",

@@ -14,6 +14,7 @@ import numpy as np
 
 from pixelpath import _validate as v
 from pixelpath.scene._record import Record
+from pixelpath.scene.texture import FILTERS, WRAPS, Texture
 
 
 @dataclasses.dataclass(frozen=True, eq=False)
@@ -34,6 +35,19 @@ class Material(Record):
         Index of refraction, > 0 (ray tracer only).
     name : str, optional
         The name the material has in a scene file; not part of equality.
+    texture : Texture, path or (H, W, 3|4) array_like, optional
+        A picture that modulates ``color`` (and the vertex colours) at each point of the
+        surface through its texture coordinates; anything but a :class:`Texture` is made
+        into one (see :mod:`pixelpath.scene.texture` for how colours are decoded).
+    texture_filter : {"trilinear", "bilinear", "nearest"}
+        How the picture is sampled: the nearest texel, a bilinear blend of the four nearest,
+        or a blend of two mip-map levels chosen by the pixel's footprint (no shimmer when a
+        textured surface recedes).
+    texture_wrap : {"repeat", "clamp", "mirror"}
+        What lies outside [0, 1] in texture space.
+    double_sided : bool
+        Draw the faces seen from behind too (lit with the normal turned to the viewer), even
+        when back faces are culled (glTF's ``doubleSided``).
 
     Examples
     --------
@@ -51,6 +65,10 @@ class Material(Record):
     transparency: float = 0.0
     ior: float = 1.0
     name: str | None = dataclasses.field(default=None, compare=False)
+    texture: Any = None
+    texture_filter: str = "trilinear"
+    texture_wrap: str = "repeat"
+    double_sided: bool = False
 
     def __post_init__(self) -> None:
         self._set(
@@ -63,6 +81,10 @@ class Material(Record):
             transparency=_fraction(self.transparency, "transparency"),
             ior=v.real(self.ior, "ior", positive=True),
             name=_name(self.name),
+            texture=_texture(self.texture),
+            texture_filter=_choice(self.texture_filter, "texture_filter", FILTERS),
+            texture_wrap=_choice(self.texture_wrap, "texture_wrap", WRAPS),
+            double_sided=_flag(self.double_sided, "double_sided"),
         )
 
     def packed(self) -> np.ndarray:
@@ -89,3 +111,21 @@ def _fraction(value: Any, name: str) -> float:
     if result > 1.0:
         raise ValueError(f"{name} must lie in [0, 1], got {result}")
     return result
+
+
+def _texture(value: Any) -> Texture | None:
+    if value is None or isinstance(value, Texture):
+        return value
+    return Texture(value)
+
+
+def _choice(value: Any, name: str, choices: tuple[str, ...]) -> str:
+    if not isinstance(value, str) or value not in choices:
+        raise ValueError(f"{name} must be one of {', '.join(choices)}; got {value!r}")
+    return value
+
+
+def _flag(value: Any, name: str) -> bool:
+    if not isinstance(value, bool | np.bool_):
+        raise TypeError(f"{name} must be a bool, got {type(value).__name__}")
+    return bool(value)

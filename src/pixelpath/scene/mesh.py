@@ -43,6 +43,13 @@ class Mesh:
         Surface material (default ``Material()``).
     normals : (V, 3) array_like, optional
         Per-vertex normals (normalized on input); computed area-weighted when omitted.
+    colors : (V, 3) or (V, 4) array_like, optional
+        Per-vertex colours, linear, in [0, 1] (uint8 is scaled by 1/255): they multiply the
+        material's colour (and its texture) across each face. A fourth column is alpha (stored;
+        it affects only what alpha the material asks for). Stored as (V, 4).
+    uv : (V, 2) array_like, optional
+        Per-vertex texture coordinates, u to the right and v **up**: (0, 0) is the bottom-left
+        of the material's texture picture (OBJ's and trimesh's convention).
     name : str, optional
         A label for messages and ``pixelpath info``.
 
@@ -60,6 +67,9 @@ class Mesh:
     [[0, 1, 2], [0, 2, 3]]
     >>> quad.face_normals.tolist()
     [[0.0, 0.0, 1.0]]
+    >>> painted = Mesh(quad.vertices, quad.faces, colors=[[1, 0, 0]] * 4, uv=[[0, 0]] * 4)
+    >>> painted.colors[0].tolist()
+    [1.0, 0.0, 0.0, 1.0]
     """
 
     def __init__(
@@ -68,6 +78,8 @@ class Mesh:
         faces: Any,
         material: Material | None = None,
         normals: Any = None,
+        colors: Any = None,
+        uv: Any = None,
         name: str | None = None,
         *,
         source: dict[str, Any] | None = None,
@@ -80,6 +92,10 @@ class Mesh:
         self.face_indices = v.frozen(indices)
         self.material = v.instance(material or Material(), "material", Material)
         self.normals = None if normals is None else _given_normals(normals, len(self.vertices))
+        self.colors = None if colors is None else _given_colors(colors, len(self.vertices))
+        self.uv = None if uv is None else v.frozen(
+            v.float_array(uv, "uv", (len(self.vertices), 2))
+        )
         if name is not None and not isinstance(name, str):
             raise TypeError(f"name must be a str, got {type(name).__name__}")
         self.name = name
@@ -96,8 +112,9 @@ class Mesh:
             np.array_equal(self.vertices, other.vertices)
             and np.array_equal(self.face_offsets, other.face_offsets)
             and np.array_equal(self.face_indices, other.face_indices)
-            and (self.normals is None) == (other.normals is None)
-            and (self.normals is None or np.array_equal(self.normals, other.normals))
+            and _same_optional(self.normals, other.normals)
+            and _same_optional(self.colors, other.colors)
+            and _same_optional(self.uv, other.uv)
             and self.material == other.material
             and self.name == other.name
         )
@@ -216,7 +233,10 @@ class Mesh:
         faces: Any = (self.face_offsets, self.face_indices)
         if np.linalg.det(linear) < 0.0:
             faces = (self.face_offsets, _reverse_windings(self.face_offsets, self.face_indices))
-        return Mesh(vertices, _RaggedFaces(*faces), self.material, normals, self.name)
+        return Mesh(
+            vertices, _RaggedFaces(*faces), self.material, normals, self.colors, self.uv,
+            self.name,
+        )
 
     @classmethod
     def load(cls, path: str | Path, material: Material | None = None) -> Mesh:
@@ -313,6 +333,26 @@ def _given_normals(normals: Any, vertex_count: int) -> np.ndarray:
     if np.any(zero):
         raise ValueError(f"normals[{int(np.argmax(zero))}] is the zero vector")
     return v.frozen(v.unit_rows(array))
+
+
+def _given_colors(colors: Any, vertex_count: int) -> np.ndarray:
+    """Return (V, 4) colours in [0, 1] (alpha 1 when not given); uint8 is scaled by 1/255."""
+    raw = np.asarray(colors) if not isinstance(colors, str) else colors
+    scale = 255.0 if getattr(raw, "dtype", None) == np.uint8 else 1.0
+    array = v.float_array(raw, "colors", (vertex_count, None)) / scale
+    if array.shape[1] not in (3, 4):
+        raise ValueError(f"colors must have shape (V, 3) or (V, 4), got shape {array.shape}")
+    if array.min(initial=0.0) < 0.0 or array.max(initial=0.0) > 1.0:
+        raise ValueError(
+            f"colors must lie in [0, 1] (or be uint8), got {array.min():g}..{array.max():g}"
+        )
+    if array.shape[1] == 3:
+        array = np.concatenate([array, np.ones((vertex_count, 1))], axis=1)
+    return v.frozen(array)
+
+
+def _same_optional(a: np.ndarray | None, b: np.ndarray | None) -> bool:
+    return (a is None) == (b is None) and (a is None or np.array_equal(a, b))
 
 
 def _normalized(vectors: np.ndarray) -> np.ndarray:

@@ -23,6 +23,7 @@ SceneObject = Sphere | Plane | Box | Mesh
 Light = PointLight | DirectionalLight
 OBJECT_TYPES = (Sphere, Plane, Box, Mesh)
 LIGHT_TYPES = (PointLight, DirectionalLight)
+ENCODINGS = ("linear", "srgb")
 
 
 @dataclasses.dataclass(frozen=True, eq=False)
@@ -43,6 +44,11 @@ class Scene(Record):
     animation : Animation, optional
         Camera and object keys over frames (see :mod:`pixelpath.scene.animation`); the scene
         as given is frame 0, and :meth:`at_frame` returns any other frame.
+    encoding : {"linear", "srgb"}
+        How the rendered pictures are written by default (``Image.save``): ``"linear"``
+        maps intensity 0..1 to 0..255 as the notes do; ``"srgb"`` applies the sRGB curve, so
+        that textures (decoded from sRGB to linear light) come out as bright as they were.
+        Scenes loaded from model files (glTF, OBJ, ...) are ``"srgb"``.
 
     Examples
     --------
@@ -62,6 +68,7 @@ class Scene(Record):
     ambient: Any = 0.1
     background: Any = (0.0, 0.0, 0.0)
     animation: Animation | None = None
+    encoding: str = "linear"
 
     def __post_init__(self) -> None:
         self._set(
@@ -73,6 +80,9 @@ class Scene(Record):
         )
         if self.animation is not None:
             v.instance(self.animation, "animation", Animation)
+        if not isinstance(self.encoding, str) or self.encoding not in ENCODINGS:
+            choices = ", ".join(ENCODINGS)
+            raise ValueError(f"encoding must be one of {choices}; got {self.encoding!r}")
         if self.animation is not None:
             try:
                 self.animation.check_scene(self.camera, self.objects)

@@ -1,0 +1,277 @@
+"""Image textures: the picture, its mip-map pyramid and the sampling choices of a material.
+
+Conventions (SPEC, ``pp.Mesh`` and ``pp.Material``):
+
+- Texture coordinates (u, v) run with u to the right and v **up**: (0, 0) is the bottom-left
+  corner of the image and (1, 1) its top-right (OBJ's and trimesh's convention; glTF's flipped
+  v is converted when a model file is loaded). Texel (col, row) has its centre at
+  ``u = (col + 0.5) / W``, ``v = 1 − (row + 0.5) / H``.
+- Colour: 8-bit pictures (image files, PIL images, uint8 arrays) are sRGB-encoded, as glTF
+  says base-colour textures are, and are decoded to linear light before they modulate the
+  surface; float arrays are taken as linear. ``srgb=`` overrides either guess.
+- Storage: every level is kept as 8-bit RGBA, colour sRGB-encoded (enough precision for
+  colour, four bytes a texel) and alpha linear; the kernels decode colour through a 256-entry
+  table. The pyramid is built in linear light: each level averages 2 × 2 texels of the one
+  above (an odd side repeats its last row or column), down to 1 × 1.
+- Size: a side over :data:`MAX_SIDE` texels is reduced (by a whole factor, with a warning)
+  before anything else, so a 16k × 16k picture costs 64 MB rather than 1 GB.
+"""
+
+from __future__ import annotations
+
+import functools
+import os
+import warnings
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+__all__ = ["FILTERS", "MAX_SIDE", "WRAPS", "Texture", "linear_to_srgb", "srgb_to_linear"]
+
+FILTERS = ("nearest", "bilinear", "trilinear")
+WRAPS = ("repeat", "clamp", "mirror")
+MAX_SIDE = 8192
+
+
+def srgb_to_linear(values: Any) -> np.ndarray:
+    """Decode sRGB-encoded values in [0, 1] to linear light (the IEC 61966-2-1 curve).
+
+    Examples
+    --------
+    >>> from pixelpath.scene.texture import srgb_to_linear
+    >>> srgb_to_linear([0.0, 0.5, 1.0]).round(4).tolist()
+    [0.0, 0.214, 1.0]
+    """
+    x = np.asarray(values, dtype=np.float64)
+    return np.where(x <= 0.04045, x / 12.92, ((x + 0.055) / 1.055) ** 2.4)
+
+
+def linear_to_srgb(values: Any) -> np.ndarray:
+    """Encode linear values in [0, 1] with the sRGB curve (the inverse of :func:`srgb_to_linear`).
+
+    Examples
+    --------
+    >>> from pixelpath.scene.texture import linear_to_srgb
+    >>> linear_to_srgb([0.0, 0.214, 1.0]).round(3).tolist()
+    [0.0, 0.5, 1.0]
+    """
+    x = np.clip(np.asarray(values, dtype=np.float64), 0.0, 1.0)
+    return np.where(x <= 0.0031308, x * 12.92, 1.055 * x ** (1.0 / 2.4) - 0.055)
+
+
+class Texture:
+    """A picture to map onto surfaces, with its mip-map pyramid.
+
+    Parameters
+    ----------
+    image : path, PIL.Image.Image or (H, W, 3|4) array_like
+        The picture, row 0 at the top. Greyscale and palette images are expanded to RGB;
+        a missing alpha channel is opaque.
+    srgb : bool, optional
+        Whether the values are sRGB-encoded. Default: True for 8-bit data (files, PIL
+        images, uint8 arrays), False for float arrays (linear, in [0, 1]).
+    name : str, optional
+        A label for messages; a file's name by default.
+
+    Raises
+    ------
+    FileNotFoundError
+        A path that does not exist.
+    ValueError
+        An unreadable or empty picture, a wrong shape, non-finite or out-of-range values; the
+        message names the file.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from pixelpath.scene import Texture
+    >>> checker = Texture(np.array([[[255, 0, 0], [0, 0, 255]]], dtype=np.uint8))
+    >>> checker.width, checker.height, len(checker.levels)
+    (2, 1, 2)
+    >>> checker.linear()[0, 1].tolist()  # blue, opaque
+    [0.0, 0.0, 1.0, 1.0]
+    """
+
+    __hash__ = None  # textures compare by value
+
+    def __init__(self, image: Any, *, srgb: bool | None = None, name: str | None = None) -> None:
+        if name is not None and not isinstance(name, str):
+            raise TypeError(f"name must be a str, got {type(name).__name__}")
+        if srgb is not None and not isinstance(srgb, bool):
+            raise TypeError(f"srgb must be a bool or None, got {type(srgb).__name__}")
+        label = name
+        if isinstance(image, str | os.PathLike):
+            path = Path(image)
+            label = label or path.name
+            rgba, eight_bit = _read_file(path)
+        elif _is_pil_image(image):
+            rgba, eight_bit = _from_pil(image, label or "texture")
+        else:
+            rgba, eight_bit = _from_array(image)
+        self.name = label
+        self.srgb = eight_bit if srgb is None else srgb
+        base = _encoded_base(rgba, self.srgb)
+        base.flags.writeable = False
+        self._base = base
+
+    @property
+    def width(self) -> int:
+        """Width of the base level in texels."""
+        return self._base.shape[1]
+
+    @property
+    def height(self) -> int:
+        """Height of the base level in texels."""
+        return self._base.shape[0]
+
+    @functools.cached_property
+    def levels(self) -> tuple[np.ndarray, ...]:
+        """The mip-map pyramid: (h, w, 4) uint8 levels (sRGB colour, linear alpha), base first."""
+        levels = [self._base]
+        linear = _decoded(self._base)
+        while linear.shape[0] > 1 or linear.shape[1] > 1:
+            linear = _half(linear)
+            level = _encoded(linear)
+            level.flags.writeable = False
+            levels.append(level)
+        return tuple(levels)
+
+    def linear(self, level: int = 0) -> np.ndarray:
+        """Return a level as (h, w, 4) float64 linear RGBA in [0, 1].
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from pixelpath.scene import Texture
+        >>> Texture(np.full((4, 4, 3), 0.25)).linear(2).shape
+        (1, 1, 4)
+        """
+        return _decoded(self.levels[level])
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Texture):
+            return NotImplemented
+        return self is other or np.array_equal(self._base, other._base)
+
+    def __repr__(self) -> str:
+        label = f" {self.name!r}" if self.name else ""
+        return f"<Texture{label}: {self.width}x{self.height}>"
+
+
+def _is_pil_image(value: Any) -> bool:
+    module = type(value).__module__
+    return module.startswith("PIL.") and hasattr(value, "convert")
+
+
+def _read_file(path: Path) -> tuple[np.ndarray, bool]:
+    from PIL import Image as PILImage
+    from PIL import UnidentifiedImageError
+
+    if not path.is_file():
+        raise FileNotFoundError(f"texture file not found: {path}")
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("error", PILImage.DecompressionBombWarning)
+            with PILImage.open(path) as img:
+                return _from_pil(img, str(path))
+    except (UnidentifiedImageError, OSError, SyntaxError, PILImage.DecompressionBombError,
+            PILImage.DecompressionBombWarning) as exc:
+        raise ValueError(f"{path}: not a readable image ({exc})") from None
+
+
+def _from_pil(img: Any, label: str) -> tuple[np.ndarray, bool]:
+    """Return (H, W, 4) pixels of a PIL image, reduced to MAX_SIDE, and whether 8-bit."""
+    reduction = -(-max(img.size) // MAX_SIDE)
+    if reduction > 1:
+        warnings.warn(
+            f"{label}: a {img.size[0]}x{img.size[1]} texture is larger than {MAX_SIDE} texels "
+            f"on a side; reduced {reduction} times", UserWarning, stacklevel=4,
+        )
+        img = img.reduce(reduction)
+    if img.mode in ("I;16", "I;16B", "I;16L", "I", "F"):
+        grey = np.asarray(img, dtype=np.float64)
+        grey = grey / (65535.0 if img.mode != "F" else 1.0)
+        return _from_array(np.repeat(grey[..., None], 3, axis=2))[0], False
+    try:
+        rgba = np.asarray(img.convert("RGBA"))
+    except OSError as exc:  # truncated data is only found when decoding
+        raise ValueError(f"{label}: not a readable image ({exc})") from None
+    return _from_array(rgba)[0], True
+
+
+def _from_array(image: Any) -> tuple[np.ndarray, bool]:
+    """Return (H, W, 4) RGBA in [0, 1] (float64) or uint8, and whether the data is 8-bit."""
+    array = np.asarray(image)
+    if array.ndim != 3 or array.shape[2] not in (3, 4) or 0 in array.shape[:2]:
+        raise ValueError(f"texture must have shape (H, W, 3) or (H, W, 4), got {array.shape}")
+    if max(array.shape[:2]) > MAX_SIDE:
+        step = -(-max(array.shape[:2]) // MAX_SIDE)
+        warnings.warn(
+            f"a {array.shape[1]}x{array.shape[0]} texture is larger than {MAX_SIDE} texels "
+            f"on a side; every {step}th texel kept", UserWarning, stacklevel=4,
+        )
+        array = array[::step, ::step]
+    if array.dtype == np.uint8:
+        if array.shape[2] == 3:
+            array = np.concatenate([array, np.full((*array.shape[:2], 1), 255, np.uint8)], 2)
+        return array, True
+    if array.dtype == np.bool_ or not np.issubdtype(array.dtype, np.number):
+        raise TypeError(f"texture must hold numbers, got dtype {array.dtype}")
+    values = array.astype(np.float64) / (65535.0 if array.dtype == np.uint16 else 1.0)
+    if not np.all(np.isfinite(values)):
+        raise ValueError("texture must be finite (no NaN or inf)")
+    if values.min() < 0.0 or values.max() > 1.0:
+        raise ValueError(
+            f"texture values must lie in [0, 1] (or be uint8/uint16), got "
+            f"{values.min():g}..{values.max():g}"
+        )
+    if values.shape[2] == 3:
+        values = np.concatenate([values, np.ones((*values.shape[:2], 1))], axis=2)
+    return values, False
+
+
+def _encoded_base(rgba: np.ndarray, srgb: bool) -> np.ndarray:
+    """Return the base level as uint8 RGBA with sRGB-encoded colour."""
+    if rgba.dtype == np.uint8:
+        if srgb:
+            return np.ascontiguousarray(rgba)
+        return _encoded(rgba.astype(np.float64) / 255.0)
+    if srgb:
+        return np.ascontiguousarray(np.rint(rgba * 255.0).astype(np.uint8))
+    return _encoded(rgba)
+
+
+@functools.cache
+def decode_table() -> np.ndarray:
+    """(256,) float64: linear value of each 8-bit sRGB code (what the kernels look up)."""
+    table = srgb_to_linear(np.arange(256) / 255.0)
+    table.flags.writeable = False
+    return table
+
+
+def _decoded(level: np.ndarray) -> np.ndarray:
+    out = np.empty(level.shape)
+    out[..., :3] = decode_table()[level[..., :3]]
+    out[..., 3] = level[..., 3] / 255.0
+    return out
+
+
+def _encoded(linear: np.ndarray) -> np.ndarray:
+    out = np.empty(linear.shape, dtype=np.uint8)
+    out[..., :3] = np.rint(linear_to_srgb(linear[..., :3]) * 255.0)
+    out[..., 3] = np.rint(np.clip(linear[..., 3], 0.0, 1.0) * 255.0)
+    return out
+
+
+def _half(linear: np.ndarray) -> np.ndarray:
+    """Average 2 × 2 blocks (an odd side repeats its last row or column first)."""
+    height, width = linear.shape[:2]
+    if height > 1 and height % 2:
+        linear = np.concatenate([linear, linear[-1:]], axis=0)
+    if width > 1 and width % 2:
+        linear = np.concatenate([linear, linear[:, -1:]], axis=1)
+    rows = 2 if linear.shape[0] > 1 else 1
+    cols = 2 if linear.shape[1] > 1 else 1
+    h, w = linear.shape[0] // rows, linear.shape[1] // cols
+    return linear.reshape(h, rows, w, cols, 4).mean(axis=(1, 3))
