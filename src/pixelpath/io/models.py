@@ -1,0 +1,770 @@
+"""Model files (glTF/GLB, OBJ+MTL, PLY, STL) read through trimesh into a ready-to-render Scene.
+
+trimesh does all the parsing; this module checks the file before trimesh sees it, walks the
+scene graph trimesh builds and maps what it finds onto pixelpath's scene model.
+
+What a model file gives (:func:`read_model`)
+--------------------------------------------
+- **Objects**: one :class:`~pixelpath.scene.Mesh` per glTF node and primitive (per material
+  group for OBJ), named after the glTF node, else its mesh, with the node's world transform
+  applied. The scene graph is walked node by node (``scene.graph.nodes_geometry``), never
+  through ``Scene.dump()``, which drops glTF ``COLOR_0`` stored beside a material.
+- **Texture coordinates**: pixelpath's uv have v up, (0, 0) the bottom-left of the image.
+  trimesh already flips glTF's v when it loads a file (OBJ's is v up already), so its uv are
+  used as they are (the tests pin this with a 2 x 2 texture in a hand-written glTF).
+- **Colours**: glTF ``COLOR_0`` is linear (the glTF specification) and is used as it is; PLY
+  and OBJ vertex colours are display values and are decoded from sRGB. Textures are 8-bit sRGB
+  pictures (decoded by :class:`~pixelpath.scene.Texture`). The scene's ``encoding`` is
+  ``"srgb"``, so a saved picture looks like the model in other viewers.
+- **Camera**: the file's first glTF camera (in scene order), at its node's world transform;
+  perspective ``yfov`` (radians) becomes ``fov`` (degrees), ``aspectRatio`` sets the width
+  beside a height of 600 pixels; orthographic ``ymag`` becomes ``view_height = 2 * ymag``.
+  Otherwise :func:`framing_camera`: the model seen from the front (+Z, glTF's front) and
+  22 degrees above, at the distance where the corners of its bounding box fill 90 % of the
+  picture, near and far from its bounding sphere.
+- **Lights**: glTF ``KHR_lights_punctual`` lights: ``point`` (and ``spot``, drawn as a point
+  light) become :class:`~pixelpath.scene.PointLight`, ``directional`` become
+  :class:`~pixelpath.scene.DirectionalLight` along the node's -Z axis. pixelpath's lights
+  have no fall-off, so a point light's candela are divided by its squared distance to the
+  model's centre (a directional light's lux are used as they are), and all are scaled so that
+  the brightest gives 1. Otherwise :func:`light_rig`: a key light above left of the camera, a
+  fill light from its right, and a rim light from behind, with ambient 0.2.
+
+Materials
+---------
+Every material gets ``ka = kd`` (so the ambient light shows the surface's colour), except
+where an MTL file sets ``Ka`` above 0.
+
+============================  =================================================================
+File                          pixelpath ``Material``
+============================  =================================================================
+glTF ``baseColorFactor``      ``color`` = its RGB (linear); its alpha A gives
+                              ``transparency = 1 - A`` under ``alphaMode`` BLEND
+glTF ``baseColorTexture``     ``texture`` (sRGB); its alpha channel is dropped when the
+                              ``alphaMode`` is OPAQUE (the default)
+glTF ``metallicFactor`` m     ``kd = 1 - 0.6 m``; ``ks = (1 - r)^2 (0.25 + 0.75 m)``
+glTF ``roughnessFactor`` r    ``shininess = clip(2 / r^4 - 2, 1, 1000)``; r = 1 (the default)
+                              gives ``ks = 0``: no highlight
+glTF ``doubleSided``          ``double_sided``
+glTF ``alphaMode``            OPAQUE: texture alpha ignored; MASK (with ``alphaCutoff``) and
+                              BLEND: the texture keeps its alpha channel
+MTL ``Kd``                    ``color`` (decoded from sRGB), ``kd = 1``
+MTL ``Ka``                    ``ka`` = its mean when above 0 (0, a common export, would leave
+                              the unlit side black: then ``ka = kd``)
+MTL ``Ks``, ``Ns``            ``ks = mean(Ks) * min(1, Ns / 100)``, ``shininess = max(Ns, 1)``:
+                              ``Ns 0`` means no highlight
+MTL ``map_Kd``                ``texture`` (a missing file: a warning and ``Kd`` alone)
+MTL ``d``                     ``transparency = 1 - d`` (``Tr`` is ignored: exporters disagree
+                              on its meaning)
+no material (PLY, STL)        light grey ``(0.8, 0.8, 0.8)``, ``kd = 1``, ``ks = 0.2``,
+                              ``shininess = 32``
+============================  =================================================================
+
+Bad input
+---------
+Every problem is a ``ValueError`` (``TypeError`` for a wrong argument type) whose message starts
+with the file's path:
+
+- glTF buffer and image URIs must be ``data:`` URIs or relative paths inside the file's own
+  folder: absolute paths, ``..`` escapes, ``file:``/``http:`` and other schemes are refused,
+  checked on the glTF JSON before trimesh reads anything; trimesh then gets a resolver confined
+  to the folder (an OBJ's ``mtllib`` and ``map_Kd`` go through it too).
+- Extensions that trimesh cannot decode and the file requires (``KHR_draco_mesh_compression``
+  without DracoPy, ``EXT_meshopt_compression``, ``KHR_texture_basisu``, ...) are named in the
+  error, never loaded as empty geometry.
+- Accessors claiming more data than their buffer views hold (a header that says 10^12
+  vertices) are refused before anything is allocated.
+- Truncated or corrupt files, undecodable textures, faces referring to missing vertices and
+  non-finite positions are refused; a texture file that does not exist gives a warning and the
+  material colour alone.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import json
+import math
+import re
+import struct
+import warnings
+from pathlib import Path
+from typing import Any
+from urllib.parse import unquote
+
+import numpy as np
+
+from pixelpath.scene.camera import Camera
+from pixelpath.scene.lights import DirectionalLight, PointLight
+from pixelpath.scene.material import Material
+from pixelpath.scene.mesh import Mesh
+from pixelpath.scene.scene import Scene
+from pixelpath.scene.texture import srgb_to_linear
+
+__all__ = ["MODEL_FORMATS", "framing_camera", "light_rig", "read_model", "read_model_objects"]
+
+MODEL_FORMATS = (".glb", ".gltf", ".obj", ".ply", ".stl")
+DEFAULT_SIZE = (800, 600)
+AMBIENT = 0.2
+ELEVATION = 22.0  # degrees above the model's centre for the default camera
+FILL = 0.9  # fraction of the picture the default camera lets the bounding box fill
+MAX_ACCESSOR_COUNT = 100_000_000  # elements; far beyond any model a CPU renderer draws
+
+# glTF extensions this loader handles (or that change nothing it reads); any other one a file
+# *requires* is refused by name, as the glTF specification asks of loaders.
+_KNOWN_REQUIRED = {
+    "KHR_lights_punctual",
+    "KHR_materials_emissive_strength",
+    "KHR_materials_pbrSpecularGlossiness",
+    "KHR_materials_unlit",
+}
+_COMPONENT_BYTES = {5120: 1, 5121: 1, 5122: 2, 5123: 2, 5125: 4, 5126: 4}
+_TYPE_COMPONENTS = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4, "MAT2": 4, "MAT3": 9, "MAT4": 16}
+_SCHEME = re.compile(r"^[A-Za-z][A-Za-z0-9+.\-]*:")
+
+
+def read_model(path: str | Path, *, size: tuple[int, int] | None = None) -> Scene:
+    """Read a model file into a Scene: its parts, camera and lights, or good defaults.
+
+    See the module's documentation for what each file feature becomes.
+
+    Parameters
+    ----------
+    path : str or Path
+        A ``.glb``, ``.gltf``, ``.obj`` (with its ``.mtl`` and textures), ``.ply`` or ``.stl``
+        file.
+    size : (int, int), optional
+        Picture size (width, height) of the camera (default 800 x 600, or the glTF camera's
+        aspect ratio at a height of 600).
+
+    Returns
+    -------
+    Scene
+        With ``encoding="srgb"``.
+
+    Raises
+    ------
+    FileNotFoundError
+        When ``path`` does not exist.
+    ValueError
+        For unsupported formats and bad files (see the module's documentation); the message
+        starts with the path.
+
+    Examples
+    --------
+    >>> from pixelpath.io.models import read_model
+    >>> scene = read_model("Duck.glb")  # doctest: +SKIP
+    >>> [obj.name for obj in scene.objects]  # doctest: +SKIP
+    ['LOD3spShape']
+    """
+    path = _model_path(path)
+    objects, gltf = _read_objects(path)
+    bounds = _bounds_of(objects)
+    try:
+        camera = _file_camera(gltf, bounds, size) if gltf else None
+        lights = _file_lights(gltf, bounds) if gltf else []
+    except (TypeError, ValueError, KeyError, AttributeError, IndexError) as exc:
+        raise ValueError(f"{path}: a glTF camera or light is not valid ({exc})") from None
+    camera = camera or framing_camera(bounds, size or DEFAULT_SIZE)
+    lights = lights or light_rig(camera)
+    return Scene(camera, objects, lights, ambient=AMBIENT, encoding="srgb")
+
+
+def read_model_objects(path: str | Path, material: Material | None = None) -> list[Mesh]:
+    """Read a model file's parts as meshes (world transforms applied), for a scene file.
+
+    Parameters
+    ----------
+    path : str or Path
+        A model file, as for :func:`read_model`.
+    material : Material, optional
+        Replaces every part's own material.
+
+    Returns
+    -------
+    list of Mesh
+
+    Examples
+    --------
+    >>> from pixelpath.io.models import read_model_objects
+    >>> len(read_model_objects("fuze.obj"))  # doctest: +SKIP
+    1
+    """
+    if material is not None and not isinstance(material, Material):
+        raise TypeError(f"material must be a Material, got {type(material).__name__}")
+    objects, _ = _read_objects(_model_path(path))
+    if material is None:
+        return objects
+    return [_with_material(mesh, material) for mesh in objects]
+
+
+def _with_material(mesh: Mesh, material: Material) -> Mesh:
+    return Mesh(mesh.vertices, mesh.faces, material, mesh.normals, mesh.colors, mesh.uv, mesh.name)
+
+
+def _model_path(path: Any) -> Path:
+    if not isinstance(path, str | Path):
+        raise TypeError(f"path must be a str or Path, got {type(path).__name__}")
+    path = Path(path)
+    if not path.is_file():
+        raise FileNotFoundError(f"model file not found: {path}")
+    if path.suffix.lower() not in MODEL_FORMATS:
+        raise ValueError(
+            f"{path}: unsupported model format {path.suffix!r}; expected one of "
+            f"{', '.join(MODEL_FORMATS)}"
+        )
+    return path
+
+
+def _read_objects(path: Path) -> tuple[list[Mesh], dict | None]:
+    """Return the file's meshes and, for glTF, its checked JSON."""
+    suffix = path.suffix.lower()
+    if suffix == ".stl":  # one mesh, no materials: pixelpath's own reader merges the soup
+        return [Mesh.load(path, _plain_material())], None
+    gltf = _checked_gltf(path) if suffix in (".glb", ".gltf") else None
+    resolver = _confined_resolver(path)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # trimesh's own warnings say nothing about our file
+        loaded = _trimesh_scene(path, resolver)
+    if resolver.refused:
+        raise ValueError(f"{path}: refers to {resolver.refused[0]!r}, outside the file's folder")
+    for name in resolver.missing:
+        warnings.warn(f"{path}: {name!r} not found; using the material colour", stacklevel=3)
+    objects = _meshes(path, loaded, gltf)
+    if not objects:
+        raise ValueError(f"{path}: the file has no triangle meshes")
+    return objects, gltf
+
+
+def _trimesh_scene(path: Path, resolver: Any) -> Any:
+    import trimesh
+
+    try:
+        return trimesh.load(path, force="scene", process=False, resolver=resolver)
+    except Exception as exc:  # trimesh's parsers raise anything on a broken file
+        raise ValueError(
+            f"{path}: trimesh could not read this file ({type(exc).__name__}: {exc})"
+        ) from None
+
+
+def _make_resolver_class() -> type:
+    from trimesh.resolvers import FilePathResolver
+
+    class ConfinedResolver(FilePathResolver):
+        """trimesh's folder resolver that records names it refused or could not find."""
+
+        def __init__(self, source: Path) -> None:
+            super().__init__(str(source))
+            self.refused: list[str] = []
+            self.missing: list[str] = []
+
+        def get(self, name: str) -> bytes:
+            if _outside(name, Path(self.parent)):
+                self.refused.append(name)
+                raise ValueError(f"{name!r} is outside the model's folder")
+            file = Path(self.parent) / unquote(name.strip())
+            if not file.is_file():
+                file = Path(self.parent) / name.strip()
+            if not file.is_file():
+                self.missing.append(name)
+                raise FileNotFoundError(name)
+            return file.read_bytes()
+
+    return ConfinedResolver
+
+
+def _confined_resolver(path: Path) -> Any:
+    return _make_resolver_class()(path)  # the class is built here: trimesh imports slowly
+
+
+def _outside(uri: str, folder: Path) -> bool:
+    """Whether ``uri`` (not a data: URI) names something outside ``folder``."""
+    name = unquote(uri.strip())
+    if _SCHEME.match(name) or name.startswith(("/", "\\")) or Path(name).is_absolute():
+        return True
+    root = folder.resolve()
+    return not (root / name).resolve().is_relative_to(root)
+
+
+# --- the glTF JSON, checked before trimesh reads anything ------------------------------------
+
+
+def _checked_gltf(path: Path) -> dict:
+    """Return the glTF JSON of ``path`` after the URI, extension and size checks."""
+    data = path.read_bytes()
+    header, binary = _glb_parts(path, data) if path.suffix.lower() == ".glb" else (data, None)
+    try:
+        gltf = json.loads(header)
+    except (UnicodeDecodeError, json.JSONDecodeError) as exc:
+        raise ValueError(f"{path}: the glTF JSON is not valid ({exc})") from None
+    if not isinstance(gltf, dict):
+        raise ValueError(f"{path}: the glTF JSON is not an object")
+    for kind in ("buffers", "images"):
+        for item in _list(path, gltf, kind):
+            uri = item.get("uri")
+            if uri is None:
+                continue
+            if not isinstance(uri, str):
+                raise ValueError(f"{path}: {kind} uri must be a string, got {uri!r}")
+            if not uri.startswith("data:") and _outside(uri, path.parent):
+                raise ValueError(
+                    f"{path}: {kind[:-1]} URI {uri!r} points outside the file's folder; "
+                    "only data: URIs and relative paths inside it are read"
+                )
+    _check_extensions(path, gltf)
+    _check_accessors(path, gltf, len(binary) if binary is not None else None)
+    return gltf
+
+
+def _glb_parts(path: Path, data: bytes) -> tuple[bytes, bytes | None]:
+    """Split a GLB into its JSON chunk and binary chunk, checking the chunk lengths."""
+    if len(data) < 20 or data[:4] != b"glTF":
+        raise ValueError(f"{path}: not a GLB file (no 'glTF' header)")
+    _, length = struct.unpack("<II", data[4:12])
+    json_length, json_type = struct.unpack("<II", data[12:20])
+    if length > len(data) or json_type != 0x4E4F534A or 20 + json_length > len(data):
+        raise ValueError(f"{path}: truncated or corrupt GLB (the chunk lengths do not fit)")
+    rest = data[20 + json_length :]
+    binary = None
+    if len(rest) >= 8:
+        bin_length = struct.unpack("<I", rest[:4])[0]
+        if bin_length > len(rest) - 8:
+            raise ValueError(f"{path}: truncated GLB (the binary chunk is cut short)")
+        binary = rest[8 : 8 + bin_length]
+    return data[20 : 20 + json_length], binary
+
+
+def _list(path: Path, gltf: dict, key: str) -> list[dict]:
+    items = gltf.get(key, [])
+    if not isinstance(items, list) or not all(isinstance(item, dict) for item in items):
+        raise ValueError(f"{path}: glTF {key!r} must be a list of objects")
+    return items
+
+
+def _check_extensions(path: Path, gltf: dict) -> None:
+    required = gltf.get("extensionsRequired", [])
+    if not isinstance(required, list):
+        raise ValueError(f"{path}: glTF 'extensionsRequired' must be a list")
+    known = set(_KNOWN_REQUIRED)
+    if importlib.util.find_spec("DracoPy") is not None:  # trimesh decodes Draco with it
+        known.add("KHR_draco_mesh_compression")
+    unsupported = [name for name in required if name not in known]
+    if unsupported:
+        raise ValueError(
+            f"{path}: requires the glTF extension {', '.join(map(str, unsupported))}, which "
+            "pixelpath (through trimesh) cannot decode; re-export the model without it "
+            "(for example with gltf-transform)"
+        )
+
+
+def _check_accessors(path: Path, gltf: dict, binary_length: int | None) -> None:
+    """Refuse accessors that claim more elements than their data holds (absurd counts)."""
+    views = _list(path, gltf, "bufferViews")
+    buffers = _list(path, gltf, "buffers")
+    for index, accessor in enumerate(_list(path, gltf, "accessors")):
+        count = accessor.get("count", 0)
+        if not isinstance(count, int) or not 0 <= count <= MAX_ACCESSOR_COUNT:
+            raise ValueError(f"{path}: accessor {index} has an impossible count {count!r}")
+        view_index = accessor.get("bufferView")
+        if view_index is None:
+            continue
+        if not isinstance(view_index, int) or not 0 <= view_index < len(views):
+            raise ValueError(f"{path}: accessor {index} names a missing bufferView")
+        view = views[view_index]
+        item = _COMPONENT_BYTES.get(accessor.get("componentType"), 0) * _TYPE_COMPONENTS.get(
+            accessor.get("type"), 0
+        )
+        stride = view.get("byteStride") or item
+        need = accessor.get("byteOffset", 0) + (count - 1) * stride + item if count else 0
+        length = view.get("byteLength")
+        if not isinstance(length, int) or not isinstance(need, int) or need > length:
+            raise ValueError(
+                f"{path}: accessor {index} claims {count} elements, more than its bufferView "
+                f"holds"
+            )
+        buffer = view.get("buffer")
+        if not isinstance(buffer, int) or not 0 <= buffer < len(buffers):
+            raise ValueError(f"{path}: bufferView {view_index} names a missing buffer")
+        end = view.get("byteOffset", 0) + length
+        size = buffers[buffer].get("byteLength", 0)
+        if "uri" not in buffers[buffer] and binary_length is not None:
+            size = min(size, binary_length) if isinstance(size, int) else binary_length
+        if not isinstance(end, int) or not isinstance(size, int) or end > size:
+            raise ValueError(f"{path}: bufferView {view_index} runs past the end of its buffer")
+
+
+# --- meshes and materials ---------------------------------------------------------------------
+
+
+def _meshes(path: Path, loaded: Any, gltf: dict | None) -> list[Mesh]:
+    node_names = {n.get("name") for n in (gltf or {}).get("nodes", []) if isinstance(n, dict)}
+    meshes = []
+    for node in loaded.graph.nodes_geometry:
+        matrix, geometry_name = loaded.graph.get(node)
+        geometry = loaded.geometry[geometry_name]
+        if not hasattr(geometry, "faces") or len(geometry.faces) == 0:
+            continue  # points and paths have nothing to shade
+        name = node if gltf is None or node in node_names else geometry_name
+        try:
+            meshes.append(_mesh(path, geometry, np.asarray(matrix, dtype=np.float64), name, gltf))
+        except (ValueError, TypeError) as exc:
+            raise type(exc)(f"{path}: part {name!r}: {exc}") from None
+    return meshes
+
+
+def _mesh(path: Path, geometry: Any, matrix: np.ndarray, name: str, gltf: dict | None) -> Mesh:
+    vertices = np.asarray(geometry.vertices, dtype=np.float64)
+    faces = np.asarray(geometry.faces, dtype=np.int64)
+    if not np.all(np.isfinite(vertices)):
+        raise ValueError("vertex positions are not all finite (NaN or infinity)")
+    if faces.size and (faces.min() < 0 or faces.max() >= len(vertices)):
+        raise ValueError(f"a face refers to a vertex beyond the {len(vertices)} there are")
+    normals = None
+    if "vertex_normals" in geometry._cache:  # stored in the file: computing would be a guess
+        normals = np.asarray(geometry.vertex_normals, dtype=np.float64)
+        normals = normals if np.all(np.isfinite(normals)) else None
+    linear, shift = matrix[:3, :3], matrix[:3, 3]
+    vertices = vertices @ linear.T + shift
+    if normals is not None:
+        normals = normals @ np.linalg.inv(linear)  # the inverse transpose, row by row
+    if np.linalg.det(linear) < 0.0:  # a mirroring node: keep faces counter-clockwise outside
+        faces = faces[:, ::-1]
+    visual = geometry.visual
+    material = _material(path, visual, gltf)
+    uv = _uv(visual, len(vertices))
+    colors = _vertex_colors(visual, len(vertices), linear=gltf is not None)
+    return Mesh(vertices, faces, material, normals, colors, uv, name)
+
+
+def _uv(visual: Any, count: int) -> np.ndarray | None:
+    uv = getattr(visual, "uv", None)
+    if uv is None or np.shape(uv) != (count, 2):
+        return None
+    uv = np.asarray(uv, dtype=np.float64)
+    return uv if np.all(np.isfinite(uv)) else None
+
+
+def _vertex_colors(visual: Any, count: int, *, linear: bool) -> np.ndarray | None:
+    """Per-vertex colours in linear light: glTF's COLOR_0 as stored, others decoded from sRGB."""
+    colors = getattr(visual, "vertex_attributes", {}).get("color")
+    if colors is None and getattr(visual, "kind", None) == "vertex":
+        colors = visual.vertex_colors
+    if colors is None or len(colors) != count:
+        return None
+    colors = np.asarray(colors)
+    values = colors / 255.0 if colors.dtype.kind in "ui" else colors.astype(np.float64)
+    values = np.clip(np.nan_to_num(values), 0.0, 1.0)
+    if not linear:
+        values[:, :3] = srgb_to_linear(values[:, :3])
+    return values
+
+
+def _plain_material() -> Material:
+    return Material(color=(0.8, 0.8, 0.8), ka=1.0, kd=1.0, ks=0.2, shininess=32.0)
+
+
+def _material(path: Path, visual: Any, gltf: dict | None) -> Material:
+    source = getattr(visual, "material", None)
+    if source is None:
+        return _plain_material()
+    if type(source).__name__ == "PBRMaterial":
+        return _pbr_material(path, source, gltf)
+    return _simple_material(path, source)
+
+
+def _pbr_material(path: Path, source: Any, gltf: dict | None) -> Material:
+    """Map a glTF metallic-roughness material onto the notes' Phong model (see the table)."""
+    factor = source.baseColorFactor
+    rgba = np.ones(4) if factor is None else np.asarray(factor, dtype=np.float64)
+    if rgba.max() > 1.0 or np.asarray(factor).dtype.kind in "ui":
+        rgba = rgba / 255.0  # trimesh keeps the factor as 8-bit RGBA
+    metallic = 1.0 if source.metallicFactor is None else float(source.metallicFactor)
+    roughness = 1.0 if source.roughnessFactor is None else float(source.roughnessFactor)
+    metallic, roughness = (float(np.clip(x, 0.0, 1.0)) for x in (metallic, roughness))
+    mode = (source.alphaMode or "OPAQUE").upper()
+    texture = _texture(path, source.baseColorTexture, keep_alpha=mode != "OPAQUE")
+    if texture is None:
+        _refuse_lost_texture(path, source, gltf)
+    kd = 1.0 - 0.6 * metallic
+    return Material(
+        color=np.clip(rgba[:3], 0.0, 1.0),
+        ka=kd,
+        kd=kd,
+        ks=(1.0 - roughness) ** 2 * (0.25 + 0.75 * metallic),
+        shininess=_shininess(roughness),
+        transparency=float(np.clip(1.0 - rgba[3], 0.0, 1.0)) if mode == "BLEND" else 0.0,
+        name=source.name if isinstance(source.name, str) else None,
+        texture=texture,
+        double_sided=bool(source.doubleSided),
+    )
+
+
+def _shininess(roughness: float) -> float:
+    """Phong exponent of a GGX roughness, ``2 / r^4 - 2`` (Blinn's mapping), kept in [1, 1000]."""
+    if roughness <= 0.0:
+        return 1000.0
+    return float(np.clip(2.0 / roughness**4 - 2.0, 1.0, 1000.0))
+
+
+def _simple_material(path: Path, source: Any) -> Material:
+    """Map an MTL material (trimesh's SimpleMaterial and its raw MTL values) (see the table)."""
+    raw = {key.lower(): value for key, value in (getattr(source, "kwargs", None) or {}).items()}
+    kd_color = _mtl_color(raw.get("kd"), (0.8, 0.8, 0.8))
+    ka_color = _mtl_color(raw.get("ka"), (0.0, 0.0, 0.0))
+    ks_color = _mtl_color(raw.get("ks"), (0.0, 0.0, 0.0))
+    ns = _mtl_number(raw.get("ns"), 0.0)
+    opacity = float(np.clip(_mtl_number(raw.get("d"), 1.0), 0.0, 1.0))
+    ka = float(np.mean(ka_color))
+    return Material(
+        color=srgb_to_linear(kd_color),
+        ka=ka if ka > 0.0 else 1.0,
+        kd=1.0,
+        ks=float(np.mean(ks_color)) * min(1.0, max(ns, 0.0) / 100.0),
+        shininess=max(ns, 1.0),
+        transparency=1.0 - opacity,
+        name=source.name if isinstance(source.name, str) else None,
+        texture=_texture(path, getattr(source, "image", None), keep_alpha=True),
+    )
+
+
+def _mtl_color(value: Any, default: tuple[float, ...]) -> np.ndarray:
+    try:
+        color = np.asarray(value if value is not None else default, dtype=np.float64).reshape(-1)
+    except (TypeError, ValueError):
+        return np.asarray(default)
+    if color.size == 1:
+        color = np.repeat(color, 3)
+    if color.size < 3 or not np.all(np.isfinite(color[:3])):
+        return np.asarray(default)
+    return np.clip(color[:3], 0.0, 1.0)
+
+
+def _mtl_number(value: Any, default: float) -> float:
+    if isinstance(value, list | tuple):
+        value = value[0] if value else None
+    try:
+        number = float(value) if value is not None else default
+    except (TypeError, ValueError):
+        return default
+    return number if math.isfinite(number) else default
+
+
+def _texture(path: Path, image: Any, *, keep_alpha: bool) -> Any:
+    """Return the picture as a decoded PIL image (RGB, or RGBA when its alpha matters)."""
+    if image is None:
+        return None
+    import PIL.Image
+
+    try:
+        image.load()  # decode now: a truncated PNG/JPEG fails here, not in a render
+        has_alpha = image.mode in ("RGBA", "LA", "PA") or "transparency" in image.info
+        return image.convert("RGBA" if keep_alpha and has_alpha else "RGB")
+    except (OSError, ValueError, SyntaxError, PIL.Image.DecompressionBombError) as exc:
+        raise ValueError(f"{path}: a texture could not be decoded ({exc})") from None
+
+
+def _refuse_lost_texture(path: Path, source: Any, gltf: dict | None) -> None:
+    """Refuse a material whose texture trimesh skipped (it drops what it cannot decode)."""
+    for material in (gltf or {}).get("materials", []):
+        if not isinstance(material, dict) or material.get("name") != source.name:
+            continue
+        pbr = material.get("pbrMetallicRoughness")
+        if isinstance(pbr, dict) and "baseColorTexture" in pbr:
+            if _missing_image_file(path, gltf, pbr["baseColorTexture"]):
+                return  # already warned of: the material colour alone is drawn
+            raise ValueError(
+                f"{path}: material {source.name!r} has a base-colour texture that could not "
+                "be read (missing, or not a PNG/JPEG trimesh can decode)"
+            )
+
+
+def _missing_image_file(path: Path, gltf: Any, ref: Any) -> bool:
+    """Whether the texture ``ref`` names an image file (not data) that does not exist."""
+    try:
+        image = gltf["images"][gltf["textures"][ref["index"]]["source"]]
+        uri = image["uri"]
+    except (KeyError, IndexError, TypeError):
+        return False
+    if not isinstance(uri, str) or uri.startswith("data:"):
+        return False
+    return not (path.parent / unquote(uri)).is_file() and not (path.parent / uri).is_file()
+
+
+# --- camera and lights ------------------------------------------------------------------------
+
+
+def _bounds_of(objects: list[Mesh]) -> np.ndarray:
+    points = np.vstack([mesh.vertices for mesh in objects])
+    return np.stack([points.min(axis=0), points.max(axis=0)])
+
+
+def framing_camera(bounds: Any, size: tuple[int, int] = DEFAULT_SIZE, fov: float = 45.0) -> Camera:
+    """Return a camera that shows the whole box ``bounds`` from the front and a little above.
+
+    The camera looks at the box's centre from +Z, raised by 22 degrees, at the smallest distance
+    where every corner of the box lies within the middle 90 % of the picture (in both
+    directions); near and far enclose the box's bounding sphere.
+
+    Parameters
+    ----------
+    bounds : (2, 3) array_like
+        The box's minimum and maximum corners.
+    size : (int, int)
+        Picture width and height in pixels.
+    fov : float
+        Vertical field of view in degrees.
+
+    Examples
+    --------
+    >>> from pixelpath.io.models import framing_camera
+    >>> camera = framing_camera([[-1, -1, -1], [1, 1, 1]], (800, 600))
+    >>> camera.target.tolist(), camera.width, camera.height
+    ([0.0, 0.0, 0.0], 800, 600)
+    """
+    bounds = np.asarray(bounds, dtype=np.float64)
+    center = bounds.mean(axis=0)
+    radius = max(float(np.linalg.norm(bounds[1] - bounds[0])) / 2.0, 1e-9)
+    elevation = math.radians(ELEVATION)
+    back = np.array([0.0, math.sin(elevation), math.cos(elevation)])  # from the centre to the eye
+    right = np.array([1.0, 0.0, 0.0])
+    up = np.cross(back, right)
+    width, height = size
+    tan_v = math.tan(math.radians(fov) / 2.0) * FILL
+    tan_h = tan_v * width / height
+    corners = np.array(np.meshgrid(*bounds.T, indexing="ij")).reshape(3, -1).T
+    offset = corners - center
+    x, y, z = offset @ right, offset @ up, offset @ back
+    # a corner at (x, y, z) in the camera's frame is inside when |x| <= tan_h (d - z), ...
+    distance = float(np.max(np.maximum(z + np.abs(x) / tan_h, z + np.abs(y) / tan_v)))
+    distance = max(distance, radius * 1.01)
+    near = max(distance - radius * 1.05, distance * 1e-3)
+    far = distance + radius * 1.05
+    return Camera(
+        eye=center + distance * back, target=center, fov=fov, width=width, height=height,
+        near=near, far=far,
+    )
+
+
+def light_rig(camera: Camera) -> list[DirectionalLight]:
+    """Return the default three lights, placed relative to ``camera``.
+
+    A key light from above left of the camera (intensity 0.75), a fill light from its right
+    and slightly below (0.3) and a rim light from behind the model and above (0.25), all
+    directional so that they do not depend on the model's size.
+
+    Examples
+    --------
+    >>> from pixelpath.io.models import framing_camera, light_rig
+    >>> [light.intensity for light in light_rig(framing_camera([[0, 0, 0], [1, 1, 1]]))]
+    [0.75, 0.3, 0.25]
+    """
+    right, up, back = camera.basis()
+    rig = (((-0.6, 0.7, 0.8), 0.75), ((0.8, -0.1, 0.6), 0.3), ((0.2, 0.8, -0.9), 0.25))
+    return [
+        DirectionalLight(direction=-(a * right + b * up + c * back), intensity=intensity)
+        for (a, b, c), intensity in rig
+    ]
+
+
+def _world_matrices(gltf: dict) -> dict[int, np.ndarray]:
+    """Return the world matrix of every node reachable from the file's default scene."""
+    nodes = gltf.get("nodes", [])
+    scenes = gltf.get("scenes", [])
+    index = gltf.get("scene", 0)
+    roots = scenes[index].get("nodes", []) if isinstance(index, int) and 0 <= index < len(
+        scenes
+    ) and isinstance(scenes[index], dict) else range(len(nodes))
+    world: dict[int, np.ndarray] = {}
+    stack = [(root, np.eye(4)) for root in roots]
+    while stack:
+        node, parent = stack.pop()
+        if not isinstance(node, int) or not 0 <= node < len(nodes) or node in world:
+            continue  # a bad reference or a cycle: trimesh has read the file already
+        matrix = parent @ _local_matrix(nodes[node])
+        world[node] = matrix
+        stack.extend((child, matrix) for child in nodes[node].get("children", []))
+    return world
+
+
+def _local_matrix(node: dict) -> np.ndarray:
+    if "matrix" in node:
+        return np.asarray(node["matrix"], dtype=np.float64).reshape(4, 4).T  # column-major
+    import trimesh.transformations as tf
+
+    matrix = tf.translation_matrix(node.get("translation", (0.0, 0.0, 0.0)))
+    x, y, z, w = node.get("rotation", (0.0, 0.0, 0.0, 1.0))
+    matrix = matrix @ tf.quaternion_matrix((w, x, y, z))
+    return matrix @ np.diag([*node.get("scale", (1.0, 1.0, 1.0)), 1.0])
+
+
+def _file_camera(gltf: dict, bounds: np.ndarray, size: tuple[int, int] | None) -> Camera | None:
+    """Return the file's first camera (in scene order), or None when it has none."""
+    cameras = gltf.get("cameras", [])
+    if not cameras:
+        return None
+    for node, matrix in sorted(_world_matrices(gltf).items()):
+        index = gltf["nodes"][node].get("camera")
+        if isinstance(index, int) and 0 <= index < len(cameras):
+            return _camera(cameras[index], matrix, bounds, size)
+    return None
+
+
+def _camera(spec: dict, matrix: np.ndarray, bounds: np.ndarray, size: Any) -> Camera | None:
+    eye = matrix[:3, 3]
+    axes = matrix[:3, :3] / np.linalg.norm(matrix[:3, :3], axis=0)  # the node's scale is ignored
+    forward, up = -axes[:, 2], axes[:, 1]
+    center = bounds.mean(axis=0)
+    radius = float(np.linalg.norm(bounds[1] - bounds[0])) / 2.0
+    reach = float(np.linalg.norm(center - eye)) + radius  # beyond it nothing is drawn
+    target = eye + forward * max(float(np.dot(center - eye, forward)), 1e-3 * reach, 1e-6)
+    if spec.get("type") == "orthographic":
+        ortho = spec["orthographic"]
+        width, height = size or DEFAULT_SIZE
+        if "projection" not in Camera.__dataclass_fields__:  # orthographic cameras not yet built
+            return None
+        return Camera(
+            eye=eye, target=target, up=up, width=width, height=height,
+            near=max(float(ortho.get("znear", 0.0)), 1e-6), far=float(ortho["zfar"]),
+            projection="orthographic", view_height=2.0 * float(ortho["ymag"]),
+        )
+    perspective = spec["perspective"]
+    aspect = perspective.get("aspectRatio")
+    if size is None:
+        width = round(DEFAULT_SIZE[1] * float(aspect)) if aspect else DEFAULT_SIZE[0]
+        size = (int(np.clip(width, 1, 16384)), DEFAULT_SIZE[1])
+    near = float(perspective["znear"])
+    far = float(perspective.get("zfar") or max(2.0 * reach, near * 2.0))
+    return Camera(
+        eye=eye, target=target, up=up, fov=math.degrees(float(perspective["yfov"])),
+        width=size[0], height=size[1], near=near, far=far,
+    )
+
+
+def _file_lights(gltf: dict, bounds: np.ndarray) -> list[PointLight | DirectionalLight]:
+    """Return the file's KHR_lights_punctual lights (see the module's documentation)."""
+    defined = gltf.get("extensions", {}).get("KHR_lights_punctual", {}).get("lights", [])
+    if not defined:
+        return []
+    center = bounds.mean(axis=0)
+    found: list[tuple[str, Any, float, Any]] = []
+    for node, matrix in sorted(_world_matrices(gltf).items()):
+        ref = gltf["nodes"][node].get("extensions", {}).get("KHR_lights_punctual", {})
+        index = ref.get("light") if isinstance(ref, dict) else None
+        if not isinstance(index, int) or not 0 <= index < len(defined):
+            continue
+        light = defined[index]
+        color = light.get("color", (1.0, 1.0, 1.0))
+        intensity = float(light.get("intensity", 1.0))
+        if light.get("type") == "directional":
+            found.append(("directional", -matrix[:3, 2], intensity, color))
+        else:  # point, and spot drawn as a point light
+            position = matrix[:3, 3]
+            distance2 = max(float(np.sum((position - center) ** 2)), 1e-12)
+            found.append(("point", position, intensity / distance2, color))
+    brightest = max((item[2] for item in found), default=0.0)
+    scale = 1.0 / brightest if brightest > 0.0 else 0.0
+    return [
+        DirectionalLight(where, intensity * scale, color)
+        if kind == "directional"
+        else PointLight(where, intensity * scale, color)
+        for kind, where, intensity, color in found
+    ]
