@@ -61,12 +61,14 @@ KeyPath = tuple[str | int, ...]
 
 
 def load_scene(path: str | Path) -> Scene:
-    r"""Read a TOML scene file; mesh paths in it are relative to the file's folder.
+    r"""Read a TOML scene file (mesh paths in it are relative to its folder) or a model file.
 
     Parameters
     ----------
     path : str or Path
-        The ``.toml`` scene file.
+        The ``.toml`` scene file, or a ``.glb``, ``.gltf``, ``.obj``, ``.ply`` or ``.stl``
+        model file, read by :func:`pixelpath.io.models.read_model` (its parts, camera and
+        lights, or a camera framing it and a light rig).
 
     Returns
     -------
@@ -95,6 +97,10 @@ def load_scene(path: str | Path) -> Scene:
     path = Path(path)
     if not path.is_file():
         raise FileNotFoundError(f"scene file not found: {path}")
+    if path.suffix.lower() in (".glb", ".gltf", ".obj", ".ply", ".stl"):
+        from pixelpath.io.models import read_model  # it builds on this package: import late
+
+        return read_model(path)
     try:
         text = path.read_text(encoding="utf-8")
     except UnicodeDecodeError as exc:
@@ -253,10 +259,10 @@ def scene_from_dict(
     lights = [
         _light(table, ("lights", i), source) for i, table in enumerate(top.get("lights", []))
     ]
-    objects = [
-        _object(table, ("objects", i), materials, base, source)
-        for i, table in enumerate(top.get("objects", []))
-    ]
+    objects = []
+    for i, table in enumerate(top.get("objects", [])):
+        made = _object(table, ("objects", i), materials, base, source)
+        objects.extend(made if isinstance(made, list) else [made])  # a model file's parts
     extras = {name: top[name] for name in ("ambient", "background") if name in top}
     if "animation" in top:
         extras["animation"] = _animation(top["animation"], camera, objects, source)
@@ -334,6 +340,8 @@ def _type_of(table: Any, choices: dict[str, Any], path: KeyPath, source: _Source
     expected = ", ".join(repr(name) for name in choices)
     if "type" not in table:
         raise source.error(path, f"missing key 'type'; expected one of {expected}")
+    if not isinstance(table["type"], str):  # a list or table is unhashable: say so plainly
+        raise source.error((*path, "type"), f"expected a string, got {_shown(table['type'])}")
     if table["type"] not in choices:
         raise source.error((*path, "type"), f"unknown type {table['type']!r}; expected {expected}")
     return table["type"]
@@ -346,6 +354,7 @@ def _object(
     values = _checked(table, OBJECTS[kind][1], path, source)
     spec = dict(values)
     del values["type"]
+    named = values.get("material")
     material = _material(values.pop("material", None), materials, (*path, "material"), source)
     matrix = None
     if "transform" in values:
@@ -354,6 +363,9 @@ def _object(
             matrix = transform_matrix(**transform)
     spec.pop("material", None)
     with _reported(source, path, spec):
+        if kind == "mesh" and _is_model(values.get("path"), base, named):
+            override = None if named is None else material
+            return _model_parts(values, override, matrix, spec, base, path, source)
         if kind == "mesh":
             return _mesh(values, material, matrix, spec, base, path, source)
         return _MAKERS[kind](values, material, matrix, spec)
@@ -428,6 +440,55 @@ def _mesh(
     return mesh if spec is None else _tagged(mesh, spec)
 
 
+def _is_model(name: Any, base: Path, material: Any) -> bool:
+    """Whether a mesh ``path`` is read as a model file (parts with their own materials).
+
+    glTF files always are; an OBJ is when it names an MTL file and the scene gives no
+    ``material`` (otherwise it is one mesh with its polygon faces, as PLY and STL files are).
+    """
+    if not isinstance(name, str):
+        return False
+    suffix = Path(name).suffix.lower()
+    if suffix in (".glb", ".gltf"):
+        return True
+    if suffix != ".obj" or material is not None:
+        return False
+    try:
+        with (base / name).open("rb") as file:
+            return any(line.lstrip().startswith(b"mtllib") for line in file)
+    except OSError:
+        return False  # the mesh reader reports the missing file with its key and line
+
+
+def _model_parts(
+    values: dict,
+    material: Material | None,
+    matrix: Any,
+    spec: dict,
+    base: Path,
+    path: KeyPath,
+    source: _Source,
+) -> list[Mesh]:
+    """Read a model file named by a mesh object: one mesh per part, named ``name/part``."""
+    if "normals" in values or {"vertices", "faces"} & set(values):
+        raise ValueError("a mesh with a 'path' takes no 'vertices', 'faces' or 'normals'")
+    from pixelpath.io.models import read_model_objects  # it builds on this package
+
+    file = (base / values["path"]).resolve()
+    spec["path"] = file
+    try:
+        parts = read_model_objects(file, material)
+    except FileNotFoundError as exc:
+        raise source.error((*path, "path"), str(exc), FileNotFoundError) from None
+    prefix = values.get("name")
+    parts = [part if matrix is None else part.transformed(matrix) for part in parts]
+    spec["_model"] = {"first": parts[0], "own_materials": material is None}
+    for part in parts:
+        part.name = f"{prefix}/{part.name}" if prefix else part.name
+        _tagged(part, spec)  # all parts share one spec: Scene.to_dict writes the entry once
+    return parts
+
+
 def _tagged(mesh: Mesh, spec: dict) -> Mesh:
     mesh.source = spec
     return mesh
@@ -469,7 +530,9 @@ def scene_to_dict(scene: Scene, base_dir: str | Path | None = None) -> dict[str,
     True
     """
     materials: dict[str, Material] = {}
-    objects = [_object_dict(obj, materials, base_dir) for obj in scene.objects]
+    objects = [
+        _object_dict(obj, materials, base_dir) for obj in scene.objects if not _later_part(obj)
+    ]
     ambient = scene.ambient.tolist()
     data: dict[str, Any] = {
         "camera": {name: _plain(getattr(scene.camera, name)) for name in CAMERA},
@@ -517,9 +580,17 @@ def _light_dict(light: Any) -> dict[str, Any]:
     return {"type": kind, **{key: _plain(getattr(light, key)) for key in keys}}
 
 
+def _later_part(obj: Any) -> bool:
+    """Whether ``obj`` is a model file's part other than its first (written with the first)."""
+    model = (getattr(obj, "source", None) or {}).get("_model")
+    return model is not None and model["first"] is not obj
+
+
 def _object_dict(obj: Any, materials: dict[str, Material], base_dir: Any) -> dict[str, Any]:
     if isinstance(obj, Mesh):
         data = _mesh_dict(obj, base_dir)
+        if obj.source is not None and obj.source.get("_model", {}).get("own_materials"):
+            return data  # the parts keep the materials in their file
     else:
         kind = type(obj).__name__.lower()
         keys = [key for key in OBJECTS[kind][1] if key not in ("type", "material", "transform")]
@@ -544,7 +615,7 @@ def _material_name(material: Material, materials: dict[str, Material]) -> str:
 
 def _mesh_dict(mesh: Mesh, base_dir: Any) -> dict[str, Any]:
     if mesh.source is not None:
-        data = dict(mesh.source)
+        data = {key: value for key, value in mesh.source.items() if not key.startswith("_")}
         if "path" in data:
             data["path"] = _relative(Path(data["path"]), base_dir)
         return data

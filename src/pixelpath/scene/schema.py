@@ -202,7 +202,11 @@ OBJECTS = {
         None,
         {
             **_MESH_COMMON,
-            "path": Key("string", "OBJ, PLY or STL file, relative to the scene file"),
+            "path": Key(
+                "string",
+                "OBJ, PLY, STL, glTF or GLB file, relative to the scene file (a glTF/GLB, or "
+                "an OBJ with an MTL and no 'material', gives one object per part)",
+            ),
             "vertices": Key("points", "inline vertex positions (instead of path)"),
             "faces": Key("faces", "inline polygons, counter-clockwise from outside"),
             "normals": Key("points", "inline per-vertex normals (optional)"),
