@@ -1,0 +1,617 @@
+"""Model files (glTF, OBJ+MTL, PLY, STL) read into scenes: real files, hand-made glTF, bad input."""
+
+from __future__ import annotations
+
+import base64
+import importlib.util
+import io
+import json
+import math
+import shutil
+import struct
+import warnings
+import zlib
+from pathlib import Path
+
+import numpy as np
+import pytest
+import trimesh
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+from PIL import Image
+
+import pixelpath as pp
+from pixelpath.io.models import framing_camera, read_model, read_model_objects
+from pixelpath.scene import DirectionalLight, PointLight
+
+DATA = Path(__file__).resolve().parents[1] / "data" / "models"
+
+# --- a small glTF written by hand, so that the expected values do not come from trimesh ----------
+
+QUAD = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], dtype="<f4")
+QUAD_FACES = np.array([0, 1, 2, 0, 2, 3], dtype="<u2")
+# glTF's v runs down the image: the world's bottom-left corner (0, 0, 0) shows the image's
+# bottom-left texel at glTF (u, v) = (0, 1)
+QUAD_UV_GLTF = np.array([[0, 1], [1, 1], [1, 0], [0, 0]], dtype="<f4")
+# the 2 x 2 picture: top row red, green; bottom row blue, white
+PICTURE = np.array([[[255, 0, 0], [0, 255, 0]], [[0, 0, 255], [255, 255, 255]]], dtype=np.uint8)
+
+
+def _png(array: np.ndarray) -> bytes:
+    out = io.BytesIO()
+    Image.fromarray(array).save(out, format="PNG")
+    return out.getvalue()
+
+
+def _data_uri(data: bytes, mime: str = "application/octet-stream") -> str:
+    return f"data:{mime};base64,{base64.b64encode(data).decode()}"
+
+
+def quad_gltf(*, vertices=QUAD, indices=QUAD_FACES, image: bytes | None = None, **extra) -> dict:
+    """Return the JSON of a glTF quad (one node 'quad'), textured when ``image`` is given."""
+    blob = vertices.tobytes() + QUAD_UV_GLTF.tobytes() + indices.tobytes()
+    n_v, n_uv = len(vertices) * 12, len(QUAD_UV_GLTF) * 8
+    gltf = {
+        "asset": {"version": "2.0"},
+        "scene": 0,
+        "scenes": [{"nodes": [0]}],
+        "nodes": [{"name": "quad", "mesh": 0}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "TEXCOORD_0": 1},
+                                    "indices": 2, "material": 0}]}],
+        "materials": [{"name": "m", "pbrMetallicRoughness": {"metallicFactor": 0.0}}],
+        "buffers": [{"byteLength": len(blob), "uri": _data_uri(blob)}],
+        "bufferViews": [
+            {"buffer": 0, "byteOffset": 0, "byteLength": n_v},
+            {"buffer": 0, "byteOffset": n_v, "byteLength": n_uv},
+            {"buffer": 0, "byteOffset": n_v + n_uv, "byteLength": indices.nbytes},
+        ],
+        "accessors": [
+            {"bufferView": 0, "componentType": 5126, "count": len(vertices), "type": "VEC3",
+             "min": [0, 0, 0], "max": [1, 1, 0]},
+            {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC2"},
+            {"bufferView": 2, "componentType": 5123, "count": len(indices), "type": "SCALAR"},
+        ],
+    }
+    if image is not None:
+        gltf["images"] = [{"uri": _data_uri(image, "image/png")}]
+        gltf["textures"] = [{"source": 0}]
+        gltf["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"] = {"index": 0}
+    gltf.update(extra)
+    return gltf
+
+
+def write(tmp_path: Path, gltf: dict, name: str = "model.gltf") -> Path:
+    path = tmp_path / name
+    path.write_text(json.dumps(gltf))
+    return path
+
+
+def glb_bytes(gltf: dict) -> bytes:
+    text = json.dumps(gltf).encode()
+    text += b" " * (-len(text) % 4)
+    body = struct.pack("<II", len(text), 0x4E4F534A) + text
+    return b"glTF" + struct.pack("<II", 2, 12 + len(body)) + body
+
+
+# --- each format ----------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("name", "parts"),
+    [
+        ("Duck.glb", ["LOD3spShape"]),
+        ("BoxTextured.glb", ["Mesh"]),
+        ("BoxVertexColors.gltf", ["Cube"]),
+        ("fuze.obj", ["fuze.obj"]),
+    ],
+)
+def test_real_files_load_with_their_parts_and_trimesh_bounds(name, parts):
+    scene = pp.load_scene(DATA / name)
+    assert [obj.name for obj in scene.objects] == parts
+    assert scene.encoding == "srgb"
+    expected = trimesh.load(DATA / name, force="scene").bounds  # node transforms applied
+    np.testing.assert_allclose(scene.bounds(), expected, atol=1e-9)
+
+
+def test_textured_files_keep_texture_and_uv():
+    for name in ("Duck.glb", "BoxTextured.glb", "fuze.obj"):
+        (mesh,) = read_model(DATA / name).objects
+        assert mesh.material.texture is not None, name
+        assert mesh.uv is not None and mesh.uv.shape == (len(mesh.vertices), 2), name
+
+
+def test_node_transforms_are_applied(tmp_path):
+    gltf = quad_gltf()
+    gltf["nodes"] = [
+        {"name": "parent", "translation": [10, 0, 0], "children": [1]},
+        {"name": "child", "scale": [2, 2, 2], "mesh": 0},
+    ]
+    (mesh,) = read_model(write(tmp_path, gltf)).objects
+    assert mesh.name == "child"
+    np.testing.assert_allclose(mesh.bounds(), [[10, 0, 0], [12, 2, 0]])
+
+
+def test_mirroring_node_keeps_faces_facing_out(tmp_path):
+    gltf = quad_gltf()
+    gltf["nodes"][0]["scale"] = [-1, 1, 1]  # mirrored in x, the quad still faces +Z
+    (mesh,) = read_model(write(tmp_path, gltf)).objects
+    np.testing.assert_allclose(mesh.bounds(), [[-1, 0, 0], [0, 1, 0]])
+    np.testing.assert_allclose(mesh.face_normals[:, 2], 1.0)
+
+
+def test_uv_has_v_up_pinned_by_a_2x2_texture(tmp_path):
+    (mesh,) = read_model(write(tmp_path, quad_gltf(image=_png(PICTURE)))).objects
+    texture = np.asarray(Image.fromarray(PICTURE))
+    # pixelpath's convention: (u, v) -> column u * W, row (1 - v) * H (v up)
+    for corner, expected in [((0, 0, 0), (0, 0, 255)), ((1, 1, 0), (0, 255, 0)),
+                             ((1, 0, 0), (255, 255, 255)), ((0, 1, 0), (255, 0, 0))]:
+        index = int(np.flatnonzero(np.all(mesh.vertices == corner, axis=1))[0])
+        u, v = np.clip(mesh.uv[index], 0.25, 0.75)  # the centre of the corner's texel
+        texel = texture[int((1 - v) * 2), int(u * 2)]
+        assert tuple(texel) == expected, corner
+
+
+def test_uv_orientation_of_a_real_file():
+    # trimesh flips glTF's v when loading (the 2 x 2 test above pins the convention): the
+    # reader must not flip it a second time
+    (mesh,) = read_model(DATA / "BoxTextured.glb").objects
+    scene = trimesh.load(DATA / "BoxTextured.glb", force="scene")
+    (geometry,) = scene.geometry.values()
+    np.testing.assert_allclose(mesh.uv, geometry.visual.uv)  # trimesh's uv are already v up
+
+
+def test_vertex_colours_are_kept():
+    gltf = json.loads((DATA / "BoxVertexColors.gltf").read_text())
+    blob = base64.b64decode(gltf["buffers"][0]["uri"].split(",", 1)[1])
+    view = gltf["bufferViews"][3]
+    raw = np.frombuffer(blob[view["byteOffset"] : view["byteOffset"] + view["byteLength"]], "<f4")
+    (mesh,) = read_model(DATA / "BoxVertexColors.gltf").objects
+    np.testing.assert_allclose(mesh.colors, raw.reshape(-1, 4), atol=1e-6)  # linear, as stored
+
+
+def test_ply_vertex_colours_are_decoded_from_srgb(tmp_path):
+    box = trimesh.creation.box()
+    box.visual.vertex_colors = [128, 0, 255, 255]
+    path = tmp_path / "box.ply"
+    box.export(path)
+    scene = pp.load_scene(path)
+    (mesh,) = scene.objects
+    srgb = 128 / 255
+    np.testing.assert_allclose(mesh.colors[0, :3], [((srgb + 0.055) / 1.055) ** 2.4, 0, 1],
+                               atol=1e-6)
+
+
+def test_stl_loads_with_the_default_camera_and_lights(tmp_path):
+    path = tmp_path / "box.stl"
+    trimesh.creation.box(extents=(1, 2, 3)).export(path)
+    scene = pp.load_scene(path)
+    assert len(scene.objects) == 1
+    np.testing.assert_allclose(scene.bounds(), [[-0.5, -1, -1.5], [0.5, 1, 1.5]])
+    assert len(scene.lights) == 3 and all(isinstance(x, DirectionalLight) for x in scene.lights)
+
+
+# --- materials ------------------------------------------------------------------------------
+
+
+def test_mtl_ns_0_gives_no_highlight_and_keeps_the_texture():
+    (mesh,) = read_model(DATA / "fuze.obj").objects  # Ks 1 1 1 but Ns 0
+    assert mesh.material.ks == 0.0
+    np.testing.assert_allclose(mesh.material.color, [1, 1, 1])
+    assert mesh.material.name == "a-super-duper-material"
+
+
+def test_gltf_roughness_1_gives_no_highlight():
+    (duck,) = read_model(DATA / "Duck.glb").objects  # metallic 0, roughness 1 (the default)
+    assert duck.material.ks == 0.0 and duck.material.kd == 1.0
+    (box,) = read_model(DATA / "BoxVertexColors.gltf").objects  # roughness 0.99
+    assert box.material.ks < 1e-3
+    np.testing.assert_allclose(box.material.color, [0.8, 0.8, 0.8], atol=1 / 255)
+
+
+def test_gltf_smooth_metal_and_flags(tmp_path):
+    gltf = quad_gltf()
+    gltf["materials"][0] = {
+        "name": "metal",
+        "pbrMetallicRoughness": {"baseColorFactor": [1, 0.5, 0.25, 0.5], "metallicFactor": 1.0,
+                                 "roughnessFactor": 0.5},
+        "doubleSided": True,
+        "alphaMode": "BLEND",
+    }
+    (mesh,) = read_model(write(tmp_path, gltf)).objects
+    material = mesh.material
+    assert material.ks == pytest.approx(0.25)  # (1 - 0.5)^2 for a metal
+    assert material.shininess == pytest.approx(2 / 0.5**4 - 2)
+    assert material.double_sided
+    assert material.transparency == pytest.approx(0.5, abs=1 / 255)
+    np.testing.assert_allclose(material.color, [1, 0.5, 0.25], atol=1 / 255)
+
+
+def test_mtl_values_are_mapped(tmp_path):
+    (tmp_path / "m.mtl").write_text("newmtl shiny\nKd 0.5 0.5 0.5\nKa 0.3 0.3 0.3\n"
+                                    "Ks 0.8 0.8 0.8\nNs 50\nd 0.25\n")
+    (tmp_path / "m.obj").write_text("mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl shiny\n"
+                                    "f 1 2 3\n")
+    (mesh,) = read_model(tmp_path / "m.obj").objects
+    material = mesh.material
+    assert material.ka == pytest.approx(0.3)
+    assert material.ks == pytest.approx(0.4)  # 0.8 * 50 / 100
+    assert material.shininess == 50
+    assert material.transparency == pytest.approx(0.75)
+    np.testing.assert_allclose(material.color, ((0.5 + 0.055) / 1.055) ** 2.4)
+
+
+def test_obj_with_spaces_and_missing_texture_warns(tmp_path):
+    for name in ("fuze.obj", "fuze.obj.mtl"):
+        shutil.copy(DATA / name, tmp_path / name)
+    with pytest.warns(UserWarning, match=r"fuze uv.jpg"):
+        (mesh,) = read_model(tmp_path / "fuze.obj").objects
+    assert mesh.material.texture is None
+
+
+# --- camera and lights --------------------------------------------------------------------------
+
+
+def _project(camera, points):
+    """Pixel coordinates of ``points`` seen by a perspective look-at camera (written here)."""
+    eye, target = np.asarray(camera.eye), np.asarray(camera.target)
+    back = (eye - target) / np.linalg.norm(eye - target)
+    right = np.cross(camera.up, back)
+    right /= np.linalg.norm(right)
+    up = np.cross(back, right)
+    rel = points - eye
+    depth = -(rel @ back)
+    scale = math.tan(math.radians(camera.fov) / 2)
+    x = (rel @ right) / (depth * scale * camera.width / camera.height)
+    y = (rel @ up) / (depth * scale)
+    return (x + 1) / 2 * camera.width, (1 - y) / 2 * camera.height, depth
+
+
+@pytest.mark.parametrize("name", ["BoxTextured.glb", "BoxVertexColors.gltf", "fuze.obj"])
+def test_default_camera_frames_the_model(name):
+    scene = read_model(DATA / name)
+    camera = scene.camera
+    assert (camera.width, camera.height) == (800, 600)
+    bounds = scene.bounds()
+    corners = np.array(np.meshgrid(*bounds.T, indexing="ij")).reshape(3, -1).T
+    px, py, depth = _project(camera, corners)
+    assert np.all((px >= 0) & (px <= camera.width) & (py >= 0) & (py <= camera.height))
+    assert np.all((depth > camera.near) & (depth < camera.far))
+    covered = max((px.max() - px.min()) / camera.width, (py.max() - py.min()) / camera.height)
+    assert covered > 0.6
+    # from the front (+Z) and a little above
+    view = np.asarray(camera.eye) - np.asarray(camera.target)
+    elevation = math.degrees(math.asin(view[1] / np.linalg.norm(view)))
+    assert view[2] > 0 and 15 < elevation < 30
+
+
+def test_framing_camera_honours_the_size():
+    camera = framing_camera([[0, 0, 0], [10, 1, 1]], (200, 100))
+    px, py, _ = _project(camera, np.array([[0, 0, 0], [10, 1, 1], [0, 1, 1], [10, 0, 0]]))
+    assert px.min() >= 0 and px.max() <= 200 and py.min() >= 0 and py.max() <= 100
+
+
+def test_file_camera_is_used():
+    camera = read_model(DATA / "Duck.glb").camera
+    assert camera.fov == pytest.approx(math.degrees(0.6605925559997559))
+    # the camera node's translation under the root's 0.01 scale
+    np.testing.assert_allclose(camera.eye, [4.00113, 4.63264, -4.31078], atol=1e-4)
+    assert camera.height == 600 and camera.width == 900  # aspectRatio 1.5
+    assert camera.near == pytest.approx(1.0)
+
+
+def test_file_lights_are_used(tmp_path):
+    gltf = quad_gltf()
+    gltf["extensions"] = {"KHR_lights_punctual": {"lights": [
+        {"type": "directional", "intensity": 2.0, "color": [1, 0.5, 0.5]},
+        {"type": "point", "intensity": 4.0},
+    ]}}
+    half = math.sqrt(0.5)
+    gltf["nodes"] += [
+        # rotated -90 degrees about X: the node's -Z points down, -Y
+        {"rotation": [-half, 0, 0, half], "extensions": {"KHR_lights_punctual": {"light": 0}}},
+        {"translation": [0.5, 0.5, 2], "extensions": {"KHR_lights_punctual": {"light": 1}}},
+    ]
+    gltf["scenes"][0]["nodes"] = [0, 1, 2]
+    scene = read_model(write(tmp_path, gltf))
+    directional, point = scene.lights
+    assert isinstance(directional, DirectionalLight) and isinstance(point, PointLight)
+    np.testing.assert_allclose(directional.direction, [0, -1, 0], atol=1e-6)
+    np.testing.assert_allclose(point.position, [0.5, 0.5, 2])
+    # lux 2 against candela 4 at 2 units from the model's centre (4 / 2^2 = 1): 2 is brightest
+    assert directional.intensity == pytest.approx(1.0) and point.intensity == pytest.approx(0.5)
+
+
+# --- scene files naming model files -------------------------------------------------------------
+
+
+def test_scene_file_names_a_model_and_overrides_its_material(tmp_path):
+    shutil.copy(DATA / "Duck.glb", tmp_path)
+    (tmp_path / "s.toml").write_text(
+        '[camera]\neye = [0, 1, 6]\ntarget = [0, 0.8, 0]\n[materials.red]\ncolor = [1, 0, 0]\n'
+        '[[objects]]\ntype = "mesh"\npath = "Duck.glb"\nname = "duck"\n'
+        '[[objects]]\ntype = "mesh"\npath = "Duck.glb"\nmaterial = "red"\n'
+        'transform = { translate = [2, 0, 0] }\n'
+    )
+    scene = pp.load_scene(tmp_path / "s.toml")
+    own, red = scene.objects
+    assert own.name == "duck/LOD3spShape" and own.material.texture is not None
+    assert red.material.texture is None and red.material.color.tolist() == [1, 0, 0]
+    np.testing.assert_allclose(red.bounds(), own.bounds() + np.array([2, 0, 0]))
+    again = pp.Scene.from_dict(scene.to_dict(base_dir=tmp_path), tmp_path)
+    assert [obj.name for obj in again.objects] == [obj.name for obj in scene.objects]
+
+
+@pytest.mark.parametrize("value", ["[1, 2]", "{ a = 1 }", "3"])
+def test_scene_object_type_of_the_wrong_kind_names_file_key_and_line(tmp_path, value):
+    path = tmp_path / "s.toml"
+    path.write_text(f"[camera]\neye = [0, 0, 5]\ntarget = [0, 0, 0]\n[[objects]]\ntype = {value}\n")
+    with pytest.raises(ValueError, match=r"s\.toml: objects\[0\]\.type \(near line 5\)"):
+        pp.load_scene(path)
+
+
+# --- bad input -----------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "uri", ["../../etc/passwd", "/etc/passwd", "file:///etc/passwd", "http://example.com/a.bin",
+            "..%2F..%2Fetc%2Fpasswd", "sub/../../outside.bin"]
+)
+@pytest.mark.parametrize("kind", ["buffers", "images"])
+def test_uris_outside_the_folder_are_refused_before_reading(tmp_path, monkeypatch, uri, kind):
+    gltf = quad_gltf(image=_png(PICTURE))
+    gltf[kind][0]["uri"] = uri
+    path = write(tmp_path, gltf)
+
+    def no_reading(*args, **kwargs):
+        raise AssertionError("trimesh was asked to read the file")
+
+    monkeypatch.setattr(trimesh, "load", no_reading)
+    with pytest.raises(ValueError, match=r"model\.gltf") as error:
+        read_model(path)
+    assert uri in str(error.value)
+
+
+@pytest.mark.parametrize(
+    "extension", ["KHR_draco_mesh_compression", "EXT_meshopt_compression", "KHR_texture_basisu"]
+)
+def test_required_extensions_trimesh_cannot_decode_are_named(tmp_path, extension):
+    if extension.startswith("KHR_draco") and importlib.util.find_spec("DracoPy"):
+        pytest.skip("DracoPy is installed: trimesh decodes Draco")
+    path = write(tmp_path, quad_gltf(extensionsUsed=[extension], extensionsRequired=[extension]))
+    with pytest.raises(ValueError, match=rf"model\.gltf.*{extension}"):
+        read_model(path)
+
+
+def _accessor_edit(tmp_path, index, **changes):
+    gltf = quad_gltf()
+    gltf["accessors"][index].update(changes)
+    return write(tmp_path, gltf)
+
+
+def test_absurd_counts_are_refused(tmp_path):
+    with pytest.raises(ValueError, match=r"model\.gltf: accessor 0"):
+        read_model(_accessor_edit(tmp_path, 0, count=10**12))
+
+
+def test_indices_out_of_range_are_refused(tmp_path):
+    indices = np.array([0, 1, 2, 0, 2, 99], dtype="<u2")
+    with pytest.raises(ValueError, match=r"model\.gltf"):
+        read_model(write(tmp_path, quad_gltf(indices=indices)))
+
+
+def test_nan_positions_are_refused(tmp_path):
+    vertices = QUAD.copy()
+    vertices[2, 0] = np.nan
+    with pytest.raises(ValueError, match=r"model\.gltf.*finite"):
+        read_model(write(tmp_path, quad_gltf(vertices=vertices)))
+
+
+def test_truncated_glb_is_refused(tmp_path):
+    data = (DATA / "Duck.glb").read_bytes()
+    for cut in (10, 100, len(data) // 2, len(data) - 1):
+        path = tmp_path / "cut.glb"
+        path.write_bytes(data[:cut])
+        with pytest.raises(ValueError, match=r"cut\.glb"):
+            read_model(path)
+
+
+def test_corrupt_jpeg_texture_is_refused(tmp_path):
+    for name in ("fuze.obj", "fuze.obj.mtl"):
+        shutil.copy(DATA / name, tmp_path / name)
+    (tmp_path / "fuze uv.jpg").write_bytes((DATA / "fuze uv.jpg").read_bytes()[:2000])
+    with pytest.raises(ValueError, match=r"fuze\.obj.*texture"):
+        read_model(tmp_path / "fuze.obj")
+
+
+def test_missing_gltf_texture_warns_and_keeps_the_colour(tmp_path):
+    gltf = quad_gltf(image=_png(PICTURE))
+    gltf["images"][0]["uri"] = "missing.png"
+    with pytest.warns(UserWarning, match=r"missing.png"):
+        (mesh,) = read_model(write(tmp_path, gltf)).objects
+    assert mesh.material.texture is None
+
+
+def _png_header_only(width: int, height: int) -> bytes:
+    def chunk(kind: bytes, body: bytes) -> bytes:
+        crc = struct.pack(">I", zlib.crc32(kind + body))
+        return struct.pack(">I", len(body)) + kind + body + crc
+
+    ihdr = struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)
+    return b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr) + chunk(b"IEND", b"")
+
+
+def test_huge_texture_is_refused_without_decoding(tmp_path):
+    gltf = quad_gltf(image=_png_header_only(20000, 20000))
+    with pytest.raises(ValueError, match=r"model\.gltf.*texture"):
+        read_model(write(tmp_path, gltf))
+
+
+def test_wrong_arguments(tmp_path):
+    with pytest.raises(TypeError, match=r"path"):
+        read_model(3)
+    with pytest.raises(FileNotFoundError):
+        read_model(tmp_path / "none.glb")
+    (tmp_path / "a.fbx").write_text("x")
+    with pytest.raises(ValueError, match=r"a\.fbx"):
+        read_model(tmp_path / "a.fbx")
+    with pytest.raises(TypeError, match=r"material"):
+        read_model_objects(DATA / "Duck.glb", material="red")
+
+
+def test_nothing_passed_is_modified(tmp_path):
+    path = write(tmp_path, quad_gltf())
+    before = path.read_bytes()
+    read_model(str(path))
+    assert path.read_bytes() == before
+
+
+# --- fuzzing -------------------------------------------------------------------------------------
+
+SMALL_GLB = glb_bytes(quad_gltf(image=_png(PICTURE)))
+JSON_END = 20 + struct.unpack("<I", SMALL_GLB[12:16])[0]
+
+
+def _edited_json(data: dict, key_index: int, value) -> dict:
+    """Replace one value somewhere in the glTF JSON (chosen by ``key_index``)."""
+    slots = []
+
+    def walk(node):
+        items = node.items() if isinstance(node, dict) else enumerate(node)
+        for key, child in items:
+            slots.append((node, key))
+            if isinstance(child, dict | list):
+                walk(child)
+
+    walk(data)
+    node, key = slots[key_index % len(slots)]
+    node[key] = value
+    return data
+
+
+def _only_named_errors(path: Path) -> None:
+    """Load ``path``: it loads, or raises ValueError/TypeError naming it (warnings allowed)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        try:
+            read_model(path)
+        except (ValueError, TypeError) as exc:
+            assert path.name in str(exc), f"{type(exc).__name__} without the file's name: {exc}"
+
+
+FUZZ = settings(max_examples=50, deadline=None,
+                suppress_health_check=[HealthCheck.function_scoped_fixture])
+
+
+@FUZZ
+@given(cut=st.integers(0, len(SMALL_GLB)), flips=st.lists(st.integers(0, len(SMALL_GLB) * 8 - 1),
+                                                          max_size=4))
+def test_fuzz_truncated_and_bit_flipped_glb(tmp_path, cut, flips):
+    data = bytearray(SMALL_GLB)
+    for bit in flips:
+        data[bit // 8] ^= 1 << (bit % 8)
+    path = tmp_path / "fuzz.glb"
+    path.write_bytes(bytes(data[: max(cut, 0)] if cut < len(data) else data))
+    _only_named_errors(path)
+
+
+JSON_VALUES = st.recursive(
+    st.none() | st.booleans() | st.integers(-(2**40), 2**40) | st.floats(allow_nan=True)
+    | st.text(max_size=8),
+    lambda children: st.lists(children, max_size=3) | st.dictionaries(st.text(max_size=5),
+                                                                       children, max_size=3),
+    max_leaves=6,
+)
+
+
+@FUZZ
+@given(key_index=st.integers(0, 500), value=JSON_VALUES)
+def test_fuzz_edited_gltf_json(tmp_path, key_index, value):
+    gltf = _edited_json(quad_gltf(image=_png(PICTURE)), key_index, value)
+    path = tmp_path / "fuzz.gltf"
+    path.write_text(json.dumps(gltf))
+    _only_named_errors(path)
+
+
+TOML_VALUES = st.recursive(
+    st.booleans() | st.integers(-5, 5) | st.floats(-10, 10) | st.sampled_from(
+        ["mesh", "sphere", "box", "plane", "point", "red", "", "Duck.glb"]),
+    lambda children: st.lists(children, max_size=3)
+    | st.dictionaries(st.sampled_from(["type", "a", "radius"]), children, max_size=2),
+    max_leaves=5,
+)
+OBJECT_KEYS = st.sampled_from(["type", "center", "radius", "path", "material", "name", "minimum",
+                               "maximum", "point", "normal", "transform", "faces", "vertices"])
+
+
+def _toml(value) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, str):
+        return json.dumps(value)
+    if isinstance(value, list):
+        return "[" + ", ".join(_toml(item) for item in value) + "]"
+    if isinstance(value, dict):
+        return "{" + ", ".join(f"{key} = {_toml(item)}" for key, item in value.items()) + "}"
+    return repr(value)
+
+
+@FUZZ
+@given(objects=st.lists(st.dictionaries(OBJECT_KEYS, TOML_VALUES, max_size=4), max_size=3),
+       lights=st.lists(st.dictionaries(st.sampled_from(["type", "position", "direction"]),
+                                       TOML_VALUES, max_size=3), max_size=2))
+def test_fuzz_scene_files(tmp_path, objects, lights):
+    text = "[camera]\neye = [0, 0, 5]\ntarget = [0, 0, 0]\n"
+    for name, tables in (("objects", objects), ("lights", lights)):
+        for table in tables:
+            text += f"[[{name}]]\n" + "".join(f"{k} = {_toml(v)}\n" for k, v in table.items())
+    path = tmp_path / "fuzz.toml"
+    path.write_text(text)
+    try:
+        pp.load_scene(path)
+    except (ValueError, TypeError, FileNotFoundError) as exc:
+        assert "fuzz.toml" in str(exc), f"{type(exc).__name__} without the file's name: {exc}"
+
+
+# --- rendering and the command line --------------------------------------------------------------
+
+
+def test_render_a_loaded_model_draws_it():
+    scene = read_model(DATA / "BoxVertexColors.gltf", size=(64, 48))
+    image = pp.render(scene)
+    drawn = np.asarray(image.object_id) >= 0
+    assert 0.1 < drawn.mean() < 0.95
+    pixels = np.asarray(image)[drawn]
+    assert pixels.max() > 0.2  # lit by the default rig
+    assert np.ptp(pixels.mean(axis=1)) > 0.05  # coloured faces, not one flat colour
+
+
+def test_render_keeps_the_texture_orientation(tmp_path):
+    gltf = quad_gltf(image=_png(PICTURE))
+    gltf["materials"][0]["doubleSided"] = True
+    scene = read_model(write(tmp_path, gltf), size=(40, 40))
+    camera = pp.Camera(eye=(0.5, 0.5, 3), target=(0.5, 0.5, 0), fov=20, width=40, height=40)
+    scene = pp.Scene(camera, scene.objects, [], ambient=1.0, encoding="srgb")
+    picture = np.asarray(pp.render(scene, shading="flat"))
+    # the quad fills the middle of the view: sample each quarter's centre
+    bottom_left, top_right = picture[27, 13], picture[13, 27]
+    assert bottom_left[2] > 0.5 > bottom_left[0]  # blue
+    assert top_right[1] > 0.5 > top_right[0]  # green
+
+
+def test_cli_render_writes_a_png_of_a_model(tmp_path):
+    from pixelpath.cli import main
+    from pixelpath.io import read_image
+
+    out = tmp_path / "duck.png"
+    assert main(["render", str(DATA / "Duck.glb"), "-o", str(out), "--size", "48x32"]) == 0
+    image = read_image(out)
+    assert image.shape == (32, 48, 3)
+    assert image.max() > 0
+
+
+def test_cli_info_reads_a_model(capsys):
+    from pixelpath.cli import main
+
+    assert main(["info", str(DATA / "fuze.obj"), "--json"]) == 0
+    summary = json.loads(capsys.readouterr().out)
+    assert len(summary["objects"]) == 1
