@@ -24,7 +24,10 @@ def register(subparsers: Any) -> None:
         examples=["pixelpath info scene.toml", "pixelpath info scene.toml --json"],
         run=run,
     )
-    parser.add_argument("scene", help="the .toml scene file (or the name of a bundled scene)")
+    parser.add_argument(
+        "scene",
+        help="a .toml scene file, a model file (.glb .gltf .obj .ply .stl) or a bundled scene",
+    )
     parser.add_argument("--json", action="store_true", help="print the summary as JSON")
 
 

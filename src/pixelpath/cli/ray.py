@@ -33,7 +33,10 @@ def register(subparsers: Any) -> None:
         ],
         run=run,
     )
-    parser.add_argument("scene", help="the .toml scene file (or the name of a bundled scene)")
+    parser.add_argument(
+        "scene",
+        help="a .toml scene file, a model file (.glb .gltf .obj .ply .stl) or a bundled scene",
+    )
     parser.add_argument("--pixel", required=True, help="X,Y: column and row (row 0 at the top)")
     parser.add_argument("--size", help="image size WIDTHxHEIGHT (default: the scene camera's)")
     parser.add_argument(

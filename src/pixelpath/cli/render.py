@@ -16,6 +16,7 @@ from pixelpath.cli._common import (
 )
 from pixelpath.cli._frames import add_frame_options, run_frames, wants_frames
 from pixelpath.figures import DRAWN_METHODS
+from pixelpath.io.models import MODEL_FORMATS
 from pixelpath.raster.shading import SHADINGS
 from pixelpath.renderer import METHOD_NAMES, STYLES
 
@@ -29,7 +30,9 @@ def register(subparsers: Any) -> None:
         description=(
             "Render a scene file with a hidden-surface method and a shading mode and write the "
             "image (PNG, JPEG, ... by extension; written atomically). SCENE may also name a "
-            "bundled demo scene. The camera's size comes from the file unless --size is given. "
+            "model file (glTF/GLB, OBJ+MTL, PLY, STL: its camera and lights, or a camera "
+            "framing it and a light rig) or a bundled demo scene. The camera's size comes from "
+            "the file unless --size is given. "
             "--explain prints what the method did (per scan line, per subdivision level, ...). "
             "--figure and --animate draw it: the z-buffer and the scan-line method filling "
             "the image, Warnock's areas coloured by how each was decided, the painter's and "
@@ -38,6 +41,7 @@ def register(subparsers: Any) -> None:
         ),
         examples=[
             "pixelpath render scene.toml -o out.png",
+            "pixelpath render Duck.glb -o duck.png --size 1024x768",
             "pixelpath render scene.toml -o out.png --method zbuffer --shading phong "
             "--size 1024x768",
             "pixelpath render showcase -o flat.png --shading flat --ssaa 2",
@@ -53,7 +57,10 @@ def register(subparsers: Any) -> None:
         ],
         run=run,
     )
-    parser.add_argument("scene", help="the .toml scene file (or the name of a bundled scene)")
+    parser.add_argument(
+        "scene",
+        help="a .toml scene file, a model file (.glb .gltf .obj .ply .stl) or a bundled scene",
+    )
     parser.add_argument("-o", "--output", required=True, help="image file to write (.png, ...)")
     parser.add_argument(
         "--method", default="zbuffer", choices=METHOD_NAMES, help="hidden-surface method"
@@ -142,7 +149,15 @@ def load_scene_sized(name: str, size: str | None) -> Any:
 
     from pixelpath.scene import load_scene
 
-    scene = load_scene(scene_path(name))
+    path = scene_path(name)
+    if size is not None and path.suffix.lower() in MODEL_FORMATS:
+        from pixelpath.io.models import read_model
+
+        width, height = parse_size(size)
+        if not (1 <= width <= 16384 and 1 <= height <= 16384):
+            raise CommandError(f"--size {size}: each side must lie in 1..16384")
+        return read_model(path, size=(width, height))  # framed for this size, not cropped
+    scene = load_scene(path)
     if size is not None:
         width, height = parse_size(size)
         try:
