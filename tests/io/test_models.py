@@ -615,3 +615,16 @@ def test_cli_info_reads_a_model(capsys):
     assert main(["info", str(DATA / "fuze.obj"), "--json"]) == 0
     summary = json.loads(capsys.readouterr().out)
     assert len(summary["objects"]) == 1
+
+
+def test_orthographic_file_camera(tmp_path):
+    gltf = quad_gltf()
+    gltf["cameras"] = [{"type": "orthographic",
+                        "orthographic": {"xmag": 2, "ymag": 1.5, "znear": 0.1, "zfar": 50}}]
+    gltf["nodes"].append({"camera": 0, "translation": [0.5, 0.5, 5]})
+    gltf["scenes"][0]["nodes"] = [0, 1]
+    camera = read_model(write(tmp_path, gltf)).camera
+    assert camera.projection == "orthographic" and camera.view_height == pytest.approx(3.0)
+    np.testing.assert_allclose(camera.eye, [0.5, 0.5, 5])
+    np.testing.assert_allclose(camera.target[:2], [0.5, 0.5])  # looking down -Z
+    assert (camera.near, camera.far) == (pytest.approx(0.1), pytest.approx(50))
