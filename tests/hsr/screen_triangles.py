@@ -36,7 +36,7 @@ def set_up(triangles, view: View):
     indices = np.arange(len(screen), dtype=np.intp).reshape(-1, 3)
     setup = np.zeros((len(indices), _kernels.SETUP_FIELDS))
     rows = np.zeros((len(indices), 2), dtype=np.intp)
-    _kernels.setup_triangles(screen, indices, view.y0, view.y0 + view.height, setup, rows)
+    _kernels.setup_triangles(screen, indices, False, view.y0, view.y0 + view.height, setup, rows)
     return types.SimpleNamespace(setup=setup, rows=rows)
 
 

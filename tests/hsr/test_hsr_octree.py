@@ -95,7 +95,7 @@ def test_random_rays_meet_the_leaves_of_a_real_tree_in_traversal_order():
     lows = tree.corners[leaves]
     highs = lows + tree.sides[leaves, None]
     for eye in [scene.camera.eye, np.array([0.1, 0.2, -0.3]), rng.uniform(-3, 3, 3)]:
-        order = kernels.leaf_order(tree.tree, eye)
+        order = kernels.leaf_order(tree.tree, np.append(eye, 1.0))
         assert sorted(order.tolist()) == leaves.tolist()
         place = {leaf: k for k, leaf in enumerate(order.tolist())}
         for direction in rng.normal(size=(300, 3)):

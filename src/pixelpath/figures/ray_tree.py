@@ -211,7 +211,8 @@ def _project(camera: Camera, a: np.ndarray, b: np.ndarray):
         cut = clip[0] + t * (clip[1] - clip[0])
         clip[0 if wa < near else 1] = cut
     screen = np.empty((2, 3))
-    _kernels.clip_to_screen(np.ascontiguousarray(clip), camera.width, camera.height, screen)
+    _kernels.clip_to_screen(np.ascontiguousarray(clip), camera.width, camera.height,
+                            camera.orthographic, screen)
     return screen[:, :2]
 
 

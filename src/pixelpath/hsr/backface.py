@@ -8,8 +8,11 @@ outside). Then
 * ``N · V ≥ 0``: the face turns away (or is seen edge-on) — culled.
 
 This is the notes' "N · V < 0 → visible" with their V. (With V from the surface to the eye,
-the same test reads N · V > 0.) A face seen exactly edge-on covers no pixel, so culling it
-changes nothing. Degenerate faces have N = 0 and are culled too.
+the same test reads N · V > 0.) An orthographic camera has no eye point: its V is the viewing
+direction d everywhere, so the test is N · d ≥ 0 → culled. Both are one formula with the
+camera's homogeneous viewpoint E = (eye, 1) or (−d, 0): V = E_w · P − E. A face seen exactly
+edge-on covers no pixel, so culling it changes nothing. Degenerate faces have N = 0 and are
+culled too.
 
 Examples
 --------
@@ -31,7 +34,7 @@ __all__ = ["front_facing"]
 
 
 def front_facing(normals: np.ndarray, points: np.ndarray, eye: Any) -> np.ndarray:
-    """Return which faces turn towards the eye: ``N · (P − eye) < 0``.
+    """Return which faces turn towards the eye: ``N · (P − eye) < 0``, or ``N · d < 0``.
 
     Parameters
     ----------
@@ -39,8 +42,10 @@ def front_facing(normals: np.ndarray, points: np.ndarray, eye: Any) -> np.ndarra
         Outward face normals (any length; zero for degenerate faces).
     points : (F, 3) array_like
         One point of each face (any point: the test is the same over a planar face).
-    eye : (3,) array_like
-        The eye position.
+    eye : (3,) or (4,) array_like
+        The eye position, or a homogeneous viewpoint (:meth:`Camera.viewpoint`): ``(x, y, z,
+        1)`` is the eye at (x, y, z), ``(x, y, z, 0)`` the orthographic viewer at infinity
+        in direction (x, y, z) (opposite the viewing direction).
 
     Returns
     -------
@@ -52,6 +57,10 @@ def front_facing(normals: np.ndarray, points: np.ndarray, eye: Any) -> np.ndarra
     >>> from pixelpath.hsr.backface import front_facing
     >>> front_facing([[1.0, 0.0, 0.0]], [[2.0, 0.0, 0.0]], eye=(5, 0, 0)).tolist()
     [True]
+    >>> # Orthographic, looking down -z: a face tilted 89 degrees from the view still faces it.
+    >>> front_facing([[0.9998, 0.0, 0.0175], [0.9998, 0.0, -0.0175]], [[9.0, 0, 0]] * 2,
+    ...              eye=(0, 0, 1, 0)).tolist()
+    [True, False]
     """
     from pixelpath.raster._arrays import kernel_array
 
@@ -63,8 +72,10 @@ def front_facing(normals: np.ndarray, points: np.ndarray, eye: Any) -> np.ndarra
             f"normals and points must both have shape (F, 3), got {normals.shape} and "
             f"{points.shape}"
         )
-    if eye.shape != (3,):
-        raise ValueError(f"eye must have shape (3,), got {eye.shape}")
+    if eye.shape == (3,):
+        eye = np.append(eye, 1.0)
+    if eye.shape != (4,):
+        raise ValueError(f"eye must have shape (3,) or (4,), got {eye.shape}")
     from pixelpath.raster import _kernels
 
     out = np.empty(len(normals), dtype=np.bool_)

@@ -136,6 +136,9 @@ class BSPTree:
     def order(self, eye: Any) -> np.ndarray:
         """Return the fragments back to front as seen from ``eye`` (infinite planes aside).
 
+        ``eye`` is a point (x, y, z) or a homogeneous viewpoint (x, y, z, w) such as
+        :meth:`Camera.viewpoint` (w = 0: an orthographic viewer at infinity).
+
         Examples
         --------
         >>> from pixelpath.scene import Camera, Mesh, Scene
@@ -149,12 +152,18 @@ class BSPTree:
         [1, 0]
         >>> tree.fragment_object[tree.order((0, 0, -5))].tolist()
         [0, 1]
+        >>> tree.fragment_object[tree.order((0, 0, -1, 0))].tolist()  # from -z, orthographic
+        [0, 1]
         """
         from pixelpath.raster._arrays import kernel_array
 
         eye = kernel_array(eye)
-        if eye.shape != (3,) or not np.all(np.isfinite(eye)):
-            raise ValueError(f"eye must be a finite point (x, y, z), got {eye.tolist()!r}")
+        if eye.shape == (3,):
+            eye = np.append(eye, 1.0)
+        if eye.shape != (4,) or not np.all(np.isfinite(eye)):
+            raise ValueError(
+                f"eye must be a finite point (x, y, z) or (x, y, z, w), got {eye.tolist()!r}"
+            )
         empty = np.zeros(self.node_count, dtype=np.intp)
         sequence, _ = self._traverse(eye, empty, empty, np.empty(0, dtype=np.intp))
         return sequence
@@ -217,7 +226,6 @@ def render_frame(
     ((24, 32, 3), 0)
     """
     from pixelpath.hsr._kernels import bsp as kernels
-    from pixelpath.raster._arrays import kernel_array
     from pixelpath.raster.tessellate import scene_geometry
 
     if tree is None:
@@ -231,7 +239,7 @@ def render_frame(
     drawing = _drawing(tree, scene_geometry(scene, view.camera))
     prepared = pipeline.prepare(scene, view, options, drawing.geometry, drawing.blends)
     sequence, visited = tree._traverse(
-        kernel_array(view.camera.eye), drawing.extra_first, drawing.extra_count, drawing.extra_items
+        view.camera.viewpoint(), drawing.extra_first, drawing.extra_count, drawing.extra_items
     )
     order = np.empty(len(prepared.triangles), dtype=np.intp)
     drawn = kernels.draw_order(sequence, prepared.source, len(drawing.geometry.triangles), order)
@@ -520,12 +528,12 @@ def _order_arrays(tree: BSPTree, prepared: pipeline.Prepared, drawing: _Drawing,
     fragment = source < len(tree.fragments)
     cut = np.zeros(len(source), dtype=bool)
     cut[fragment] = (tree.fragments[source[fragment]] >= tree.cut_from).any(axis=1)
-    eye = np.asarray(view.camera.eye, dtype=np.float64)
+    eye = view.camera.viewpoint()
     arrays = order_arrays(prepared, view, order, cut)
     arrays.update({
         "node": node_of[source],
         "children": tree.children.copy(),
-        "eye in front": tree.node_planes[:, :3] @ eye + tree.node_planes[:, 3] >= 0,
+        "eye in front": tree.node_planes[:, :3] @ eye[:3] + tree.node_planes[:, 3] * eye[3] >= 0,
     })
     return arrays
 

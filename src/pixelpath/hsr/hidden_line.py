@@ -232,7 +232,7 @@ def hidden_lines(
     polygons = None
     if options.backface_cull:
         polygons = front_facing(geometry.polygon_normals, geometry.polygon_points,
-                                view.camera.eye)
+                                view.camera.viewpoint())
     starts, ends, owners = polygon_edges(scene, geometry, polygons)
     limit = surface_limit(frame.depth, frame.object_id)
     top, left = view.y0 - frame_view.y0, view.x0 - frame_view.x0

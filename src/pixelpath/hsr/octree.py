@@ -287,7 +287,7 @@ def _traverse(octree: Octree, prepared: pipeline.Prepared, view: View,
     shape = (view.height, view.width)
     scan = kernels.Scan(prepared.setup, prepared.rows, prepared.triangles, prepared.positions)
     work = (np.empty(shape, dtype=np.uint8), np.empty(shape, dtype=np.int32))
-    eye = kernel_array(camera.eye)
+    eye = camera.viewpoint()
     outcomes = np.zeros((count, octree.nodes if record else 0), dtype=np.int8)
 
     def run(bands: np.ndarray) -> None:

@@ -137,8 +137,8 @@ def depth_sort(prepared: pipeline.Prepared, view: View) -> DepthSort:
     limit = MAX_GROWTH * len(candidates) + 1024
     order, attrs, screen, count, corners, root = kernels.depth_sort(
         attrs, screen, count, np.ascontiguousarray(prepared.triangles[candidates]),
-        np.ascontiguousarray(planes[candidates]), camera.width, camera.height, eps, limit,
-        counts,
+        np.ascontiguousarray(planes[candidates]), camera.width, camera.height,
+        camera.orthographic, eps, limit, counts,
     )
     sorted_count = len(candidates)
     pieces = corners[sorted_count:]
@@ -159,12 +159,11 @@ def _triangle_planes(prepared: pipeline.Prepared, camera: Camera) -> tuple[np.nd
     scene triangle share its plane exactly, so they classify alike.
     """
     from pixelpath.hsr._kernels import painter as kernels
-    from pixelpath.raster._arrays import kernel_array
 
     geometry = prepared.geometry
     planes = np.empty((len(prepared.source), kernels.PLANE_COLUMNS))
     kernels.triangle_planes(geometry.vertices, geometry.triangles, prepared.source,
-                            kernel_array(camera.eye), planes)
+                            camera.viewpoint(), planes)
     reach = np.abs(prepared.positions - camera.eye).max(initial=1.0)
     eps = PLANE_TOLERANCE * float(reach)
     eye_side = planes[:, 4]
@@ -212,8 +211,8 @@ def _with_pieces(prepared, view, attrs, screen, pieces, origin) -> pipeline.Prep
     triangles = np.concatenate([prepared.triangles, pieces])
     setup = np.empty((len(pieces), _kernels.SETUP_FIELDS))
     rows = np.empty((len(pieces), 2), dtype=np.intp)
-    _kernels.setup_triangles(screen, np.ascontiguousarray(pieces), view.y0,
-                             view.y0 + view.height, setup, rows)
+    _kernels.setup_triangles(screen, np.ascontiguousarray(pieces), view.camera.orthographic,
+                             view.y0, view.y0 + view.height, setup, rows)
     colors = prepared.colors
     if len(colors) == old:
         colors = np.concatenate([colors, new[:, 10:16]])
@@ -275,12 +274,13 @@ def compare(p, q, camera: Camera) -> Comparison:
     if not np.all(clip[:, 3] > 0):
         raise ValueError("p and q must lie in front of the eye (positive view depth)")
     screen = np.empty((6, 3))
-    _kernels.clip_to_screen(kernel_array(clip), camera.width, camera.height, screen)
+    _kernels.clip_to_screen(kernel_array(clip), camera.width, camera.height,
+                            camera.orthographic, screen)
     attrs = np.hstack([clip, points])
     corners = np.array([[0, 1, 2], [3, 4, 5]], dtype=np.intp)
     records = np.empty((2, kernels.RECORD))
     for k in range(2):
-        kernels._describe(corners[k], attrs, screen, records[k])
+        kernels._describe(corners[k], attrs, screen, camera.orthographic, records[k])
         a, b, c = points[3 * k : 3 * k + 3]
         normal = np.cross(b - a, c - a)
         if not np.linalg.norm(normal) > 0:
@@ -289,7 +289,9 @@ def compare(p, q, camera: Camera) -> Comparison:
         offset = -normal @ a
         records[k, kernels.NORMAL : kernels.OFFSET] = normal
         records[k, kernels.OFFSET] = offset
-        records[k, kernels.EYE_SIGN] = 1.0 if normal @ camera.eye + offset >= 0 else -1.0
+        viewpoint = camera.viewpoint()
+        side = normal @ viewpoint[:3] + offset * viewpoint[3]
+        records[k, kernels.EYE_SIGN] = 1.0 if side >= 0 else -1.0
     eps = PLANE_TOLERANCE * float(np.abs(points - camera.eye).max())
     test = int(kernels.compare(0, 1, records, corners, attrs, screen, eps))
     if test <= len(TESTS):

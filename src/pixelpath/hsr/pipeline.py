@@ -187,7 +187,7 @@ def prepare(
         options.blinn,
     )
     geometry = geometry if geometry is not None else scene_geometry(scene, camera)
-    front = front_facing(geometry.polygon_normals, geometry.polygon_points, lighting.eye)
+    front = front_facing(geometry.polygon_normals, geometry.polygon_points, camera.viewpoint())
     keep = front[geometry.triangle_polygon]
     if not options.backface_cull:
         keep = np.ones_like(keep)
@@ -246,11 +246,13 @@ def _set_up(clipped: dict, view: View) -> Prepared:
 
     camera = view.camera
     screen = np.empty((len(clipped["clip"]), 3))
-    _kernels.clip_to_screen(clipped["clip"], camera.width, camera.height, screen)
+    _kernels.clip_to_screen(clipped["clip"], camera.width, camera.height, camera.orthographic,
+                            screen)
     triangles = clipped["triangles"]
     setup = np.empty((len(triangles), _kernels.SETUP_FIELDS))
     rows = np.empty((len(triangles), 2), dtype=np.intp)
-    _kernels.setup_triangles(screen, triangles, view.y0, view.y0 + view.height, setup, rows)
+    _kernels.setup_triangles(screen, triangles, camera.orthographic, view.y0,
+                             view.y0 + view.height, setup, rows)
     return Prepared(screen=screen, setup=setup, rows=rows, **clipped)
 
 
@@ -341,6 +343,20 @@ def output_buffers(view: View):
     )
 
 
+def orthographic_depth(view: View, visibility: Visibility, depth: np.ndarray) -> None:
+    """Rewrite ``depth`` from the depth keys when the camera is orthographic.
+
+    The shading pass writes 1/key, the view-axis depth of a perspective camera's key (1/w);
+    an orthographic key is affine in depth instead (:func:`pixelpath.raster._kernels.key_depth`),
+    and is converted here, from the float64 keys. A perspective frame is left as it is.
+    """
+    from pixelpath.raster import _kernels
+
+    camera = view.camera
+    if camera.orthographic:
+        _kernels.orthographic_depth(visibility.inv_depth, camera.near, camera.far, depth)
+
+
 def slices(view: View) -> list[tuple[int, int]]:
     """Split the band list into runs, one progress step each (several only for big regions)."""
     count, _ = bands(view)
@@ -374,6 +390,7 @@ def shade(
     for start, stop in runs:
         in_runs(shade_run, order[start:stop])
         options.progress(SHADE_SLICES // len(runs))
+    orthographic_depth(view, visibility, out.depth)
     return Frame(out.rgb, out.depth, out.object_id, prepared.stats, report)
 
 

@@ -76,6 +76,7 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     for start, stop in runs:
         in_runs(render_run, order[start:stop])
         options.progress(pipeline.SHADE_SLICES // len(runs))
+    pipeline.orthographic_depth(view, visibility, out.depth)
     report = _report(prepared, view, visibility) if options.explain else None
     return Frame(out.rgb, out.depth, out.object_id, prepared.stats, report)
 

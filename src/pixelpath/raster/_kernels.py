@@ -4,10 +4,15 @@ The pipeline these kernels implement (driven by :mod:`pixelpath.hsr.zbuffer`):
 
 1. ``clip_to_screen``: perspective divide and viewport. Pixel (i, j) has its centre at
    (i + 0.5, j + 0.5); row 0 is the top, so ``y_screen = (1 - y_ndc) * H / 2``. The third
-   screen coordinate is 1/w, which is affine in screen space (w = the view-axis depth).
+   screen coordinate is the *depth key*: affine in screen space, positive in the view volume
+   and larger where nearer. For a perspective camera it is 1/w (w = the view-axis depth); for
+   an orthographic one, whose clip w is 1, it is ``(3 - z_ndc) / 2``, in [1, 2] from the far
+   plane to the near one (:func:`key_depth` turns it back into a depth). Every method orders
+   surfaces by the key alone, so both projections share one code path.
 2. ``setup_triangles``: per triangle, its vertices sorted by y (the *edge table*: the edges
    sorted by their upper end), the affine planes of the screen-space barycentric weights and of
-   1/w, and the rows it covers. Zero-area and non-finite triangles cover no row.
+   the depth key, the vertices' 1/w (all 1 when orthographic: attributes are then interpolated
+   affinely) and the rows it covers. Zero-area and non-finite triangles cover no row.
 3. ``rasterize_bands``: scan conversion with an *active edge list*. On scan line y (a row of
    pixel centres) the active edges are the two edges whose half-open y-range [top, bottom)
    contains y; their x at y bounds the span, and pixels with ``x_left <= x_centre < x_right``
@@ -19,7 +24,7 @@ The pipeline these kernels implement (driven by :mod:`pixelpath.hsr.zbuffer`):
    visits its triangles in ascending order and keeps a sample only when it is strictly nearer,
    so ties go to the lower triangle index whatever the thread count (deterministic output).
 4. ``render_bands``: the same, then, while the band is still in cache, shading once per visible
-   pixel (deferred): the depth test stored only (1/w, triangle) per pixel; shading uses the
+   pixel (deferred): the depth test stored only (key, triangle) per pixel; shading uses the
    perspective-correct barycentric weights ``b_i = (s_i / w_i) / sum_k (s_k / w_k)`` of the
    screen weights ``s_i``. Phong shading gathers a row's interpolated points and normals into
    planar batches (one object's pixels each) and shades a batch at once with the lighting
@@ -45,8 +50,8 @@ PHONG = 2
 SORTED_XY = 0  # x0, y0, x1, y1, x2, y2 sorted by y: the triangle's edge table
 S1_PLANE = 6  # screen weight of vertex 1: s1 = a x + b y + c
 S2_PLANE = 9  # screen weight of vertex 2
-INVW_PLANE = 12  # 1/w = a x + b y + c
-VERTEX_INVW = 15  # 1/w at vertices 0, 1, 2 (in the triangle's own order)
+KEY_PLANE = 12  # depth key (1/w in perspective; larger is nearer) = a x + b y + c
+VERTEX_INVW = 15  # 1/w at vertices 0, 1, 2 (in the triangle's own order; 1 when orthographic)
 SLOPES = 18  # dx/dy of the sorted edges (v0, v2), (v0, v1), (v1, v2); 0 for a horizontal one
 SETUP_FIELDS = 21
 
@@ -128,11 +133,15 @@ class Buffers(NamedTuple):
 
 @njit(inline="always")
 def faces_away(normal, point, eye):
-    """Return the object-space back-face test N · (P − eye) >= 0 (V from the eye inwards)."""
+    """Return the object-space back-face test N · (w P − E) >= 0 (V from the eye inwards).
+
+    ``eye`` (4,) is homogeneous (``Camera.viewpoint``): (eye, 1) gives N · (P − eye), and the
+    orthographic viewer at infinity, (−d, 0), gives N · d with d the viewing direction.
+    """
     return (
-        normal[0] * (point[0] - eye[0])
-        + normal[1] * (point[1] - eye[1])
-        + normal[2] * (point[2] - eye[2])
+        normal[0] * (eye[3] * point[0] - eye[0])
+        + normal[1] * (eye[3] * point[1] - eye[1])
+        + normal[2] * (eye[3] * point[2] - eye[2])
         >= 0.0
     )
 
@@ -344,28 +353,59 @@ def _store_piece(pieces, slot, a, b, c, side):
 
 
 @njit(error_model="numpy")
-def clip_to_screen(clip, width, height, screen):
-    """Write (x_screen, y_screen, 1/w) of each clip-space vertex (V, 4) into screen (V, 3).
+def clip_to_screen(clip, width, height, orthographic, screen):
+    """Write (x_screen, y_screen, key) of each clip-space vertex (V, 4) into screen (V, 3).
 
     A vertex in the eye's plane (w = 0, such as the point of a plane's grid under an eye
     looking along the plane) maps to infinity, not an error: only vertices of triangles that
     were dropped or clipped can lie there, and those are never drawn.
     """
     for v in range(clip.shape[0]):
-        screen_point(clip, v, width, height, screen, v)
+        screen_point(clip, v, width, height, orthographic, screen, v)
 
 
 @njit(inline="always")
-def screen_point(clip, row, width, height, screen, screen_row):
-    """Divide and map one clip-space vertex: ``screen[screen_row] = (x, y, 1/w)``.
+def screen_point(clip, row, width, height, orthographic, screen, screen_row):
+    """Divide and map one clip-space vertex: ``screen[screen_row] = (x, y, key)``.
 
-    The one formula of the viewport, shared by :func:`clip_to_screen` and by the methods
-    that make vertices of their own (the painter's splits), so equal inputs give equal bits.
+    The one formula of the viewport and of the depth key, shared by :func:`clip_to_screen`
+    and by the methods that make vertices of their own (the painter's splits), so equal inputs
+    give equal bits.
     """
     inv_w = 1.0 / clip[row, 3]
     screen[screen_row, 0] = (clip[row, 0] * inv_w + 1.0) * 0.5 * width
     screen[screen_row, 1] = (1.0 - clip[row, 1] * inv_w) * 0.5 * height
-    screen[screen_row, 2] = inv_w
+    key = ORTHO_KEY_AT_NDC_0 - 0.5 * clip[row, 2] * inv_w if orthographic else inv_w
+    screen[screen_row, 2] = key
+
+
+# The orthographic depth key is ORTHO_KEY_AT_NDC_0 - z_ndc / 2: 2 on the near plane
+# (z_ndc = -1) and 1 on the far one, positive everywhere in the view volume, so "nothing drawn"
+# stays key 0 as in perspective. It spends the doubles' resolution evenly over [near, far].
+ORTHO_KEY_AT_NDC_0 = 1.5
+
+
+@njit(inline="always")
+def key_depth(key, orthographic, near, far):
+    """Return the view-axis depth of a depth key (``inf`` for 0: nothing drawn)."""
+    if not key > 0.0:
+        return np.inf
+    if orthographic:
+        z_ndc = 2.0 * (ORTHO_KEY_AT_NDC_0 - key)
+        return 0.5 * ((far - near) * z_ndc + (far + near))
+    return 1.0 / key
+
+
+@njit
+def orthographic_depth(keys, near, far, depth):
+    """Write the view-axis depth (h, w) of an orthographic frame's depth keys (h, w).
+
+    The shading pass wrote 1/key there, the perspective depth; an orthographic frame's
+    depth is affine in its key instead, and is rewritten here from the float64 keys.
+    """
+    for j in range(keys.shape[0]):
+        for i in range(keys.shape[1]):
+            depth[j, i] = key_depth(keys[j, i], True, near, far)
 
 
 @njit(inline="always")
@@ -399,10 +439,12 @@ MIN_EDGE_RISE = 1e-200
 
 
 @njit
-def setup_triangles(screen, triangles, row_first, row_stop, setup, rows):
+def setup_triangles(screen, triangles, orthographic, row_first, row_stop, setup, rows):
     """Fill the set-up record (T, SETUP_FIELDS) and the covered rows [first, stop) (T, 2).
 
     Rows are image rows, clipped to the rendered region's rows [row_first, row_stop).
+    ``screen`` (V, 3) holds (x, y, depth key); perspective keys are the vertices' 1/w, the
+    weights of perspective-correct interpolation, while orthographic vertices all weigh 1.
 
     Serial on purpose: it costs well under a millisecond for 70k triangles, less than waking
     the worker threads for a parallel loop (only ``render_bands`` is worth that).
@@ -422,8 +464,8 @@ def setup_triangles(screen, triangles, row_first, row_stop, setup, rows):
         record = setup[t]
         _store3(record, S1_PLANE, _plane(xa, ya, 0.0, xb, yb, 1.0, xc, yc, 0.0, inv))
         _store3(record, S2_PLANE, _plane(xa, ya, 0.0, xb, yb, 0.0, xc, yc, 1.0, inv))
-        _store3(record, INVW_PLANE, _plane(xa, ya, wa, xb, yb, wb, xc, yc, wc, inv))
-        _store3(record, VERTEX_INVW, (wa, wb, wc))
+        _store3(record, KEY_PLANE, _plane(xa, ya, wa, xb, yb, wb, xc, yc, wc, inv))
+        _store3(record, VERTEX_INVW, (1.0, 1.0, 1.0) if orthographic else (wa, wb, wc))
         # Edge table: vertices sorted by y, ties by x, so every edge runs from its upper end.
         if _above(xb, yb, xa, ya):
             xa, ya, xb, yb = xb, yb, xa, ya
@@ -558,7 +600,7 @@ def _rasterize_band(setup, rows, offsets, items, band, band_rows, x0, y0, inv_de
     for k in range(offsets[band], offsets[band + 1]):
         t = items[k]
         record = setup[t]
-        pa, pb, pc = record[INVW_PLANE], record[INVW_PLANE + 1], record[INVW_PLANE + 2]
+        pa, pb, pc = record[KEY_PLANE], record[KEY_PLANE + 1], record[KEY_PLANE + 2]
         for j in range(max(rows[t, 0], band_first), min(rows[t, 1], band_stop)):
             y = j + 0.5
             first, stop = scanline_span(record, y, x0, x0 + width)
@@ -599,7 +641,7 @@ def _paint_band(setup, rows, offsets, items, order, band, band_rows, x0, y0, inv
     for k in range(offsets[band], offsets[band + 1]):
         t = order[items[k]]
         record = setup[t]
-        pa, pb, pc = record[INVW_PLANE], record[INVW_PLANE + 1], record[INVW_PLANE + 2]
+        pa, pb, pc = record[KEY_PLANE], record[KEY_PLANE + 1], record[KEY_PLANE + 2]
         for j in range(max(rows[t, 0], band_first), min(rows[t, 1], band_stop)):
             y = j + 0.5
             first, stop = scanline_span(record, y, x0, x0 + width)
@@ -927,7 +969,7 @@ def overlapping_pair():
     triangles = np.array([[0, 1, 2], [3, 4, 5]], dtype=np.intp)
     setup = np.zeros((2, SETUP_FIELDS))
     rows = np.zeros((2, 2), dtype=np.intp)
-    setup_triangles(screen, triangles, 0, 8, setup, rows)
+    setup_triangles(screen, triangles, False, 0, 8, setup, rows)
     return setup, rows
 
 
@@ -937,11 +979,11 @@ def warm_front() -> None:
     status = np.empty(1, dtype=np.int8)
     classify_triangles(clip, triangles, np.ones(1, dtype=np.bool_), status)
     normal = np.array([[0.0, 0.0, 1.0]])
-    front_facing_many(normal, np.zeros((1, 3)), np.ones(3), np.empty(1, dtype=np.bool_))
+    front_facing_many(normal, np.zeros((1, 3)), np.ones(4), np.empty(1, dtype=np.bool_))
     clip_triangles(np.zeros((3, 10)), triangles, np.zeros(1, dtype=np.intp))
     screen = np.empty((3, 3))
-    clip_to_screen(clip, 8, 8, screen)
-    setup_triangles(screen, triangles, 0, 8, setup, rows)
+    clip_to_screen(clip, 8, 8, False, screen)
+    setup_triangles(screen, triangles, False, 0, 8, setup, rows)
     bin_triangles(rows, 1, BAND_ROWS, 0)
 
 
@@ -999,6 +1041,7 @@ def warm_shade() -> None:
     """Compile the shading pass the other methods run on the visibility they decided."""
     bands, _, _, _, _, inv_depth, triangle_id, surfaces, out = _tiny_shading_pass()
     shade_bands(bands, BAND_ROWS, 0, 0, inv_depth, triangle_id, surfaces, out)
+    orthographic_depth(inv_depth, 0.1, 10.0, out.depth)
 
 
 def warm_scan() -> None:

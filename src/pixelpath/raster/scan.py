@@ -48,7 +48,7 @@ def _setup(points: np.ndarray, triangles: np.ndarray, width: int, height: int):
     triangles = _triangle_indices(triangles, len(points))
     setup = np.zeros((len(triangles), _kernels.SETUP_FIELDS))
     rows = np.zeros((len(triangles), 2), dtype=np.intp)
-    _kernels.setup_triangles(screen, triangles, 0, height, setup, rows)
+    _kernels.setup_triangles(screen, triangles, False, 0, height, setup, rows)
     return width, height, triangles, setup, rows
 
 

@@ -10,8 +10,10 @@ coordinates with pixel (i, j) centred at (i + 0.5, j + 0.5) and row 0 at the top
 
     x_screen = (x / w + 1) · W / 2        y_screen = (1 − y / w) · H / 2
 
-The third screen coordinate is 1/w: unlike depth, it is affine in screen space, so the
-rasterizer interpolates it exactly and recovers perspective-correct attributes from it.
+The third screen coordinate is the depth key, 1/w: unlike depth, it is affine in screen
+space, so the rasterizer interpolates it exactly and recovers perspective-correct attributes
+from it. An orthographic camera's clip w is 1 everywhere; its key is ``(3 − z_ndc) / 2``,
+affine in depth, also larger where nearer, and its attributes interpolate affinely.
 """
 
 from __future__ import annotations
@@ -56,8 +58,10 @@ def world_to_clip(points: np.ndarray, camera: Camera) -> np.ndarray:
     return points @ matrix[:, :3].T + matrix[:, 3]
 
 
-def clip_to_screen(clip: np.ndarray, width: int, height: int) -> np.ndarray:
-    """Perspective divide and viewport: clip coordinates to (x_screen, y_screen, 1/w).
+def clip_to_screen(
+    clip: np.ndarray, width: int, height: int, orthographic: bool = False
+) -> np.ndarray:
+    """Perspective divide and viewport: clip coordinates to (x_screen, y_screen, depth key).
 
     Parameters
     ----------
@@ -65,17 +69,23 @@ def clip_to_screen(clip: np.ndarray, width: int, height: int) -> np.ndarray:
         Clip coordinates with w > 0 (that is, already clipped against the near plane).
     width, height : int
         Image size in pixels.
+    orthographic : bool
+        Whether the clip coordinates come from an orthographic camera (w = 1): the key is
+        then ``(3 − z_ndc) / 2``, 2 on the near plane and 1 on the far one.
 
     Returns
     -------
     (N, 3) float64 ndarray
-        Pixel coordinates (row 0 at the top, pixel centres at half-integers) and 1/w.
+        Pixel coordinates (row 0 at the top, pixel centres at half-integers) and the depth key
+        (1/w for a perspective camera): larger is nearer.
 
     Examples
     --------
     >>> from pixelpath.raster import clip_to_screen
     >>> clip_to_screen([[0.0, 0.0, 0.0, 2.0], [-2.0, 2.0, 0.0, 2.0]], 4, 2).tolist()
     [[2.0, 1.0, 0.5], [0.0, 0.0, 0.5]]
+    >>> clip_to_screen([[0.0, 0.0, -1.0, 1.0]], 4, 2, orthographic=True).tolist()  # near plane
+    [[2.0, 1.0, 2.0]]
     """
     from pixelpath.raster import _kernels
 
@@ -83,7 +93,9 @@ def clip_to_screen(clip: np.ndarray, width: int, height: int) -> np.ndarray:
     if np.any(clip[:, 3] <= 0.0):
         raise ValueError("clip coordinates must have w > 0: clip against the near plane first")
     screen = np.empty((len(clip), 3))
-    _kernels.clip_to_screen(clip, int(width), int(height), screen)
+    if not isinstance(orthographic, bool | np.bool_):
+        raise TypeError(f"orthographic must be a bool, got {type(orthographic).__name__}")
+    _kernels.clip_to_screen(clip, int(width), int(height), bool(orthographic), screen)
     return screen
 
 

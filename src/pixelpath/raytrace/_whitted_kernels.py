@@ -109,7 +109,10 @@ class TraceScene(NamedTuple):
     lights: np.ndarray  # (L, 7) packed lights
     ambient: np.ndarray  # (3,)
     background: np.ndarray  # (3,)
-    camera: np.ndarray  # (12,) eye, right (u tan_x), up (v tan_y), forward (-w)
+    # (18,) eye; direction steps right (u tan_x) and up (v tan_y); forward (-w); origin steps
+    # right and up (half the view's width and height along u and v). A perspective camera has
+    # no origin steps (every ray starts at the eye), an orthographic one no direction steps.
+    camera: np.ndarray
 
 
 class Settings(NamedTuple):
@@ -140,7 +143,8 @@ class Work(NamedTuple):
     log: np.ndarray  # (M, LOG_FIELDS) logged rays; M = 0 logs nothing
     log_lights: np.ndarray  # (M, L, 2) per logged ray and light: light let through, blocker
     logged: np.ndarray  # (1,) intp rays logged (may exceed M: the rest were not written)
-    primary: np.ndarray  # (W × samples, 6) t, w1, w2 of each primary ray's hit, its direction
+    primary: np.ndarray  # (W × samples, 9) t, w1, w2 of each primary ray's hit, its direction
+    # and its origin
     primary_hit: np.ndarray  # (W × samples, 2) intp its kind and index (MISS when none)
     packet: np.ndarray  # (LANES, 9) rays traced together: origin, direction, t, w1, w2
     packet_kind: np.ndarray  # (LANES,) intp the kind of primitive each one hits
@@ -168,7 +172,7 @@ def new_work(scene, settings, bvh_depth, log_size, row_width):
         np.empty((log_size, LOG_FIELDS)),
         np.empty((log_size, lights, 2)),
         np.zeros(1, dtype=np.intp),
-        np.empty((primary_rays, 6)),
+        np.empty((primary_rays, 9)),
         np.empty((primary_rays, 2), dtype=np.intp),
         np.zeros((LANES, 9)),  # zeros: a short packet's unused rows are read, never used
         np.empty(LANES, dtype=np.intp),
@@ -227,14 +231,19 @@ def sample_position(pixel, sample, samples):
 
 
 @njit(inline="always")
-def primary_direction(camera, px, py, width, height):
-    """Return the direction through image point (px, py) (pixels; row 0 at the top).
+def primary_ray(camera, px, py, width, height):
+    """Return the origin and direction of the ray through image point (px, py).
 
-    Its component along the viewing axis is 1, so the t of a hit is its depth.
+    (px, py) in pixels, row 0 at the top. The origin lies on the plane through the eye
+    perpendicular to the view (the eye itself for a perspective camera) and the direction's
+    component along the viewing axis is 1, so the t of a hit is its depth.
     """
     ndc_x = 2.0 * px / width - 1.0
     ndc_y = 1.0 - 2.0 * py / height
     return (
+        camera[0] + ndc_x * camera[12] + ndc_y * camera[15],
+        camera[1] + ndc_x * camera[13] + ndc_y * camera[16],
+        camera[2] + ndc_x * camera[14] + ndc_y * camera[17],
         camera[9] + ndc_x * camera[3] + ndc_y * camera[6],
         camera[10] + ndc_x * camera[4] + ndc_y * camera[7],
         camera[11] + ndc_x * camera[5] + ndc_y * camera[8],
@@ -270,17 +279,16 @@ def primary_hits(y, x0, width, scene, settings, work):
         lanes = LANES if start < full else count - start
         for r in range(lanes):
             sx, sy = sample_position(y * settings.image_width + x, sample, samples)
-            dx, dy, dz = primary_direction(
+            ox, oy, oz, dx, dy, dz = primary_ray(
                 camera, x + sx, y + sy, settings.image_width, settings.image_height
             )
             sample += 1
             if sample == samples:
                 x, sample = x + 1, 0
             t, kinds[r], found_hit[start + r, 1] = nearest_analytic(
-                spheres, planes, plane_back, camera[0], camera[1], camera[2], dx, dy, dz, near,
-                far, cull,
+                spheres, planes, plane_back, ox, oy, oz, dx, dy, dz, near, far, cull,
             )
-            packet[r, 0], packet[r, 1], packet[r, 2] = camera[0], camera[1], camera[2]
+            packet[r, 0], packet[r, 1], packet[r, 2] = ox, oy, oz
             packet[r, 3], packet[r, 4], packet[r, 5], packet[r, 6] = dx, dy, dz, t
             packet[r, 7] = packet[r, 8] = 0.0
         if links.shape[0] > 0:
@@ -297,6 +305,7 @@ def primary_hits(y, x0, width, scene, settings, work):
             for field in range(3):
                 found[start + r, field] = packet[r, 6 + field]  # t, w1, w2
                 found[start + r, 3 + field] = packet[r, 3 + field]  # the direction
+                found[start + r, 6 + field] = packet[r, field]  # the origin
             found_hit[start + r, 0] = kinds[r]
 
 
@@ -317,7 +326,7 @@ def primary_shadows(count, scene, settings, work):
     sphere_object, plane_object = scene.sphere_object, scene.plane_object
     bounds, links, tris, tri_pass = scene.bounds, scene.links, scene.tris, scene.tri_pass
     tri_normals, tri_flat, tri_object = scene.tri_normals, scene.tri_flat, scene.tri_object
-    lights, camera = scene.lights, scene.camera
+    lights = scene.lights
     found, found_hit, result = work.primary, work.primary_hit, work.primary_shadow
     geometry = work.primary_geometry
     shadows, shadow_of, hit = work.shadows, work.shadow_of, work.lane_hit
@@ -328,8 +337,8 @@ def primary_shadows(count, scene, settings, work):
         if found_hit[ray, 1] != MISS:
             obj, px, py, pz, gx, gy, gz, nx, ny, nz, entering = hit_geometry(
                 spheres, sphere_object, planes, plane_object, tris, tri_normals, tri_flat,
-                tri_object, settings.flat, camera[0], camera[1], camera[2], found[ray, 3],
-                found[ray, 4], found[ray, 5], found[ray, 0], found_hit[ray, 0],
+                tri_object, settings.flat, found[ray, 6], found[ray, 7], found[ray, 8],
+                found[ray, 3], found[ray, 4], found[ray, 5], found[ray, 0], found_hit[ray, 0],
                 found_hit[ray, 1], found[ray, 1], found[ray, 2],
             )
             for field, value in enumerate((px, py, pz, gx, gy, gz, nx, ny, nz)):
@@ -715,7 +724,6 @@ def trace_row(y, x0, width, scene, settings, work, out):
     lights = scene.lights
     ambient = scene.ambient
     background = scene.background
-    camera = scene.camera
     tri_pass = scene.tri_pass
     rays = work.rays
     counts = work.counts
@@ -751,7 +759,8 @@ def trace_row(y, x0, width, scene, settings, work, out):
                 green += _clamp01(background[1])
                 blue += _clamp01(background[2])
                 continue
-            top = _push(rays, 0, camera[0], camera[1], camera[2], primary_found[ray, 3],
+            top = _push(rays, 0, primary_found[ray, 6], primary_found[ray, 7],
+                        primary_found[ray, 8], primary_found[ray, 3],
                         primary_found[ray, 4], primary_found[ray, 5], 1.0, 0.0, float(PRIMARY),
                         -1.0)
             r = g = b = 0.0

@@ -175,19 +175,17 @@ def pack(scene: Scene, camera: Camera, options: RenderOptions):
     triangles = scene_triangles(scene)
     spheres = [(k, o) for k, o in enumerate(scene.objects) if isinstance(o, Sphere)]
     planes = [(k, o) for k, o in enumerate(scene.objects) if isinstance(o, Plane)]
-    eye = kernel_array(camera.eye)
     plane_normals = np.array([p.normal for _, p in planes]).reshape(-1, 3)
     plane_points = np.array([p.point for _, p in planes]).reshape(-1, 3)
-    polygon_back = ~front_facing(triangles.polygon_normals, triangles.polygon_points, eye)
+    viewpoint = camera.viewpoint()
+    polygon_back = ~front_facing(triangles.polygon_normals, triangles.polygon_points, viewpoint)
     materials = scene_materials(scene)
-    u, v, w = camera.basis()
-    tan_y = np.tan(np.radians(camera.fov) / 2.0)
     world = wk.TraceScene(
         spheres=np.array([[*s.center, s.radius] for _, s in spheres]).reshape(-1, 4),
         sphere_object=np.array([k for k, _ in spheres], dtype=np.intp),
         planes=np.ascontiguousarray(np.hstack([plane_points, plane_normals])),
         plane_object=np.array([k for k, _ in planes], dtype=np.intp),
-        plane_back=~front_facing(plane_normals, plane_points, eye),
+        plane_back=~front_facing(plane_normals, plane_points, viewpoint),
         bounds=triangles.bvh.bounds,
         links=triangles.bvh.links,
         tris=triangles.bvh.corners,
@@ -201,7 +199,7 @@ def pack(scene: Scene, camera: Camera, options: RenderOptions):
         lights=pack_lights(scene.lights),
         ambient=kernel_array(scene.ambient),
         background=kernel_array(scene.background),
-        camera=np.concatenate([eye, u * tan_y * camera.aspect, v * tan_y, -w]),
+        camera=_primary_rays(camera),
     )
     settings = wk.Settings(
         max_depth=options.max_depth,
@@ -217,6 +215,38 @@ def pack(scene: Scene, camera: Camera, options: RenderOptions):
         image_height=camera.height,
     )
     return world, settings, max(triangles.bvh.depth, 1), triangles
+
+
+def _primary_rays(camera: Camera) -> np.ndarray:
+    """Return the kernels' (18,) camera: eye, direction steps, forward, origin steps.
+
+    A pixel at normalized device coordinates (x, y) gets the ray from eye + x·(origin step
+    right) + y·(origin step up) along forward + x·(direction step right) + y·(direction step
+    up). A perspective camera's rays all start at the eye and fan out by the field of view; an
+    orthographic camera's are parallel and start on the plane through the eye perpendicular to
+    the view, spread over the view's width and height.
+    """
+    u, v, w = camera.basis()
+    zero = np.zeros(3)
+    if camera.orthographic:
+        half_height = camera.view_height / 2.0
+        steps = (zero, zero, -w, u * half_height * camera.aspect, v * half_height)
+    else:
+        tan_y = np.tan(np.radians(camera.fov) / 2.0)
+        steps = (u * tan_y * camera.aspect, v * tan_y, -w, zero, zero)
+    return np.concatenate([np.asarray(camera.eye, dtype=np.float64), *steps])
+
+
+def _pixel_cone(camera: Camera) -> np.ndarray:
+    """(2,) a pixel's footprint across its ray: width at the eye, growth per unit of distance.
+
+    A perspective pixel spans the angle ``2 tan(fov / 2) / height``, so its footprint grows
+    with distance; an orthographic one is ``view_height / height`` wide everywhere. Textures
+    are filtered for this footprint (secondary rays take the hit's distance from the eye).
+    """
+    if camera.orthographic:
+        return np.array([camera.view_height / camera.height, 0.0])
+    return np.array([0.0, 2.0 * np.tan(np.radians(camera.fov) / 2.0) / camera.height])
 
 
 def spread(count: int) -> np.ndarray:

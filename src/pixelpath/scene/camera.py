@@ -1,4 +1,4 @@
-"""A look-at pinhole camera with a vertical field of view, and its OpenGL-style matrices.
+"""A look-at camera, perspective or orthographic, and its OpenGL-style matrices.
 
 Conventions (SPEC, "Precise conventions"): right-handed world; the camera sits at ``eye`` and
 looks at ``target``. Its basis is (u right, v up, w backward) with ``w = normalize(eye - target)``,
@@ -6,23 +6,32 @@ looks at ``target``. Its basis is (u right, v up, w backward) with ``w = normali
 down -Z. The projection maps the view frustum to clip space; after the perspective divide x, y
 and z lie in [-1, 1] inside the frustum, with z = -1 on the near plane and +1 on the far plane,
 and ``w_clip = -z_camera`` is the depth along the viewing axis.
+
+An orthographic camera (``projection="orthographic"``) sees a box ``view_height`` world units
+tall and ``view_height × aspect`` wide instead of a frustum: its clip w is 1 everywhere, and
+its rays are parallel. Its *viewpoint* (:meth:`Camera.viewpoint`) is then the point at infinity
+behind it, a homogeneous (x, y, z, 0), which lets every test that asks "which side is the eye
+on" (back-face culling, the BSP and octree orders, the painter's plane tests) be written once
+for both projections.
 """
 
 from __future__ import annotations
 
 import dataclasses
 import math
-from typing import Any
+from typing import Any, Literal
 
 import numpy as np
 
 from pixelpath import _validate as v
 from pixelpath.scene._record import Record
 
+PROJECTIONS = ("perspective", "orthographic")
+
 
 @dataclasses.dataclass(frozen=True, eq=False)
 class Camera(Record):
-    """Pinhole camera looking from ``eye`` at ``target``.
+    """Camera looking from ``eye`` at ``target``, perspective (pinhole) or orthographic.
 
     Parameters
     ----------
@@ -36,6 +45,13 @@ class Camera(Record):
         Image size in pixels, each in 1..16384.
     near, far : float
         Clipping distances along the viewing axis, ``0 < near < far``.
+    projection : {"perspective", "orthographic"}
+        Perspective (``fov`` sets the view) or orthographic (parallel rays; ``view_height`` sets
+        the view, ``fov`` is ignored).
+    view_height : float, optional
+        Orthographic only, and required there: the height of the view in world units (its
+        width is ``view_height × aspect``). Giving it to a perspective camera is a ValueError
+        rather than silently ignored.
 
     Examples
     --------
@@ -45,6 +61,9 @@ class Camera(Record):
     [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]
     >>> cam.aspect
     2.0
+    >>> ortho = Camera(eye=(0, 0, 5), target=(0, 0, 0), projection="orthographic", view_height=4)
+    >>> ortho.viewpoint().tolist()  # the point at infinity behind the camera
+    [0.0, 0.0, 1.0, 0.0]
     """
 
     eye: Any
@@ -55,6 +74,8 @@ class Camera(Record):
     height: int = 480
     near: float = 0.1
     far: float = 1000.0
+    projection: Literal["perspective", "orthographic"] = "perspective"
+    view_height: float | None = None
 
     def __post_init__(self) -> None:
         fov = v.real(self.fov, "fov")
@@ -73,8 +94,21 @@ class Camera(Record):
             height=v.image_side(self.height, "height"),
             near=near,
             far=far,
+            **_projection(self.projection, self.view_height),
         )
         self.basis()  # reject eye == target and an up parallel to the view now, not at render
+
+    @property
+    def orthographic(self) -> bool:
+        """Whether the projection is orthographic.
+
+        Examples
+        --------
+        >>> from pixelpath.scene import Camera
+        >>> Camera(eye=(0, 0, 1), target=(0, 0, 0)).orthographic
+        False
+        """
+        return self.projection == "orthographic"
 
     @property
     def aspect(self) -> float:
@@ -129,8 +163,30 @@ class Camera(Record):
         matrix[:3, 3] = -matrix[:3, :3] @ self.eye
         return matrix
 
+    def viewpoint(self) -> np.ndarray:
+        """Return where the camera sees from, homogeneous: ``(eye, 1)``, or ``(-d, 0)``.
+
+        For an orthographic camera the viewer is the point at infinity opposite the viewing
+        direction d. A point P lies on the viewer's side of a plane ``n · x + c = 0`` when
+        ``n · E + c · E_w`` has the sign of ``n · P + c``; the vector from P towards the viewer
+        is ``E − E_w · P``. Multiplying by ``E_w = 1`` is exact, so these formulas give the
+        perspective tests' bits unchanged.
+
+        Examples
+        --------
+        >>> from pixelpath.scene import Camera
+        >>> Camera(eye=(0, 0, 5), target=(0, 0, 0)).viewpoint().tolist()
+        [0.0, 0.0, 5.0, 1.0]
+        """
+        if self.orthographic:
+            return np.append(self.basis()[2], 0.0)
+        return np.append(self.eye, 1.0)
+
     def projection_matrix(self) -> np.ndarray:
-        """Return the (4, 4) OpenGL-style perspective matrix from camera space to clip space.
+        """Return the (4, 4) OpenGL-style matrix from camera space to clip space.
+
+        Perspective: clip w is the depth along the viewing axis. Orthographic: clip w is 1,
+        and x, y, z are affine in the camera coordinates (the view box maps to [-1, 1]³).
 
         Examples
         --------
@@ -139,10 +195,21 @@ class Camera(Record):
         >>> clip = cam.projection_matrix() @ [0, 0, -1, 1]  # a point on the near plane
         >>> (clip[:3] / clip[3]).tolist()
         [0.0, 0.0, -1.0]
+        >>> ortho = Camera(eye=(0, 0, 5), target=(0, 0, 0), near=1, far=3, width=2, height=2,
+        ...                projection="orthographic", view_height=4)
+        >>> (ortho.projection_matrix() @ [2, -2, -3, 1]).tolist()  # a corner on the far plane
+        [1.0, -1.0, 1.0, 1.0]
         """
-        focal = 1.0 / math.tan(math.radians(self.fov) / 2.0)
         near, far = self.near, self.far
         matrix = np.zeros((4, 4))
+        if self.orthographic:
+            matrix[0, 0] = 2.0 / (self.view_height * self.aspect)
+            matrix[1, 1] = 2.0 / self.view_height
+            matrix[2, 2] = 2.0 / (near - far)
+            matrix[2, 3] = (far + near) / (near - far)
+            matrix[3, 3] = 1.0
+            return matrix
+        focal = 1.0 / math.tan(math.radians(self.fov) / 2.0)
         matrix[0, 0] = focal / self.aspect
         matrix[1, 1] = focal
         matrix[2, 2] = (far + near) / (near - far)
@@ -160,3 +227,22 @@ class Camera(Record):
         32
         """
         return dataclasses.replace(self, width=width, height=height)
+
+
+def _projection(projection: Any, view_height: Any) -> dict[str, Any]:
+    """Return the validated ``projection`` and ``view_height`` of a camera."""
+    if not isinstance(projection, str):
+        raise TypeError(f"projection must be a string, got {type(projection).__name__}")
+    if projection not in PROJECTIONS:
+        raise ValueError(f"projection must be one of {PROJECTIONS}, got {projection!r}")
+    if projection == "perspective":
+        if view_height is not None:
+            raise ValueError(
+                f"view_height is for projection='orthographic' only (a perspective camera's "
+                f"view is set by fov), got view_height={view_height!r}"
+            )
+        return {"projection": projection, "view_height": None}
+    if view_height is None:
+        raise ValueError("projection='orthographic' needs view_height (world units), got None")
+    return {"projection": projection,
+            "view_height": v.real(view_height, "view_height", positive=True)}

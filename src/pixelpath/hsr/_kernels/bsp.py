@@ -495,6 +495,9 @@ def traverse(node_planes, children, first, count, items, extra_first, extra_coun
              eye, order):
     """Write the tree's polygons into ``order`` back to front as seen from ``eye``.
 
+    ``eye`` (4,) is homogeneous (``Camera.viewpoint``): w = 0 is an orthographic viewer at
+    infinity, in front of a plane when the plane's normal points its way.
+
     At each node the subtree on the far side of its plane comes first, then the node's own
     polygons (``extra_items`` of the node, then its ``items``), then the near subtree; an
     explicit stack replaces the recursion. Returns (polygons written, nodes visited).
@@ -522,7 +525,8 @@ def traverse(node_planes, children, first, count, items, extra_first, extra_coun
             continue
         visited += 1
         plane = node_planes[entry]
-        eye_side = plane[0] * eye[0] + plane[1] * eye[1] + plane[2] * eye[2] + plane[3]
+        eye_side = (plane[0] * eye[0] + plane[1] * eye[1] + plane[2] * eye[2]
+                    + plane[3] * eye[3])
         near = children[entry, 1] if eye_side > 0.0 else children[entry, 0]
         far = children[entry, 0] if eye_side > 0.0 else children[entry, 1]
         if top + 3 > stack.shape[0]:
@@ -592,6 +596,6 @@ def warmup() -> None:
     extra_items = np.arange(extra_count[0]) + built[4].shape[0]
     order = np.empty(items.shape[0] + extra_items.shape[0], dtype=np.intp)
     drawn, _ = traverse(node_planes, children, first, count, items, extra_first, extra_count,
-                        extra_items, np.array([0.0, 1.0, 5.0]), order)
+                        extra_items, np.array([0.0, 1.0, 5.0, 1.0]), order)
     draw_order(order[:drawn], np.zeros(1, dtype=np.intp), int(order[:drawn].max(initial=0)) + 1,
                np.empty(1, dtype=np.intp))

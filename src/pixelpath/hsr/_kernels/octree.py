@@ -22,7 +22,7 @@ import numpy as np
 from pixelpath._jit import njit
 from pixelpath.raster._kernels import (
     BAND_ROWS,
-    INVW_PLANE,
+    KEY_PLANE,
     SETUP_FIELDS,
     _grown,
     _grown_rows,
@@ -296,11 +296,15 @@ def _corner_clip(tree, node, corner, matrix):
 
 @njit
 def eye_octant(tree, node, eye):
-    """Return the eye's octant relative to a node's centre (bit set: eye on the upper side)."""
+    """Return the eye's octant relative to a node's centre (bit set: eye on the upper side).
+
+    ``eye`` (4,) is homogeneous (``Camera.viewpoint``): an orthographic viewer at infinity
+    (w = 0) is on the upper side of an axis its direction points up.
+    """
     half = 0.5 * tree.cells[node, SIDE]
     octant = 0
     for axis in range(3):
-        if eye[axis] >= tree.cells[node, axis] + half:
+        if eye[axis] >= eye[3] * (tree.cells[node, axis] + half):
             octant |= 1 << axis
     return octant
 
@@ -480,7 +484,7 @@ def _draw_leaf(tree, node, scan, c0, c1, r0, r1, x0, y0, inv_depth, triangle_id,
         if row_first >= row_stop:
             continue
         level[DRAWN] += 1
-        pa, pb, pc = record[INVW_PLANE], record[INVW_PLANE + 1], record[INVW_PLANE + 2]
+        pa, pb, pc = record[KEY_PLANE], record[KEY_PLANE + 1], record[KEY_PLANE + 2]
         for j in range(row_first, row_stop):
             y = j + 0.5
             span_first, span_stop = scanline_span(record, y, c0, c1)
@@ -545,7 +549,7 @@ def warmup() -> None:
     triangle_boxes(positions, screen, triangles, rows, 0, 8, bounds, triangle_rects)
     everything = np.arange(2, dtype=np.intp)
     tree = Tree(*build_tree(bounds, everything, np.full(3, -1.0), 2.0, 1e-9, 1, 2, 8))
-    eye = np.array([0.0, 0.0, 5.0])
+    eye = np.array([0.0, 0.0, 5.0, 1.0])
     leaf_order(tree, eye)
     matrix = np.eye(4)
     matrix[3, 2], matrix[3, 3] = -1.0, 5.0

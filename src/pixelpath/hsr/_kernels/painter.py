@@ -1,10 +1,12 @@
 """Compiled kernels of the painter's algorithm: the depth sort of Newell, Newell and Sancha.
 
 The polygons are the drawable triangles of the shared front end. Each has a record:
-its extents in depth (w, the distance along the viewing axis), in screen x and in screen y,
-and its plane in world space (unit normal, offset) with the side the eye is on. The list is
-sorted by farthest depth; the polygon at its head, P, is compared with every Q whose depth
-extent overlaps P's by the notes' tests, cheapest first:
+its extents in depth (w, the distance along the viewing axis; for an orthographic camera,
+whose w is 1, minus the depth key, which orders depth the same way), in screen x and in screen
+y, and its plane in world space (unit normal, offset) with the side the eye is on (for an
+orthographic camera the viewer at infinity: the eye is homogeneous, see ``Camera.viewpoint``).
+The list is sorted by farthest depth; the polygon at its head, P, is compared with every Q
+whose depth extent overlaps P's by the notes' tests, cheapest first:
 
 1. Q lies entirely nearer than P (depth extents do not overlap);
 2. the screen x extents do not overlap;
@@ -66,11 +68,16 @@ TOUCHING = 1e-9
 
 
 @njit
-def _describe(corners, attrs, screen, record):
+def _describe(corners, attrs, screen, orthographic, record):
     """Fill the extents of a triangle (its three vertex indices) into ``record``."""
     a, b, c = corners[0], corners[1], corners[2]
-    record[ZMIN] = min(attrs[a, W], attrs[b, W], attrs[c, W])
-    record[ZMAX] = max(attrs[a, W], attrs[b, W], attrs[c, W])
+    if orthographic:
+        # Clip w is 1 everywhere; the depth key is affine in depth and larger when nearer.
+        record[ZMIN] = -max(screen[a, 2], screen[b, 2], screen[c, 2])
+        record[ZMAX] = -min(screen[a, 2], screen[b, 2], screen[c, 2])
+    else:
+        record[ZMIN] = min(attrs[a, W], attrs[b, W], attrs[c, W])
+        record[ZMAX] = max(attrs[a, W], attrs[b, W], attrs[c, W])
     record[XMIN] = min(screen[a, 0], screen[b, 0], screen[c, 0])
     record[XMAX] = max(screen[a, 0], screen[b, 0], screen[c, 0])
     record[YMIN] = min(screen[a, 1], screen[b, 1], screen[c, 1])
@@ -160,7 +167,8 @@ def triangle_planes(vertices, triangles, source, eye, planes):
     """Fill ``planes`` (T, PLANE_COLUMNS) with the plane of triangle ``source[t]``.
 
     Columns: unit normal, offset (normal · x + offset = 0) and the eye's signed distance
-    (the caller turns it into a sign); zeros for a triangle of zero area.
+    (the caller turns it into a sign); zeros for a triangle of zero area. ``eye`` (4,) is
+    homogeneous (``Camera.viewpoint``): w = 0 is the orthographic viewer at infinity.
     """
     for t in range(source.shape[0]):
         a, b, c = triangles[source[t], 0], triangles[source[t], 1], triangles[source[t], 2]
@@ -173,12 +181,12 @@ def triangle_planes(vertices, triangles, source, eye, planes):
             nx, ny, nz = nx / length, ny / length, nz / length
         offset = -(nx * vertices[a, 0] + ny * vertices[a, 1] + nz * vertices[a, 2])
         planes[t, 0], planes[t, 1], planes[t, 2], planes[t, 3] = nx, ny, nz, offset
-        planes[t, 4] = nx * eye[0] + ny * eye[1] + nz * eye[2] + offset
+        planes[t, 4] = nx * eye[0] + ny * eye[1] + nz * eye[2] + offset * eye[3]
 
 
 @njit
-def depth_sort(attrs, screen, count, triangles, planes, width, height, eps, max_polygons,
-               counts):
+def depth_sort(attrs, screen, count, triangles, planes, width, height, orthographic, eps,
+               max_polygons, counts):
     """Order triangles back to front with the depth sort, splitting where it must.
 
     Parameters
@@ -187,13 +195,15 @@ def depth_sort(attrs, screen, count, triangles, planes, width, height, eps, max_
         Vertex rows (clip x, y, z, w; world position; any attributes to interpolate); the
         first ``count`` rows are in use, the rest is room for split vertices.
     screen : (V, 3) float64
-        Screen x, y and 1/w of the vertices (rows as ``attrs``).
+        Screen x, y and depth key of the vertices (rows as ``attrs``).
     triangles : (n, 3) intp
         The triangles to order (vertex indices).
     planes : (n, PLANE_COLUMNS) float64
         Their planes in world space: unit normal, offset, sign of the eye's side (+1 or -1).
     width, height : int
         Image size, to map split vertices to the screen.
+    orthographic : bool
+        The camera's projection (how split vertices map, how depth is read).
     eps : float
         Distance (world units) within which a point counts as on a plane.
     max_polygons : int
@@ -219,7 +229,7 @@ def depth_sort(attrs, screen, count, triangles, planes, width, height, eps, max_
     root = np.empty(records.shape[0], dtype=np.intp)
     farthest = np.empty(n)
     for t in range(n):
-        _describe(triangles[t], attrs, screen, records[t])
+        _describe(triangles[t], attrs, screen, orthographic, records[t])
         farthest[t] = -records[t, ZMAX]
     by_depth = np.argsort(farthest, kind="mergesort")
     sorted_records = np.empty((n, RECORD))
@@ -348,13 +358,13 @@ def depth_sort(attrs, screen, count, triangles, planes, width, height, eps, max_
                 attrs, count, corners[cut], distances, eps, pieces, cut_edges, cut_params
             )
             for v in range(before, count):
-                screen_point(attrs, v, width, height, screen, v)
+                screen_point(attrs, v, width, height, orthographic, screen, v)
             for piece in range(made):
                 new = polygons
                 polygons += 1
                 for k in range(3):
                     corners[new, k] = pieces[piece, k]
-                _describe(corners[new], attrs, screen, records[new])
+                _describe(corners[new], attrs, screen, orthographic, records[new])
                 for column in range(PLANE_COLUMNS):
                     records[new, NORMAL + column] = records[cut, NORMAL + column]
                 root[new] = root[cut]
@@ -462,10 +472,10 @@ def warmup() -> None:
         attrs[v, POSITION], attrs[v, POSITION + 1], attrs[v, POSITION + 2] = x, y, z
     screen = np.zeros((8, 3))
     for v in range(6):
-        screen_point(attrs, v, 8, 8, screen, v)
+        screen_point(attrs, v, 8, 8, False, screen, v)
     triangles = np.array([[0, 1, 2], [3, 4, 5]], dtype=np.intp)
     planes = np.empty((2, PLANE_COLUMNS))
-    triangle_planes(np.array(points), triangles, np.arange(2), np.zeros(3), planes)
+    triangle_planes(np.array(points), triangles, np.arange(2), np.zeros(4), planes)
     planes[:, 4] = np.where(planes[:, 4] < 0, -1.0, 1.0)
-    depth_sort(attrs, screen, 6, triangles, planes, 8, 8, 1e-9, 64,
+    depth_sort(attrs, screen, 6, triangles, planes, 8, 8, False, 1e-9, 64,
                np.zeros(COUNTS, dtype=np.int64))

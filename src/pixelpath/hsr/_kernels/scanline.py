@@ -36,7 +36,7 @@ import numpy as np
 from pixelpath._jit import njit
 from pixelpath.hsr.scanline import LINE_COUNTS
 from pixelpath.raster._kernels import (
-    INVW_PLANE,
+    KEY_PLANE,
     SLOPES,
     SORTED_XY,
     clearly_nearer,
@@ -285,8 +285,8 @@ def _walk(setup, band_items, ints, ael, ael_x, active, y, col_first, col_stop, d
             t = band_items[owner]
             where[owner] = inside
             held[inside, 0], held[inside, 1] = owner, t
-            planes[inside, 0] = setup[t, INVW_PLANE]
-            planes[inside, 1] = setup[t, INVW_PLANE + 1] * y + setup[t, INVW_PLANE + 2]
+            planes[inside, 0] = setup[t, KEY_PLANE]
+            planes[inside, 1] = setup[t, KEY_PLANE + 1] * y + setup[t, KEY_PLANE + 2]
             inside += 1
         else:
             inside -= 1

@@ -24,7 +24,7 @@ from __future__ import annotations
 import numpy as np
 
 from pixelpath._jit import njit
-from pixelpath.raster._kernels import INVW_PLANE, clearly_nearer, scanline_span, wins_depth_test
+from pixelpath.raster._kernels import KEY_PLANE, clearly_nearer, scanline_span, wins_depth_test
 
 # Classes of a triangle against an area.
 DISJOINT, INTERSECTING, CONTAINED, SURROUNDING = 0, 1, 2, 3
@@ -145,7 +145,7 @@ def _decide_area(area, lo, hi, candidates, setup, boxes, x0, y0, inv_depth, tria
 @njit(inline="always")
 def _inv_w(record, x, y):
     """1/w of a set-up triangle's plane at (x, y), computed as the z-buffer computes it."""
-    return record[INVW_PLANE] * x + (record[INVW_PLANE + 1] * y + record[INVW_PLANE + 2])
+    return record[KEY_PLANE] * x + (record[KEY_PLANE + 1] * y + record[KEY_PLANE + 2])
 
 
 @njit
@@ -189,8 +189,8 @@ def _in_front(front, area, lo, hi, candidates, kept, setup):
 @njit(inline="always")
 def _size(record, reach_x, reach_y):
     """Size of the terms of a plane's 1/w up to |x| = reach_x, |y| = reach_y (rounding scale)."""
-    return (abs(record[INVW_PLANE]) * reach_x + abs(record[INVW_PLANE + 1]) * reach_y
-            + abs(record[INVW_PLANE + 2]))
+    return (abs(record[KEY_PLANE]) * reach_x + abs(record[KEY_PLANE + 1]) * reach_y
+            + abs(record[KEY_PLANE + 2]))
 
 
 @njit
