@@ -101,6 +101,9 @@ class Frame:
         What the pipeline's stages took in and let through.
     report : Report or None
         What the method did, when asked to explain itself.
+    normal : (h, w, 3) float32 or None
+        Unit shading normal of the visible surface, 0 where nothing was drawn; None for the
+        line styles, which draw no surfaces.
     """
 
     rgb: np.ndarray
@@ -108,6 +111,7 @@ class Frame:
     object_id: np.ndarray
     stats: dict[str, int] = dataclasses.field(default_factory=dict)
     report: Any = None
+    normal: np.ndarray | None = None
 
 
 def render(
@@ -168,8 +172,9 @@ def render(
     Returns
     -------
     Image or (Image, Report)
-        RGB in [0, 1] (float32), ``.depth``, ``.object_id``, and ``.stats``: how many
-        triangles were culled, clipped and drawn; with ``explain=True`` also the report.
+        RGB in [0, 1] (float32), ``.depth``, ``.object_id``, ``.alpha``, ``.normal``, and
+        ``.stats``: how many triangles were culled, clipped and drawn; with ``explain=True``
+        also the report.
 
     Raises
     ------
@@ -213,9 +218,13 @@ def render(
         )
     view = _view(scene.camera, region, factor)
     frame = _draw(module, scene, view, style, options)
-    image = Image._from_buffers(frame.rgb, frame.depth, frame.object_id, frame.stats)
     if factor > 1:
-        image = _downsample(frame, factor)
+        image = _downsample(frame, factor, scene)
+    else:
+        image = Image._from_buffers(
+            frame.rgb, frame.depth, frame.object_id, frame.stats, frame.normal,
+            scene.background, scene.encoding,
+        )
     if not explain:
         return image
     report = frame.report
@@ -309,20 +318,35 @@ def _region(region: Any, camera: Camera) -> tuple[int, int, int, int]:
     return x0, y0, x1, y1
 
 
-def _downsample(frame: Frame, factor: int) -> Image:
-    """Average each factor × factor block of samples; keep the nearest sample's depth and id."""
+def _downsample(frame: Frame, factor: int, scene: Scene) -> Image:
+    """Average each factor × factor block of samples; keep the nearest sample's depth and id.
+
+    Alpha is the share of a block's samples that drew a surface; the normal is the nearest
+    sample's, like the depth and id.
+    """
     height, width = frame.rgb.shape[0] // factor, frame.rgb.shape[1] // factor
+
+    def per_pixel(buffer: np.ndarray) -> np.ndarray:
+        """(height, width, factor², ...) the samples of each pixel on one axis."""
+        blocks = buffer.reshape(height, factor, width, factor, *buffer.shape[2:])
+        blocks = blocks.swapaxes(1, 2)
+        return blocks.reshape(height, width, factor * factor, *buffer.shape[2:])
+
     blocks = frame.rgb.reshape(height, factor, width, factor, 3)
     rgb = blocks.mean(axis=(1, 3), dtype=np.float64)  # sums in float64, no float64 copy
-    depth = frame.depth.reshape(height, factor, width, factor).transpose(0, 2, 1, 3)
-    depth = depth.reshape(height, width, factor * factor)
-    nearest = np.argmin(depth, axis=2)
-    ids = frame.object_id.reshape(height, factor, width, factor).transpose(0, 2, 1, 3)
-    ids = ids.reshape(height, width, factor * factor)
-    pick = nearest[..., None]
+    depth = per_pixel(frame.depth)
+    ids = per_pixel(frame.object_id)
+    pick = np.argmin(depth, axis=2)[..., None]
+    normal = None
+    if frame.normal is not None:
+        normal = np.take_along_axis(per_pixel(frame.normal), pick[..., None], axis=2)[:, :, 0]
     return Image(
         rgb,
         np.take_along_axis(depth, pick, axis=2)[..., 0],
         np.take_along_axis(ids, pick, axis=2)[..., 0],
         frame.stats,
+        alpha=np.mean(ids >= 0, axis=2),
+        normal=normal,
+        background=scene.background,
+        encoding=scene.encoding,
     )

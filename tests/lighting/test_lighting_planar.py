@@ -45,7 +45,8 @@ def test_planar_equals_scalar_bit_for_bit(blinn, shininess):
     material = np.array([0.9, 0.5, 0.2, 0.1, 0.6, 0.4, shininess, 0.0])
     ambient = np.array([0.2, 0.3, 0.1])
     out = np.full((3, count + 3), -7.0)
-    shade_planar(count, points, normals, EYE, material, lights, ambient, blinn, out,
+    albedo = np.repeat(material[:3, None], count + 3, axis=1)
+    shade_planar(count, points, normals, albedo, EYE, material, lights, ambient, blinn, out,
                  np.empty((5, count + 3)))
     expected = scalar_reference(points[:, :count], normals[:, :count], material, lights,
                                 ambient, blinn)
@@ -62,6 +63,19 @@ def test_planar_hand_computed_point():
     material = np.array([1.0, 0.5, 0.25, 0.1, 0.5, 0.4, 2.0, 0.0])
     lights = np.array([[POINT_LIGHT, 0.0, 3.0, 4.0, 1.0, 1.0, 1.0]])
     out = np.empty((3, 1))
-    shade_planar(1, points, normals, np.array([0.0, 0.0, 2.0]), material, lights,
-                 np.full(3, 0.5), False, out, np.empty((5, 1)))
+    shade_planar(1, points, normals, material[:3, None].copy(), np.array([0.0, 0.0, 2.0]),
+                 material, lights, np.full(3, 0.5), False, out, np.empty((5, 1)))
     np.testing.assert_allclose(out[:, 0], [0.706, 0.481, 0.3685], rtol=1e-12)
+
+
+def test_planar_albedo_tints_ambient_and_diffuse_not_the_highlight():
+    # The same point as above with the object colour (0.5, 1, 0) given per point instead of
+    # the material's: ambient 0.05 C, diffuse 0.4 C, specular 0.256 untouched.
+    points = np.zeros((3, 1))
+    normals = np.array([[0.0], [0.0], [1.0]])
+    material = np.array([1.0, 0.5, 0.25, 0.1, 0.5, 0.4, 2.0, 0.0])
+    lights = np.array([[POINT_LIGHT, 0.0, 3.0, 4.0, 1.0, 1.0, 1.0]])
+    out = np.empty((3, 1))
+    shade_planar(1, points, normals, np.array([[0.5], [1.0], [0.0]]), np.array([0.0, 0.0, 2.0]),
+                 material, lights, np.full(3, 0.5), False, out, np.empty((5, 1)))
+    np.testing.assert_allclose(out[:, 0], [0.45 * 0.5 + 0.256, 0.45 + 0.256, 0.256], rtol=1e-12)

@@ -66,6 +66,8 @@ class BSPTree:
         Object index of each vertex.
     cut_from : int
         Index of the first vertex made by cutting.
+    source_vertex : (cut_from,) intp
+        The scene geometry's vertex each of the first ``cut_from`` vertices is.
     blend_corners, blend_weights : (V - cut_from, 3)
         Each cut vertex as a blend of the corners of the triangle it was cut from.
     fragments : (F, 3) intp
@@ -106,6 +108,7 @@ class BSPTree:
     normals: np.ndarray
     vertex_object: np.ndarray
     cut_from: int
+    source_vertex: np.ndarray
     blend_corners: np.ndarray
     blend_weights: np.ndarray
     fragments: np.ndarray
@@ -357,6 +360,7 @@ def _build(scene: Scene) -> BSPTree:
         normals=np.ascontiguousarray(rows[:count, 3:]),
         vertex_object=np.concatenate([vertex_object, cut_object]),
         cut_from=len(used),
+        source_vertex=used,
         blend_corners=blend_corners,
         blend_weights=blend_weights,
         fragments=fragments,
@@ -448,6 +452,7 @@ def _assemble(tree: BSPTree, geometry) -> _Drawing:
 
     polygon_start = np.searchsorted(geometry.polygon_object, np.arange(len(geometry.meshes)))
     vertices, normals, vertex_object = [tree.vertices], [tree.normals], [tree.vertex_object]
+    sources = [tree.source_vertex, np.full(len(tree.blend_corners), -1)]
     triangles = [tree.fragments]
     polygons = [polygon_start[tree.fragment_object] + tree.fragment_polygon]
     cut_rows = [tree.cut_from + np.arange(len(tree.blend_corners))]
@@ -477,6 +482,7 @@ def _assemble(tree: BSPTree, geometry) -> _Drawing:
         vertices.append(rows[:count, :3])
         normals.append(rows[:count, 3:])
         vertex_object += [grid_object, grid_object[grid_corners[:, 0]]]
+        sources += [used, np.full(len(grid_corners), -1)]
         triangles.append(pieces + offset)
         polygons.append(geometry.triangle_polygon[grid[piece_source]])
         cut_rows.append(offset + len(used) + np.arange(len(grid_corners)))
@@ -500,8 +506,27 @@ def _assemble(tree: BSPTree, geometry) -> _Drawing:
         vertex_object=np.concatenate(vertex_object).astype(np.intp),
         materials=geometry.materials,
         meshes=geometry.meshes,
+        surfaces=geometry.surfaces,
+        uv=_carried(geometry.uv, sources, blends),
+        colors=_carried(geometry.colors, sources, blends),
+        double_sided=geometry.double_sided,
     )
     return _Drawing(drawn, blends, extra_first, extra_count, extra_items)
+
+
+def _carried(values: np.ndarray, sources: list[np.ndarray], blends) -> np.ndarray:
+    """Carry a per-vertex attribute of the scene geometry over to the fragments' vertices.
+
+    Whole vertices take their source's value (``sources``, -1 for cut ones); cut vertices the
+    blend of the corners they were cut between, as Gouraud colours do (see pipeline.prepare).
+    """
+    if len(values) == 0:
+        return values
+    carried = values[np.maximum(np.concatenate(sources), 0)]
+    if blends is not None:
+        rows, corners, weights = blends
+        carried[rows] = np.einsum("nk,nkc->nc", weights, carried[corners])
+    return np.ascontiguousarray(carried)
 
 
 def _node_planes_index(tree: BSPTree) -> np.ndarray:

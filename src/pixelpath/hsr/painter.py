@@ -181,15 +181,24 @@ def _sortable(prepared: pipeline.Prepared, planes: np.ndarray, eps: float) -> np
     return np.isfinite(area2) & (area2 != 0) & np.isfinite(planes[:, 3])
 
 
+# The per-vertex arrays of a prepared frame, in the order of a vertex row: clip coordinates
+# first (the sort reads them there), then the world position and the attributes.
+_VERTEX_ARRAYS = ("clip", "positions", "normals", "colors", "uv", "vertex_colors")
+
+
+def _cut_arrays(prepared: pipeline.Prepared) -> list[str]:
+    """Return the per-vertex arrays the frame has rows of (optional ones may have none)."""
+    return [name for name in _VERTEX_ARRAYS
+            if len(getattr(prepared, name)) == len(prepared.clip)]
+
+
 def _vertex_rows(prepared: pipeline.Prepared, sorted_count: int) -> tuple[np.ndarray, int]:
     """Return the vertex rows the sort cuts, and how many are in use.
 
     A row holds a vertex's clip coordinates, world position and attributes; room for split
     vertices follows the rows in use.
     """
-    columns = [prepared.clip, prepared.positions, prepared.normals]
-    if len(prepared.colors) == len(prepared.clip):
-        columns.append(prepared.colors)
+    columns = [getattr(prepared, name) for name in _cut_arrays(prepared)]
     count = len(prepared.clip)
     width = sum(block.shape[1] for block in columns)
     attrs = np.empty((count + 64 + sorted_count // 8, width))
@@ -213,20 +222,22 @@ def _with_pieces(prepared, view, attrs, screen, pieces, origin) -> pipeline.Prep
     rows = np.empty((len(pieces), 2), dtype=np.intp)
     _kernels.setup_triangles(screen, np.ascontiguousarray(pieces), view.camera.orthographic,
                              view.y0, view.y0 + view.height, setup, rows)
-    colors = prepared.colors
-    if len(colors) == old:
-        colors = np.concatenate([colors, new[:, 10:16]])
+    extended = {}
+    start = 0
+    for name in _cut_arrays(prepared):
+        block = getattr(prepared, name)
+        width = block.shape[1]
+        extended[name] = np.concatenate([block, new[:, start : start + width]])
+        start += width
     return dataclasses.replace(
         prepared,
-        clip=np.concatenate([prepared.clip, new[:, 0:4]]),
-        positions=np.concatenate([prepared.positions, new[:, 4:7]]),
-        normals=np.concatenate([prepared.normals, new[:, 7:10]]),
-        colors=colors,
+        **extended,
         screen=screen,
         triangles=triangles,
         source=np.concatenate([prepared.source, prepared.source[origin]]),
         info=np.concatenate([prepared.info, prepared.info[origin]]),
         flat_colors=np.concatenate([prepared.flat_colors, prepared.flat_colors[origin]]),
+        face_normals=np.concatenate([prepared.face_normals, prepared.face_normals[origin]]),
         setup=np.concatenate([prepared.setup, setup]),
         rows=np.concatenate([prepared.rows, rows]),
     )

@@ -92,8 +92,12 @@ class Prepared:
         Clip coordinates of the drawable vertices.
     positions, normals : (V, 3) float64
         World positions and unit normals of the drawable vertices.
-    colors : (V, 6) float64
-        Gouraud intensities lit from the front, then from the back; (0, 6) in other modes.
+    uv, vertex_colors : (V, 2), (V, 4) float64
+        Texture coordinates and vertex colours of the drawable vertices (no rows when no
+        object has them; see :class:`~pixelpath.raster.tessellate.SceneGeometry`).
+    colors : (V, 6) or (V, 12) float64
+        Gouraud light at the vertices from the front, then from the back (see
+        :func:`_vertex_colors`); (0, 6) in other modes.
     screen : (V, 3) float64
         (x, y) in pixels (row 0 at the top, pixel centres at half-integers) and 1/w.
     triangles : (T, 3) intp
@@ -103,8 +107,10 @@ class Prepared:
         after frustum clipping).
     info : (T, 2) intp
         Object index and flip flag (1 when the face is seen from behind) of each triangle.
-    flat_colors : (T, 3) float64
-        Flat-shading intensity of each triangle's polygon (zeros in the other modes).
+    flat_colors : (T, 3) or (T, 6) float64
+        Flat-shading light of each triangle's polygon (zeros in the other modes).
+    face_normals : (T, 3) float64
+        Unit normal of each triangle's polygon, turned towards the viewer.
     setup : (T, SETUP_FIELDS) float64
         Scan-conversion records (:mod:`pixelpath.raster._kernels`).
     rows : (T, 2) intp
@@ -120,12 +126,15 @@ class Prepared:
     clip: np.ndarray
     positions: np.ndarray
     normals: np.ndarray
+    uv: np.ndarray
+    vertex_colors: np.ndarray
     colors: np.ndarray
     screen: np.ndarray
     triangles: np.ndarray
     source: np.ndarray
     info: np.ndarray
     flat_colors: np.ndarray
+    face_normals: np.ndarray
     setup: np.ndarray
     rows: np.ndarray
     lighting: Lighting
@@ -188,7 +197,8 @@ def prepare(
     )
     geometry = geometry if geometry is not None else scene_geometry(scene, camera)
     front = front_facing(geometry.polygon_normals, geometry.polygon_points, camera.viewpoint())
-    keep = front[geometry.triangle_polygon]
+    # Double-sided materials keep their back faces (drawn lit from behind, as with no culling).
+    keep = (front | geometry.double_sided[geometry.polygon_object])[geometry.triangle_polygon]
     if not options.backface_cull:
         keep = np.ones_like(keep)
     advance(1)
@@ -206,10 +216,18 @@ def _clip_to_view(geometry, camera, keep, front, mode, lighting, blends) -> dict
     from pixelpath.raster.transform import world_to_clip
 
     clip = world_to_clip(geometry.vertices, camera)
-    columns = (clip, geometry.vertices, geometry.normals)
+    # Frustum clipping interpolates every per-vertex column at the vertices it makes; the
+    # optional ones (no rows when unused) are left out of it and stay empty.
+    named = {"clip": clip, "positions": geometry.vertices, "normals": geometry.normals,
+             "uv": geometry.uv, "vertex_colors": geometry.colors}
     if mode == _kernels.GOURAUD:
         back_drawn = bool(np.any(keep & ~front[geometry.triangle_polygon]))
-        columns += (_vertex_colors(geometry, lighting, back_drawn, blends),)
+        named["colors"] = _vertex_colors(geometry, lighting, back_drawn, blends)
+    else:
+        named["colors"] = np.empty((0, 6))
+    required = ("clip", "positions", "normals")
+    names = [name for name, column in named.items() if name in required or len(column)]
+    columns = tuple(named[name] for name in names)
     inside, crossing = classify(clip, geometry.triangles, keep)
     new_columns, new_triangles, new_source = clip_crossing(columns, geometry.triangles, crossing)
     if len(new_triangles):
@@ -220,20 +238,19 @@ def _clip_to_view(geometry, camera, keep, front, mode, lighting, blends) -> dict
     info = np.empty((len(polygon), 2), dtype=np.intp)
     info[:, 0] = geometry.polygon_object[polygon]
     info[:, 1] = ~front[polygon]
+    named.update(zip(names, columns, strict=True))
     culled = len(keep) - int(np.count_nonzero(keep))
     outside = len(keep) - culled - len(inside) - len(crossing)
     counts = (len(keep), culled, outside, len(inside), len(crossing), len(new_triangles),
               len(triangles))
     return {
         "geometry": geometry,
-        "clip": columns[0],
-        "positions": columns[1],
-        "normals": columns[2],
-        "colors": columns[3] if len(columns) > 3 else np.empty((0, 6)),
+        **named,
         "triangles": triangles,
         "source": source,
         "info": info,
         "flat_colors": _flat_colors(geometry, polygon, ~front, mode, lighting),
+        "face_normals": np.where(info[:, 1:], -1.0, 1.0) * geometry.polygon_normals[polygon],
         "lighting": lighting,
         "mode": mode,
         "stats": dict(zip(STAT_NAMES, counts, strict=True)),
@@ -325,7 +342,9 @@ def surfaces(prepared: Prepared, scene: Scene):
     lighting = prepared.lighting
     return _kernels.Surfaces(
         prepared.setup, prepared.triangles, prepared.positions, prepared.normals,
-        prepared.colors, prepared.info, prepared.flat_colors, prepared.geometry.materials,
+        prepared.colors, prepared.info, prepared.flat_colors, prepared.face_normals,
+        prepared.uv, prepared.vertex_colors, prepared.geometry.surfaces,
+        prepared.geometry.materials,
         lighting.lights, lighting.ambient, lighting.eye, kernel_array(scene.background),
         prepared.mode, bool(lighting.blinn),
     )
@@ -340,6 +359,7 @@ def output_buffers(view: View):
         _pool.empty((*shape, 3), np.float32),
         _pool.empty(shape, np.float32),
         _pool.empty(shape, np.int32),
+        _pool.empty((*shape, 3), np.float32),
     )
 
 
@@ -391,23 +411,23 @@ def shade(
         in_runs(shade_run, order[start:stop])
         options.progress(SHADE_SLICES // len(runs))
     orthographic_depth(view, visibility, out.depth)
-    return Frame(out.rgb, out.depth, out.object_id, prepared.stats, report)
+    return Frame(out.rgb, out.depth, out.object_id, prepared.stats, report, out.normal)
 
 
 def _vertex_colors(geometry, lighting: Lighting, two_sided: bool, blends) -> np.ndarray:
-    """(V, 6) Gouraud intensities at the vertices, lit from the front, then from the back.
+    """Gouraud light at the vertices, lit from the front, then from the back.
 
-    The back half is only computed when a face seen from behind is drawn (culling off).
-    Cut vertices (``blends``, see :func:`prepare`) take the blend of their corners' colours.
+    (V, 6) intensities, or (V, 12) when some object has a coloured surface (see
+    :func:`_light`). The back half is only computed when a face seen from behind is drawn
+    (culling off, or a double-sided material). Cut vertices (``blends``, see :func:`prepare`)
+    take the blend of their corners' colours.
     """
-    from pixelpath.raster.shading import shade_points
-
-    colors = np.zeros((len(geometry.vertices), 6))
-    for start, flipped in ((0, False), (3, True))[: 2 if two_sided else 1]:
-        colors[:, start : start + 3] = shade_points(
-            geometry.vertices, geometry.normals, np.full(len(geometry.vertices), flipped),
-            geometry.vertex_object, geometry.materials, lighting.lights, lighting.ambient,
-            lighting.eye, blinn=lighting.blinn,
+    half = _light_width(geometry)
+    colors = np.zeros((len(geometry.vertices), 2 * half))
+    for start, flipped in ((0, False), (half, True))[: 2 if two_sided else 1]:
+        colors[:, start : start + half] = _light(
+            geometry, geometry.vertices, geometry.normals, np.full(len(geometry.vertices), flipped),
+            geometry.vertex_object, lighting,
         )
     if blends is not None:
         rows, corners, weights = blends
@@ -416,16 +436,50 @@ def _vertex_colors(geometry, lighting: Lighting, two_sided: bool, blends) -> np.
 
 
 def _flat_colors(geometry, polygon, back, mode, lighting: Lighting) -> np.ndarray:
-    """(T, 3) intensity of each drawn triangle's polygon at its centroid (flat shading only)."""
+    """(T, 3|6) light of each drawn triangle's polygon at its centroid (flat shading only)."""
     from pixelpath.raster import _kernels
-    from pixelpath.raster.shading import shade_points
 
     if mode != _kernels.FLAT or len(polygon) == 0:
         return np.zeros((len(polygon), 3))
     used, inverse = np.unique(polygon, return_inverse=True)
-    colors = shade_points(
-        geometry.polygon_centroids[used], geometry.polygon_normals[used], back[used],
-        geometry.polygon_object[used], geometry.materials, lighting.lights, lighting.ambient,
-        lighting.eye, blinn=lighting.blinn,
+    light = _light(
+        geometry, geometry.polygon_centroids[used], geometry.polygon_normals[used], back[used],
+        geometry.polygon_object[used], lighting,
     )
-    return colors[inverse]
+    return light[inverse]
+
+
+def _light_width(geometry) -> int:
+    """Return the width of :func:`_light`'s rows: 6 with coloured surfaces in the scene, else 3."""
+    return 6 if np.any(geometry.coloured) else 3
+
+
+def _light(geometry, points, normals, flip, owner, lighting: Lighting) -> np.ndarray:
+    """Return the illumination model at points with unit normals, for flat and Gouraud shading.
+
+    Returns (N, 3) intensities when no object has a coloured surface. Otherwise (N, 6): for a
+    point of a plain object, its intensity and three zeros; for a point of a coloured object
+    (texture or vertex colours), the light its surface colour multiplies (ambient and diffuse,
+    computed with the colour white and no highlight), then the highlight (computed with the
+    colour black), so that the colour looked up at each pixel tints the first and not the
+    second, as Phong shading does.
+    """
+    from pixelpath.raster.shading import shade_points
+
+    def shaded(rows, materials):
+        return shade_points(
+            points[rows], normals[rows], flip[rows], owner[rows], materials, lighting.lights,
+            lighting.ambient, lighting.eye, blinn=lighting.blinn,
+        )
+
+    if _light_width(geometry) == 3:
+        return shaded(slice(None), geometry.materials)
+    coloured = geometry.coloured[owner]
+    light = np.zeros((len(points), 6))
+    light[~coloured, :3] = shaded(~coloured, geometry.materials)
+    tinted, highlight = geometry.materials.copy(), geometry.materials.copy()
+    tinted[:, :3], tinted[:, 5] = 1.0, 0.0
+    highlight[:, :3] = 0.0
+    light[coloured, :3] = shaded(coloured, tinted)
+    light[coloured, 3:] = shaded(coloured, highlight)
+    return light

@@ -78,7 +78,7 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
         options.progress(pipeline.SHADE_SLICES // len(runs))
     pipeline.orthographic_depth(view, visibility, out.depth)
     report = _report(prepared, view, visibility) if options.explain else None
-    return Frame(out.rgb, out.depth, out.object_id, prepared.stats, report)
+    return Frame(out.rgb, out.depth, out.object_id, prepared.stats, report, out.normal)
 
 
 def _report(prepared: pipeline.Prepared, view: View, visibility: pipeline.Visibility):

@@ -44,21 +44,38 @@ def read_image(path: str | os.PathLike) -> np.ndarray:
         return np.asarray(img.convert("RGB"), dtype=np.float32) / 255.0
 
 
-def to_uint8(rgb: np.ndarray, gamma: float | None = None) -> np.ndarray:
+def to_uint8(rgb: np.ndarray, gamma: float | str | None = None) -> np.ndarray:
     """Map floats in [0, 1] to 0..255 (clamped, rounded), optionally gamma-encoding first.
 
     ``gamma=2.2`` raises each value to ``1/2.2`` before quantizing (display encoding);
-    ``None`` keeps the linear mapping of the notes (value × 255).
+    ``"srgb"`` applies the sRGB curve (what model files' textures were encoded with);
+    ``None`` or ``"linear"`` keeps the linear mapping of the notes (value × 255).
+
+    Examples
+    --------
+    >>> from pixelpath.io.images import to_uint8
+    >>> to_uint8([0.0, 0.2158, 1.0], "srgb").tolist(), to_uint8([0.5]).tolist()
+    ([0, 128, 255], [128])
     """
     values = np.clip(np.asarray(rgb, dtype=np.float64), 0.0, 1.0)
-    if gamma is not None:
-        if not gamma > 0:
-            raise ValueError(f"gamma must be positive, got {gamma!r}")
+    if gamma == "srgb":
+        from pixelpath.scene.texture import linear_to_srgb
+
+        values = linear_to_srgb(values)
+    elif gamma is not None and gamma != "linear":
+        if isinstance(gamma, str) or not gamma > 0:
+            raise ValueError(f"gamma must be a positive number, 'srgb' or 'linear', got {gamma!r}")
         values = values ** (1.0 / gamma)
     return np.rint(values * 255.0).astype(np.uint8)
 
 
-def write_image(path: str | os.PathLike, rgb: np.ndarray, *, gamma: float | None = None) -> None:
+def write_image(
+    path: str | os.PathLike,
+    rgb: np.ndarray,
+    *,
+    gamma: float | str | None = None,
+    alpha: np.ndarray | None = None,
+) -> None:
     """Write an ``(H, W, 3)`` float image in [0, 1] to ``path`` atomically.
 
     The format follows the extension (PNG, JPEG, BMP, TIFF, ...). The file is written to a
@@ -71,8 +88,10 @@ def write_image(path: str | os.PathLike, rgb: np.ndarray, *, gamma: float | None
         Destination; its directory must exist.
     rgb : (H, W, 3) array_like
         Linear intensities; values outside [0, 1] are clamped.
-    gamma : float, optional
-        Display gamma to encode with (for example 2.2); default none.
+    gamma : float or {"srgb", "linear"}, optional
+        Display encoding (for example 2.2, or the sRGB curve); default none (linear).
+    alpha : (H, W) array_like, optional
+        Coverage in [0, 1], written as a fourth channel (RGBA; PNG, TIFF, WebP).
 
     Examples
     --------
@@ -83,7 +102,7 @@ def write_image(path: str | os.PathLike, rgb: np.ndarray, *, gamma: float | None
     path = Path(path)
     if not path.parent.is_dir():
         raise FileNotFoundError(f"output directory does not exist: {path.parent}")
-    write_bytes(path, encode_image(rgb, path.suffix, gamma=gamma))
+    write_bytes(path, encode_image(rgb, path.suffix, gamma=gamma, alpha=alpha))
 
 
 def image_format(suffix: str) -> str:
@@ -103,7 +122,13 @@ def image_format(suffix: str) -> str:
     return fmt
 
 
-def encode_image(rgb: np.ndarray, suffix: str, *, gamma: float | None = None) -> bytes:
+def encode_image(
+    rgb: np.ndarray,
+    suffix: str,
+    *,
+    gamma: float | str | None = None,
+    alpha: np.ndarray | None = None,
+) -> bytes:
     """Return the bytes of the image file ``write_image`` writes for extension ``suffix``.
 
     Examples
@@ -119,8 +144,18 @@ def encode_image(rgb: np.ndarray, suffix: str, *, gamma: float | None = None) ->
     if rgb.ndim != 3 or rgb.shape[-1] != 3:
         raise ValueError(f"rgb must have shape (H, W, 3), got {rgb.shape}")
     fmt = image_format(suffix)
+    pixels = to_uint8(rgb, gamma)
+    if alpha is not None:
+        alpha = np.asarray(alpha)
+        if alpha.shape != rgb.shape[:2]:
+            raise ValueError(
+                f"alpha must have shape {rgb.shape[:2]} like the image, got {alpha.shape}"
+            )
+        if fmt not in ("PNG", "TIFF", "WEBP"):
+            raise ValueError(f"{suffix} files have no alpha channel; write .png for RGBA")
+        pixels = np.dstack([pixels, to_uint8(alpha)])
     buffer = io.BytesIO()
-    PILImage.fromarray(to_uint8(rgb, gamma)).save(buffer, format=fmt)
+    PILImage.fromarray(pixels).save(buffer, format=fmt)
     return buffer.getvalue()
 
 

@@ -102,44 +102,50 @@ def shade_point(px, py, pz, nx, ny, nz, ex, ey, ez, material, lights, ambient, b
 
 
 @njit(error_model="numpy")
-def shade_planar(count, points, normals, eye, material, lights, ambient, blinn, out, scratch):
+def shade_planar(count, points, normals, albedo, eye, material, lights, ambient, blinn, out,
+                 scratch):
     """Shade the first ``count`` points like :func:`shade_point`, in planar layout.
 
-    ``points`` and ``normals`` (3, N) hold x, y and z in rows, ``out`` (3, N) receives r, g and
-    b, ``scratch`` (5, N) is work space. Every loop runs over unit-stride rows from index 0
-    without calls or branches that depend on the point, so LLVM vectorizes it (several points
-    per instruction); the divisions are guarded, so ``error_model="numpy"`` (no zero-division
-    check, which would block vectorizing) changes no result.
+    ``points`` and ``normals`` (3, N) hold x, y and z in rows, ``albedo`` (3, N) the object
+    colour C of each point (the material's colour, or a textured surface's colour there; it
+    takes the place of the material's r, g, b), ``out`` (3, N) receives r, g and b,
+    ``scratch`` (5, N) is work space. With C equal to the material's colour the results are
+    bit for bit those of :func:`shade_point`: the products are formed in the same order.
+    Every loop runs over unit-stride rows from index 0 without calls or branches that depend
+    on the point, so LLVM vectorizes it (several points per instruction); the divisions are
+    guarded, so ``error_model="numpy"`` (no zero-division check, which would block
+    vectorizing) changes no result.
     """
     x, y, z = points[0], points[1], points[2]
     nx, ny, nz = normals[0], normals[1], normals[2]
     vx, vy, vz = scratch[0], scratch[1], scratch[2]
     cosine, spec = scratch[3], scratch[4]
     red, green, blue = out[0], out[1], out[2]
+    cr, cg, cb = albedo[0], albedo[1], albedo[2]
     kd = material[4]
     ks = material[5]
-    ambient_r = material[3] * ambient[0] * material[0]
-    ambient_g = material[3] * ambient[1] * material[1]
-    ambient_b = material[3] * ambient[2] * material[2]
+    ambient_r = material[3] * ambient[0]
+    ambient_g = material[3] * ambient[1]
+    ambient_b = material[3] * ambient[2]
     ex, ey, ez = eye[0], eye[1], eye[2]
     for i in range(count):
-        red[i] = ambient_r
-        green[i] = ambient_g
-        blue[i] = ambient_b
+        red[i] = ambient_r * cr[i]
+        green[i] = ambient_g * cg[i]
+        blue[i] = ambient_b * cb[i]
         vx[i], vy[i], vz[i] = unit_to_eye(x[i], y[i], z[i], ex, ey, ez)
     for k in range(lights.shape[0]):
-        diffuse_r = kd * lights[k, 4] * material[0]
-        diffuse_g = kd * lights[k, 5] * material[1]
-        diffuse_b = kd * lights[k, 6] * material[2]
+        diffuse_r = kd * lights[k, 4]
+        diffuse_g = kd * lights[k, 5]
+        diffuse_b = kd * lights[k, 6]
         for i in range(count):
             lx, ly, lz = light_direction(lights, k, x[i], y[i], z[i])
             diffuse, cosine_i = light_cosines(
                 nx[i], ny[i], nz[i], lx, ly, lz, vx[i], vy[i], vz[i], blinn
             )
             cosine[i] = cosine_i
-            red[i] += diffuse_r * diffuse
-            green[i] += diffuse_g * diffuse
-            blue[i] += diffuse_b * diffuse
+            red[i] += diffuse_r * cr[i] * diffuse
+            green[i] += diffuse_g * cg[i] * diffuse
+            blue[i] += diffuse_b * cb[i] * diffuse
         power_planar(cosine, count, material[6], spec)
         specular_r = ks * lights[k, 4]
         specular_g = ks * lights[k, 5]

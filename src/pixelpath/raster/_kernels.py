@@ -41,6 +41,7 @@ import numpy as np
 from pixelpath._jit import njit
 from pixelpath.clip._kernels import PLANE, clip_stage
 from pixelpath.lighting._kernels import shade_planar, shade_point
+from pixelpath.scene._texture_kernels import colored, surface_color, tiny_tables
 
 FLAT = 0
 GOURAUD = 1
@@ -55,10 +56,11 @@ VERTEX_INVW = 15  # 1/w at vertices 0, 1, 2 (in the triangle's own order; 1 when
 SLOPES = 18  # dx/dy of the sorted edges (v0, v2), (v0, v1), (v1, v2); 0 for a horizontal one
 SETUP_FIELDS = 21
 
-# Columns of the Gouraud vertex colours: lit from the front (normal as given) and from the back
-# (normal reversed, for two-sided faces seen from behind).
-COLOR = 0
-BACK_COLOR = 3
+# The Gouraud vertex colours hold the light from the front (normal as given), then from the
+# back (normal reversed, for two-sided faces seen from behind): 3 columns each, the intensity;
+# 6 each when the scene has coloured surfaces (textures or vertex colours), which keep the
+# light split in two, what their surface colour multiplies (ambient and diffuse) and what it
+# does not (the highlight). Flat colours are laid out as one such half.
 
 BAND_ROWS = 32
 # Phong pixels gathered per call of the planar shading kernel: a whole row of a 1024-wide frame.
@@ -99,6 +101,7 @@ class PhongBatch(NamedTuple):
     points: np.ndarray  # (3, SHADE_BATCH) interpolated surface points
     normals: np.ndarray  # (3, SHADE_BATCH) unit normals, turned towards the viewer
     shaded: np.ndarray  # (3, SHADE_BATCH) unclamped intensities
+    albedo: np.ndarray  # (3, SHADE_BATCH) object colour C at each pixel
     scratch: np.ndarray  # (5, SHADE_BATCH) work space of shade_planar
     denominators: np.ndarray  # (SHADE_BATCH,) interpolated 1/w: points are numerators first
     columns: np.ndarray  # (SHADE_BATCH,) intp: the pixel column of each gathered pixel
@@ -111,9 +114,13 @@ class Surfaces(NamedTuple):
     triangles: np.ndarray  # (T, 3) vertex indices
     positions: np.ndarray  # (V, 3) world positions
     normals: np.ndarray  # (V, 3) unit normals
-    colors: np.ndarray  # (V, 6) Gouraud intensities, front then back; (0, 6) otherwise
+    colors: np.ndarray  # (V, 6|12) Gouraud light, front then back; (0, 6) otherwise
     info: np.ndarray  # (T, 2) object index, flip flag (seen from behind)
-    flat_colors: np.ndarray  # (T, 3) flat-shading intensity (zeros in the other modes)
+    flat_colors: np.ndarray  # (T, 3|6) flat-shading light (zeros in the other modes)
+    face_normals: np.ndarray  # (T, 3) unit normal of each triangle's polygon, towards the eye
+    uv: np.ndarray  # (V, 2) texture coordinates; (0, 2) when nothing is textured
+    vertex_colors: np.ndarray  # (V, 4) vertex colours; (0, 4) when no object has them
+    tables: object  # SurfaceTables: textures and which objects have coloured surfaces
     materials: np.ndarray  # (O, 8) packed materials
     lights: np.ndarray  # (L, 7) packed lights
     ambient: np.ndarray  # (3,) ambient intensity
@@ -129,6 +136,7 @@ class Buffers(NamedTuple):
     rgb: np.ndarray  # (h, w, 3) float32 clamped intensities
     depth: np.ndarray  # (h, w) float32 view-axis depth, inf where nothing is drawn
     object_id: np.ndarray  # (h, w) int32 object index, -1 where nothing is drawn
+    normal: np.ndarray  # (h, w, 3) float32 unit shading normal, 0 where nothing is drawn
 
 
 @njit(inline="always")
@@ -750,6 +758,7 @@ def _new_batch():
         np.empty((3, SHADE_BATCH)),
         np.empty((3, SHADE_BATCH)),
         np.empty((3, SHADE_BATCH)),
+        np.empty((3, SHADE_BATCH)),
         np.empty((5, SHADE_BATCH)),
         np.empty(SHADE_BATCH),
         np.empty(SHADE_BATCH, dtype=np.intp),
@@ -800,41 +809,59 @@ def _shade_row(j, x0, y0, triangle_id, inv_depth, surfaces, out, batch):
     """Fill image row j of the output buffers from the triangle seen at each of its pixels.
 
     This is the one shading pass of every raster method. Phong pixels are gathered
-    (interpolated point and unit normal, planar) into ``batch`` and shaded together by
-    :func:`_shade_batch` when it is full, when the object changes, and at the end of the row.
+    (interpolated point and unit normal, planar, and the object colour) into ``batch`` and
+    shaded together by :func:`_shade_batch` when it is full, when the object changes, and at
+    the end of the row. A coloured surface (texture or vertex colours) has its colour looked
+    up at every pixel, whatever the shading mode: flat and Gouraud shading are about where the
+    light is computed, and its ambient and diffuse parts are then tinted by the colour there.
     """
     s = surfaces
     row = j - y0
     rgb = out.rgb[row]
+    normal = out.normal[row]
     count = np.intp(0)  # not a literal 0: that would compile a second _shade_batch
     batch_object = -1
     line_triangle = -1
     line = (0.0,) * 14
     y = j + 0.5
-    _fill_row(inv_depth[row], s.background, rgb, out.depth[row], out.object_id[row])
+    _fill_row(inv_depth[row], s.background, rgb, out.depth[row], out.object_id[row], normal)
     ids = triangle_id[row]
+    half = s.colors.shape[1] // 2  # Gouraud: the columns of the light from the front
     for i in range(ids.shape[0]):
         t = ids[i]
         if t < 0:
             continue
-        out.object_id[row, i] = s.info[t, 0]
+        obj = s.info[t, 0]
+        out.object_id[row, i] = obj
         x = (x0 + i) + 0.5
-        if s.mode == FLAT:
-            for channel in range(3):
-                rgb[i, channel] = _clamp01(s.flat_colors[t, channel])
-            continue
-        if s.mode == GOURAUD:
+        if s.mode != PHONG:
+            coloured = colored(s.tables, obj)
+            tint = (1.0, 1.0, 1.0)
+            if coloured:
+                cr, cg, cb, _ = _pixel_color(s, t, obj, x, y)
+                tint = (cr, cg, cb)
+            if s.mode == FLAT:
+                for channel in range(3):
+                    normal[i, channel] = s.face_normals[t, channel]
+                    value = s.flat_colors[t, channel] * tint[channel]
+                    if coloured:
+                        value += s.flat_colors[t, 3 + channel]
+                    rgb[i, channel] = _clamp01(value)
+                continue
             b0, b1, b2 = perspective_weights(s.setup[t], x, y)
             a, b, c = s.triangles[t, 0], s.triangles[t, 1], s.triangles[t, 2]
-            first = BACK_COLOR if s.info[t, 1] else COLOR
+            _store_normal(normal, i, s.normals, a, b, c, b0, b1, b2, s.info[t, 1])
+            first = half if s.info[t, 1] else 0
             for channel in range(3):
-                value = _mix(s.colors, a, b, c, b0, b1, b2, first + channel)
+                value = _mix(s.colors, a, b, c, b0, b1, b2, first + channel) * tint[channel]
+                if coloured:
+                    value += _mix(s.colors, a, b, c, b0, b1, b2, first + 3 + channel)
                 rgb[i, channel] = _clamp01(value)
             continue
-        if count == SHADE_BATCH or (count > 0 and s.info[t, 0] != batch_object):
-            _shade_batch(count, batch, s.materials[batch_object], s, rgb)
+        if count == SHADE_BATCH or (count > 0 and obj != batch_object):
+            _shade_batch(count, batch, s.materials[batch_object], s, rgb, normal)
             count = np.intp(0)
-        batch_object = s.info[t, 0]
+        batch_object = obj
         if t != line_triangle:
             line_triangle = t
             sign = -1.0 if s.info[t, 1] else 1.0
@@ -847,10 +874,66 @@ def _shade_row(j, x0, y0, triangle_id, inv_depth, surfaces, out, batch):
         batch.normals[0, count] = line[8] * x + line[9]
         batch.normals[1, count] = line[10] * x + line[11]
         batch.normals[2, count] = line[12] * x + line[13]
+        if colored(s.tables, obj):
+            cr, cg, cb, _ = _pixel_color(s, t, obj, x, y)
+        else:
+            cr, cg, cb = s.materials[obj, 0], s.materials[obj, 1], s.materials[obj, 2]
+        batch.albedo[0, count] = cr
+        batch.albedo[1, count] = cg
+        batch.albedo[2, count] = cb
         batch.columns[count] = i
         count += 1
     if count > 0:
-        _shade_batch(count, batch, s.materials[batch_object], s, rgb)
+        _shade_batch(count, batch, s.materials[batch_object], s, rgb, normal)
+
+
+@njit(inline="always")
+def _store_normal(normal, i, normals, a, b, c, b0, b1, b2, flipped):
+    """Write the unit interpolated vertex normal (turned to the viewer) at pixel i of a row."""
+    nx = _mix(normals, a, b, c, b0, b1, b2, 0)
+    ny = _mix(normals, a, b, c, b0, b1, b2, 1)
+    nz = _mix(normals, a, b, c, b0, b1, b2, 2)
+    length = math.sqrt(nx * nx + ny * ny + nz * nz)
+    scale = (-1.0 if flipped else 1.0) / length if length > 0.0 else 0.0
+    normal[i, 0] = nx * scale
+    normal[i, 1] = ny * scale
+    normal[i, 2] = nz * scale
+
+
+@njit
+def _pixel_color(s, t, obj, x, y):
+    """Return the surface colour (r, g, b, alpha) of triangle t at pixel centre (x, y).
+
+    The perspective-correct weights ``b_k = t_k / D`` (``t_k = s_k / w_k``, D their sum) give
+    the point; their screen derivatives give how far the texture coordinates move over one
+    pixel, which chooses the mip level: for an attribute ``u = sum t_k u_k / D`` with affine
+    ``t_k``, ``du/dx = (sum t_k,x u_k - u sum t_k,x) / D``.
+    """
+    record = s.setup[t]
+    w0, w1, w2 = record[VERTEX_INVW], record[VERTEX_INVW + 1], record[VERTEX_INVW + 2]
+    s1 = record[S1_PLANE] * x + record[S1_PLANE + 1] * y + record[S1_PLANE + 2]
+    s2 = record[S2_PLANE] * x + record[S2_PLANE + 1] * y + record[S2_PLANE + 2]
+    t0, t1, t2 = (1.0 - s1 - s2) * w0, s1 * w1, s2 * w2
+    inv = 1.0 / (t0 + t1 + t2)
+    b0, b1, b2 = t0 * inv, t1 * inv, t2 * inv
+    a, b, c = s.triangles[t, 0], s.triangles[t, 1], s.triangles[t, 2]
+    dudx = dvdx = dudy = dvdy = 0.0
+    if s.uv.shape[0] > 0:
+        gx0, gx1 = -(record[S1_PLANE] + record[S2_PLANE]) * w0, record[S1_PLANE] * w1
+        gx2 = record[S2_PLANE] * w2
+        gy0, gy1 = -(record[S1_PLANE + 1] + record[S2_PLANE + 1]) * w0, record[S1_PLANE + 1] * w1
+        gy2 = record[S2_PLANE + 1] * w2
+        u = _mix(s.uv, a, b, c, b0, b1, b2, 0)
+        v = _mix(s.uv, a, b, c, b0, b1, b2, 1)
+        gx, gy = gx0 + gx1 + gx2, gy0 + gy1 + gy2
+        dudx = (_mix(s.uv, a, b, c, gx0, gx1, gx2, 0) - u * gx) * inv
+        dvdx = (_mix(s.uv, a, b, c, gx0, gx1, gx2, 1) - v * gx) * inv
+        dudy = (_mix(s.uv, a, b, c, gy0, gy1, gy2, 0) - u * gy) * inv
+        dvdy = (_mix(s.uv, a, b, c, gy0, gy1, gy2, 1) - v * gy) * inv
+    return surface_color(
+        s.tables, s.materials[obj], obj, s.uv, s.vertex_colors, a, b, c, b0, b1, b2, dudx, dvdx,
+        dudy, dvdy,
+    )
 
 
 @njit(inline="always")
@@ -891,15 +974,16 @@ def _scanline_surface(record, y, corners, positions, normals, sign):
 
 
 @njit(error_model="numpy")
-def _fill_row(inv_depth_row, background, rgb_row, depth_row, id_row):
+def _fill_row(inv_depth_row, background, rgb_row, depth_row, id_row, normal_row):
     """Write a row as if nothing were drawn, but with every drawn pixel's depth 1/(1/w).
 
     A pixel is drawn exactly where its 1/w is positive (the buffer starts at 0). One loop
-    without branches over the whole row, so LLVM vectorizes it; the drawn pixels' colour and
-    object id are written afterwards.
+    without branches over the whole row, so LLVM vectorizes it; the drawn pixels' colour,
+    object id and normal are written afterwards.
     """
     red, green, blue = background[0], background[1], background[2]
     rgb_flat = rgb_row.reshape(-1)  # r g b r g b ...: indexed 3 i + c, which vectorizes
+    normal_flat = normal_row.reshape(-1)
     for i in range(inv_depth_row.shape[0]):
         inv_w = inv_depth_row[i]
         depth_row[i] = 1.0 / inv_w if inv_w > 0.0 else np.inf
@@ -907,11 +991,14 @@ def _fill_row(inv_depth_row, background, rgb_row, depth_row, id_row):
         rgb_flat[3 * i] = red
         rgb_flat[3 * i + 1] = green
         rgb_flat[3 * i + 2] = blue
+        normal_flat[3 * i] = 0.0
+        normal_flat[3 * i + 1] = 0.0
+        normal_flat[3 * i + 2] = 0.0
 
 
 @njit(error_model="numpy")
-def _shade_batch(count, batch, material, surfaces, rgb_row):
-    """Shade the gathered pixels of one row (one object's) and write their clamped colours.
+def _shade_batch(count, batch, material, surfaces, rgb_row, normal_row):
+    """Shade the gathered pixels of one row (one object's); write their colours and normals.
 
     First the perspective division of the points and the normalization of the normals, in a
     loop LLVM vectorizes (``error_model="numpy"``: no zero-division check; the denominator is
@@ -931,13 +1018,14 @@ def _shade_batch(count, batch, material, surfaces, rgb_row):
         ny[q] *= scale
         nz[q] *= scale
     shade_planar(
-        count, batch.points, batch.normals, surfaces.eye, material, surfaces.lights,
-        surfaces.ambient, surfaces.blinn, batch.shaded, batch.scratch,
+        count, batch.points, batch.normals, batch.albedo, surfaces.eye, material,
+        surfaces.lights, surfaces.ambient, surfaces.blinn, batch.shaded, batch.scratch,
     )
     for q in range(count):
         i = batch.columns[q]
         for channel in range(3):
             rgb_row[i, channel] = _clamp01(batch.shaded[channel, q])
+            normal_row[i, channel] = batch.normals[channel, q]
 
 
 # Warm-up in groups that compile independently (pixelpath._warm compiles groups in
@@ -1016,13 +1104,15 @@ def _tiny_shading_pass():
     normals, materials, lights, ambient = _tiny_lighting()
     surfaces = Surfaces(
         setup, triangles, clip[:, :3].copy(), normals, np.zeros((3, 6)),
-        np.zeros((1, 2), dtype=np.intp), np.ones((1, 3)), materials, lights, ambient,
-        np.array([0.0, 0.0, 5.0]), np.zeros(3), PHONG, False,
+        np.zeros((1, 2), dtype=np.intp), np.ones((1, 3)), normals[:1].copy(), np.zeros((3, 2)),
+        np.ones((3, 4)), tiny_tables(), materials, lights, ambient, np.array([0.0, 0.0, 5.0]),
+        np.zeros(3), PHONG, False,
     )
     out = Buffers(
         np.zeros((8, 8, 3), dtype=np.float32),
         np.empty((8, 8), dtype=np.float32),
         np.empty((8, 8), dtype=np.int32),
+        np.empty((8, 8, 3), dtype=np.float32),
     )
     bands = np.zeros(1, dtype=np.intp)
     return bands, setup, rows, offsets, items, inv_depth, triangle_id, surfaces, out

@@ -22,6 +22,8 @@ from collections.abc import Callable
 import numpy as np
 
 from pixelpath.scene import Box, Camera, Mesh, Plane, Scene, Sphere
+from pixelpath.scene._texture_kernels import HAS_COLORS, TEXTURE, SurfaceTables
+from pixelpath.scene.texture import surface_tables
 
 __all__ = ["SceneGeometry", "scene_geometry"]
 
@@ -53,6 +55,15 @@ class SceneGeometry:
         Packed material of each object (``Material.packed()``).
     meshes : tuple of Mesh
         The mesh of each object.
+    surfaces : SurfaceTables
+        Textures and which objects have textures or vertex colours
+        (:func:`pixelpath.scene.texture.surface_tables`).
+    uv : (V, 2) float64
+        Texture coordinates (0 for objects without); (0, 2) when no object is textured.
+    colors : (V, 4) float64
+        Vertex colours (1 for objects without); (0, 4) when no object has them.
+    double_sided : (O,) bool
+        Objects whose material draws its back faces even when back faces are culled.
     """
 
     vertices: np.ndarray
@@ -65,6 +76,16 @@ class SceneGeometry:
     vertex_object: np.ndarray
     materials: np.ndarray
     meshes: tuple[Mesh, ...]
+    surfaces: SurfaceTables
+    uv: np.ndarray
+    colors: np.ndarray
+    double_sided: np.ndarray
+
+    @functools.cached_property
+    def coloured(self) -> np.ndarray:
+        """(O,) bool: objects whose surface colour varies (a texture or vertex colours)."""
+        objects = self.surfaces.objects
+        return (objects[:, TEXTURE] >= 0) | (objects[:, HAS_COLORS] != 0)
 
     @functools.cached_property
     def polygon_centroids(self) -> np.ndarray:
@@ -205,6 +226,7 @@ def scene_geometry(scene: Scene, camera: Camera | None = None) -> SceneGeometry:
 
 def _build_geometry(scene: Scene, camera: Camera) -> SceneGeometry:
     meshes = [object_mesh(obj, camera) for obj in scene.objects]
+    surfaces = surface_tables(meshes)
     vertex_counts = [len(m.vertices) for m in meshes]
     polygon_counts = [m.face_count for m in meshes]
     vertex_start = np.cumsum([0, *vertex_counts])[:-1]
@@ -222,7 +244,26 @@ def _build_geometry(scene: Scene, camera: Camera) -> SceneGeometry:
         vertex_object=np.repeat(objects, vertex_counts),
         materials=_stacked([m.material.packed()[None] for m in meshes], (0, 8)),
         meshes=tuple(meshes),
+        surfaces=surfaces,
+        uv=_per_vertex(meshes, "uv", surfaces.objects[:, TEXTURE] >= 0, 0.0, 2),
+        colors=_per_vertex(meshes, "colors", surfaces.objects[:, HAS_COLORS] != 0, 1.0, 4),
+        double_sided=np.array([m.material.double_sided for m in meshes], dtype=np.bool_),
     )
+
+
+def _per_vertex(meshes: list[Mesh], name: str, used: np.ndarray, fill: float, width: int):
+    """Stack a per-vertex attribute the kernels read for the ``used`` objects only.
+
+    Other objects' rows hold ``fill``; with no object using it the array is empty (the
+    kernels never read it), so scenes without textures or vertex colours carry nothing.
+    """
+    if not np.any(used):
+        return np.empty((0, width))
+    parts = [
+        getattr(m, name) if flag else np.full((len(m.vertices), width), fill)
+        for m, flag in zip(meshes, used, strict=True)
+    ]
+    return _stacked(parts, (0, width))
 
 
 def _stacked(parts: list[np.ndarray], empty: tuple[int, ...], dtype: type = np.float64):

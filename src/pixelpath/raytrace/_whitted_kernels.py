@@ -55,6 +55,7 @@ from pixelpath.raytrace._kernels import (
     sphere_roots,
     sphere_t,
 )
+from pixelpath.scene._texture_kernels import SurfaceTables, colored, surface_color
 
 # A ray whose weight falls below this is not traced: it could move no 8-bit pixel value unless
 # the light it carries exceeded 16 (Hall and Greenberg's adaptive depth control).
@@ -113,6 +114,11 @@ class TraceScene(NamedTuple):
     # right and up (half the view's width and height along u and v). A perspective camera has
     # no origin steps (every ray starts at the eye), an orthographic one no direction steps.
     camera: np.ndarray
+    tables: SurfaceTables  # textures and which objects have coloured surfaces
+    tri_uv: np.ndarray  # (3T, 2) texture coordinates at the corners; (0, 2) when unused
+    tri_colors: np.ndarray  # (3T, 4) vertex colours at the corners; (0, 4) when unused
+    tri_texel_scale: np.ndarray  # (T,) uv units per world unit on each triangle
+    pixel_cone: np.ndarray  # (2,) a pixel's footprint width at the eye, growth per distance
 
 
 class Settings(NamedTuple):
@@ -139,6 +145,7 @@ class Work(NamedTuple):
     rays: np.ndarray  # (max_depth + 2, RAY_FIELDS) pending rays
     lights: np.ndarray  # (L, 7) the lights a shadow ray reaches, scaled by what gets through
     shaded: np.ndarray  # (3,)
+    material: np.ndarray  # (MATERIAL_FIELDS,) a hit's material with its surface colour
     counts: np.ndarray  # (COUNTS,) int64
     log: np.ndarray  # (M, LOG_FIELDS) logged rays; M = 0 logs nothing
     log_lights: np.ndarray  # (M, L, 2) per logged ray and light: light let through, blocker
@@ -168,6 +175,7 @@ def new_work(scene, settings, bvh_depth, log_size, row_width):
         np.empty((settings.max_depth + 2, RAY_FIELDS)),
         np.empty((lights, 7)),
         np.empty(3),
+        np.empty(MATERIAL_FIELDS),
         np.zeros(COUNTS, dtype=np.int64),
         np.empty((log_size, LOG_FIELDS)),
         np.empty((log_size, lights, 2)),
@@ -604,6 +612,31 @@ def _schlick(cos_i, cos_t, eta, ior):
     return r0 + (1.0 - r0) * m * m * m * m * m
 
 
+@njit
+def _coloured_material(scene, out, obj, index, w1, w2, px, py, pz, nx, ny, nz, dx, dy, dz):
+    """Write object ``obj``'s material with the surface colour at the hit into ``out``.
+
+    The hit is at barycentric (w1, w2) of triangle ``index``. The texture is filtered for the
+    pixel's footprint there: the cone's width at the hit's distance from the eye, stretched by
+    1 / cos of the angle between ray and normal, in uv units through the triangle's texel
+    scale.
+    """
+    for field in range(out.shape[0]):
+        out[field] = scene.materials[obj, field]
+    eye = scene.camera
+    distance = math.sqrt((px - eye[0]) ** 2 + (py - eye[1]) ** 2 + (pz - eye[2]) ** 2)
+    width = scene.pixel_cone[0] + scene.pixel_cone[1] * distance
+    length = math.sqrt(dx * dx + dy * dy + dz * dz)
+    cosine = abs(nx * dx + ny * dy + nz * dz) / length if length > 0.0 else 1.0
+    span = scene.tri_texel_scale[index] * width / max(cosine, 1e-3)
+    r, g, b, _ = surface_color(
+        scene.tables, out, obj, scene.tri_uv, scene.tri_colors, 3 * index, 3 * index + 1,
+        3 * index + 2, 1.0 - w1 - w2, w1, w2, span, 0.0, 0.0, span,
+    )
+    out[0], out[1], out[2] = r, g, b
+    return out
+
+
 @njit(inline="always")
 def _push(rays, top, ox, oy, oz, dx, dy, dz, weight, depth, kind, parent):
     rays[top, 0], rays[top, 1], rays[top, 2] = ox, oy, oz
@@ -684,8 +717,8 @@ def _clamp01(value):
 
 
 # Fields of a traced pixel (trace_row's output).
-RED, GREEN, BLUE, PIXEL_DEPTH, PIXEL_OBJECT = 0, 1, 2, 3, 4
-PIXEL_FIELDS = 5
+RED, GREEN, BLUE, PIXEL_DEPTH, PIXEL_OBJECT, PIXEL_NORMAL = 0, 1, 2, 3, 4, 5
+PIXEL_FIELDS = 8
 
 
 @njit(refcount=False)
@@ -749,6 +782,7 @@ def trace_row(y, x0, width, scene, settings, work, out):
         red = green = blue = 0.0
         nearest = math.inf
         nearest_object = MISS
+        nearest_normal = (0.0, 0.0, 0.0)
         for sample in range(samples):
             ray = i * samples + sample  # its eye ray's place in the row's primary pass
             if primary_hit[ray, 1] == MISS and log.shape[0] == 0:
@@ -766,6 +800,7 @@ def trace_row(y, x0, width, scene, settings, work, out):
             r = g = b = 0.0
             first_t = math.inf
             first_object = MISS
+            first_normal = (0.0, 0.0, 0.0)
             while top > 0:
                 top -= 1
                 ox, oy, oz = rays[top, 0], rays[top, 1], rays[top, 2]
@@ -854,13 +889,20 @@ def trace_row(y, x0, width, scene, settings, work, out):
                     if logged < log.shape[0]:
                         log_lights[logged, light, 0] = through
                         log_lights[logged, light, 1] = blocker
-                shade_point(px, py, pz, nx, ny, nz, ox, oy, oz, materials[obj], lit[:lit_count],
+                material = materials[obj]
+                if hit_kind == TRIANGLE and colored(scene.tables, obj):
+                    material = _coloured_material(scene, work.material, obj, index, w1, w2, px,
+                                                  py, pz, nx, ny, nz, dx, dy, dz)
+                shade_point(px, py, pz, nx, ny, nz, ox, oy, oz, material, lit[:lit_count],
                             ambient, settings.blinn, shaded)
                 r += weight * shaded[0]
                 g += weight * shaded[1]
                 b += weight * shaded[2]
                 if primary:
                     first_t, first_object = t, obj
+                    # The normal the viewer sees: turned against the eye ray.
+                    facing = -1.0 if nx * dx + ny * dy + nz * dz > 0.0 else 1.0
+                    first_normal = (facing * nx, facing * ny, facing * nz)
                 ux, uy, uz = _unit(dx, dy, dz)
                 bounce = depth < settings.max_depth
                 kr, kt, total, fresnel, eta, tx, ty, tz = transmission(
@@ -887,21 +929,25 @@ def trace_row(y, x0, width, scene, settings, work, out):
             green += _clamp01(g)
             blue += _clamp01(b)
             if first_t < nearest:
-                nearest, nearest_object = first_t, first_object
+                nearest, nearest_object, nearest_normal = first_t, first_object, first_normal
         scale = 1.0 / samples
         out[i, RED] = red * scale
         out[i, GREEN] = green * scale
         out[i, BLUE] = blue * scale
         out[i, PIXEL_DEPTH] = nearest
         out[i, PIXEL_OBJECT] = nearest_object
+        for axis in range(3):
+            out[i, PIXEL_NORMAL + axis] = nearest_normal[axis]
 
 
 @njit
-def render_rows(rows, scene, settings, bvh_depth, x0, y0, rgb, depth, object_id, counts):
+def render_rows(rows, scene, settings, bvh_depth, x0, y0, rgb, depth, object_id, normal,
+                counts):
     """Trace the listed rows of the region whose top-left pixel is (x0, y0) of the image.
 
     Writes rgb (h, w, 3) float32, depth (h, w) float32 (inf where nothing was hit), object_id
-    (h, w) int32 (-1 there) and each row's counters into counts (h, COUNTS). Serial: the
+    (h, w) int32 (-1 there), the unit normal (h, w, 3) float32 seen at the nearest hit (0
+    there) and each row's counters into counts (h, COUNTS). Serial: the
     caller runs disjoint lists of rows from several threads (the kernel releases the GIL).
     """
     width = rgb.shape[1]
@@ -918,6 +964,8 @@ def render_rows(rows, scene, settings, bvh_depth, x0, y0, rgb, depth, object_id,
             rgb[row, i, 2] = out[i, BLUE]
             depth[row, i] = out[i, PIXEL_DEPTH]
             object_id[row, i] = int(out[i, PIXEL_OBJECT])
+            for axis in range(3):
+                normal[row, i, axis] = out[i, PIXEL_NORMAL + axis]
         for c in range(COUNTS):
             counts[row, c] = work.counts[c]
 
@@ -933,6 +981,6 @@ def warmup() -> None:
     counts = np.empty((1, COUNTS), dtype=np.int64)
     with slab_nan_allowed():
         render_rows(np.zeros(1, dtype=np.intp), scene, settings, bvh_depth, 0, 0, rgb, depth,
-                    ids, counts)
+                    ids, np.empty((1, 1, 3), dtype=np.float32), counts)
         work = new_work(scene, settings, bvh_depth, 8, 1)
         trace_row(0, 0, 1, scene, settings, work, np.empty((1, PIXEL_FIELDS)))

@@ -300,7 +300,7 @@ def ray_tree(
     with slab_nan_allowed():
         out = np.empty((1, wk.PIXEL_FIELDS))
         wk.trace_row(y, x, 1, world, settings, work, out)
-    red, green, blue, depth, obj = out[0].tolist()
+    red, green, blue, depth, obj = out[0, : wk.PIXEL_NORMAL].tolist()
     logged = int(work.logged[0])
     count = min(logged, len(work.log))
     roots = _nodes(scene, world, settings, work.log[:count], work.log_lights[:count])

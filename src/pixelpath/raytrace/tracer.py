@@ -61,6 +61,10 @@ class SceneTriangles:
     polygon: np.ndarray  # (T,) intp polygon (over all meshes) each triangle comes from
     polygon_normals: np.ndarray  # (P, 3)
     polygon_points: np.ndarray  # (P, 3) first corner of each polygon
+    tables: Any  # SurfaceTables of the scene's objects (textures, vertex colours)
+    uv: np.ndarray  # (3T, 2) texture coordinates at each triangle's corners; (0, 2) if unused
+    colors: np.ndarray  # (3T, 4) vertex colours at the corners; (0, 4) if unused
+    texel_scale: np.ndarray  # (T,) sqrt(uv area / world area): uv units per world unit
 
 
 _TRIANGLES = _IdentityCache(8)  # per tuple of scene objects (kept when only the camera changes)
@@ -83,9 +87,16 @@ def scene_triangles(scene: Scene) -> SceneTriangles:
 
 
 def _build_triangles(objects: tuple[Any, ...]) -> SceneTriangles:
+    from pixelpath.scene._texture_kernels import HAS_COLORS, TEXTURE
+    from pixelpath.scene.texture import surface_tables
+
+    tables = surface_tables(objects)
     meshes = [(k, o if isinstance(o, Mesh) else o.to_mesh()) for k, o in enumerate(objects)
               if isinstance(o, Mesh | Box)]
+    textured = tables.objects[:, TEXTURE] >= 0
+    painted = tables.objects[:, HAS_COLORS] != 0
     corners, normals, flat, owner, polygon = [], [], [], [], []
+    uv, colors = [], []
     polygon_normals, polygon_points = [], []
     polygons = 0
     for k, mesh in meshes:
@@ -98,6 +109,8 @@ def _build_triangles(objects: tuple[Any, ...]) -> SceneTriangles:
         polygon_normals.append(mesh.face_normals)
         polygon_points.append(mesh.vertices[mesh.face_indices[mesh.face_offsets[:-1]]])
         polygons += mesh.face_count
+        uv.append(mesh.uv[tri].reshape(-1, 6) if textured[k] else np.zeros((len(tri), 6)))
+        colors.append(mesh.colors[tri].reshape(-1, 12) if painted[k] else np.ones((len(tri), 12)))
 
     def stacked(parts, width, dtype=np.float64):
         shape = (0, width) if width else (0,)
@@ -107,6 +120,14 @@ def _build_triangles(objects: tuple[Any, ...]) -> SceneTriangles:
 
     bvh = BVH._from_corners(stacked(corners, 9))
     order = bvh.order
+
+    def corner_rows(parts, width, used):
+        """Leaf-ordered per-corner rows (3T, width), or none when no object uses them."""
+        if not used.any():
+            return np.empty((0, width))
+        return np.ascontiguousarray(stacked(parts, 3 * width)[order].reshape(-1, width))
+
+    corner_uv = corner_rows(uv, 2, textured)
     return SceneTriangles(
         bvh=bvh,
         normals=np.ascontiguousarray(stacked(normals, 9)[order]),
@@ -115,7 +136,28 @@ def _build_triangles(objects: tuple[Any, ...]) -> SceneTriangles:
         polygon=np.ascontiguousarray(stacked(polygon, 0, np.intp)[order]),
         polygon_normals=stacked(polygon_normals, 3),
         polygon_points=stacked(polygon_points, 3),
+        tables=tables,
+        uv=corner_uv,
+        colors=corner_rows(colors, 4, painted),
+        texel_scale=_texel_scale(bvh.corners, corner_uv),
     )
+
+
+def _texel_scale(corners: np.ndarray, uv: np.ndarray) -> np.ndarray:
+    """(T,) how many uv units one world unit spans on each triangle (0 without uv).
+
+    The square root of the triangle's area in texture space over its area in space: with a
+    pixel's footprint on the surface it gives the footprint in texels, which sets the mip
+    level (the "ray cone" estimate of texture filtering in ray tracers).
+    """
+    if len(uv) == 0:
+        return np.zeros(len(corners))
+    p = corners.reshape(-1, 3, 3)
+    world = np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1)
+    t = uv.reshape(-1, 3, 2)
+    e1, e2 = t[:, 1] - t[:, 0], t[:, 2] - t[:, 0]
+    texture = np.abs(e1[:, 0] * e2[:, 1] - e1[:, 1] * e2[:, 0])
+    return np.sqrt(np.divide(texture, world, out=np.zeros(len(p)), where=world > 0.0))
 
 
 def scene_materials(scene: Scene) -> np.ndarray:
@@ -200,6 +242,11 @@ def pack(scene: Scene, camera: Camera, options: RenderOptions):
         ambient=kernel_array(scene.ambient),
         background=kernel_array(scene.background),
         camera=_primary_rays(camera),
+        tables=triangles.tables,
+        tri_uv=triangles.uv,
+        tri_colors=triangles.colors,
+        tri_texel_scale=triangles.texel_scale,
+        pixel_cone=_pixel_cone(camera),
     )
     settings = wk.Settings(
         max_depth=options.max_depth,
@@ -311,6 +358,7 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     rgb = _pool.empty((*shape, 3), np.float32)
     depth = _pool.empty(shape, np.float32)
     object_id = _pool.empty(shape, np.int32)
+    normal = _pool.empty((*shape, 3), np.float32)
     counts = np.zeros((view.height, wk.COUNTS), dtype=np.int64)
     # Blocks of neighbouring rows go to the threads as they free up: the next row's rays meet
     # the boxes and triangles this row's brought into the cache (rows taken from all over the
@@ -325,7 +373,7 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     def trace(run: np.ndarray) -> None:
         with slab_nan_allowed():
             wk.render_rows(run, world, settings, bvh_depth, view.x0, view.y0, rgb, depth,
-                           object_id, counts)
+                           object_id, normal, counts)
 
     runs = min(len(rows), TRACE_SLICES * RUNS_PER_STEP)
     finished = 0
@@ -340,7 +388,7 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     in_runs(trace, rows, runs=runs, done=report)
     stats = _stats(world, counts.sum(axis=0))
     report = _report(stats, triangles, settings) if options.explain else None
-    return Frame(rgb, depth, object_id, stats, report)
+    return Frame(rgb, depth, object_id, stats, report, normal)
 
 
 def _stats(world, totals: np.ndarray) -> dict[str, int]:

@@ -275,3 +275,66 @@ def _half(linear: np.ndarray) -> np.ndarray:
     cols = 2 if linear.shape[1] > 1 else 1
     h, w = linear.shape[0] // rows, linear.shape[1] // cols
     return linear.reshape(h, rows, w, cols, 4).mean(axis=(1, 3))
+
+
+def surface_tables(objects: Any):
+    """Pack the textures, vertex colours and texture coordinates of scene objects for kernels.
+
+    Parameters
+    ----------
+    objects : sequence of scene objects
+        Their ``material.texture`` and, for meshes, ``colors`` and ``uv``. A texture shows
+        only on meshes with texture coordinates (``uv``); elsewhere it is left out.
+
+    Returns
+    -------
+    SurfaceTables
+        See :mod:`pixelpath.scene._texture_kernels`; a texture's levels are packed once
+        however many objects use it.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from pixelpath.scene import Material, Mesh
+    >>> quad = Mesh([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], [[0, 1, 2, 3]],
+    ...             Material(texture=np.ones((4, 4, 3))), uv=[[0, 0], [1, 0], [1, 1], [0, 1]])
+    >>> tables = surface_tables([quad])
+    >>> tables.levels.tolist(), tables.objects.tolist()
+    ([[0, 4, 4], [16, 2, 2], [20, 1, 1]], [[0, 0]])
+    """
+    from pixelpath.scene import _texture_kernels as tk
+
+    samplers: dict[tuple[int, str, str], int] = {}
+    level_ranges: dict[int, tuple[int, int]] = {}
+    sampler_rows: list[list[int]] = []
+    level_rows: list[list[int]] = []
+    pixels: list[np.ndarray] = []
+    object_rows = []
+    texel_count = 0
+    for obj in objects:
+        material = obj.material
+        texture = material.texture
+        index = -1
+        if texture is not None and getattr(obj, "uv", None) is not None:
+            if id(texture) not in level_ranges:
+                level_ranges[id(texture)] = (len(level_rows), len(texture.levels))
+                for level in texture.levels:
+                    level_rows.append([texel_count, level.shape[1], level.shape[0]])
+                    pixels.append(level.reshape(-1, 4))
+                    texel_count += level.shape[0] * level.shape[1]
+            key = (id(texture), material.texture_filter, material.texture_wrap)
+            if key not in samplers:
+                samplers[key] = len(sampler_rows)
+                sampler_rows.append([
+                    *level_ranges[id(texture)], FILTERS.index(material.texture_filter),
+                    WRAPS.index(material.texture_wrap),
+                ])
+            index = samplers[key]
+        object_rows.append([index, getattr(obj, "colors", None) is not None])
+    return tk.SurfaceTables(
+        np.concatenate(pixels) if pixels else np.zeros((0, 4), dtype=np.uint8),
+        np.array(level_rows, dtype=np.intp).reshape(-1, 3),
+        np.array(sampler_rows, dtype=np.intp).reshape(-1, 4),
+        np.array(object_rows, dtype=np.intp).reshape(-1, 2),
+        decode_table(),
+    )

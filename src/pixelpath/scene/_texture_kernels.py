@@ -1,0 +1,168 @@
+"""Compiled texture lookups and the surface colour they give, shared by rasterizer and tracer.
+
+A scene's textures are packed by :func:`pixelpath.scene.texture.surface_tables` into one
+:class:`SurfaceTables` record:
+
+* ``texels`` (N, 4) uint8: every mip level of every texture, rows of texels one after the
+  other, colour sRGB-encoded, alpha linear;
+* ``levels`` (K, 3) intp: first texel, width and height of each level;
+* ``textures`` (M, 4) intp: first level, number of levels, filter and wrap of each texture;
+* ``objects`` (O, 2) intp: per scene object, its texture (-1 for none, or when it has no
+  texture coordinates) and whether it has vertex colours;
+* ``decode`` (256,) float64: the linear value of each 8-bit sRGB code.
+
+Texel (col, row) of a level w × h has its centre at ``u = (col + 0.5) / w``,
+``v = 1 - (row + 0.5) / h`` (v up, row 0 at the top of the picture). ``footprint`` is the
+length, in base-level texels, that one pixel covers; trilinear filtering picks the two levels
+around ``log2(footprint)`` and blends them (the classic mip-map level of detail).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+
+from pixelpath._jit import njit
+
+NEAREST, BILINEAR, TRILINEAR = 0, 1, 2
+REPEAT, CLAMP, MIRROR = 0, 1, 2
+# Columns of SurfaceTables.objects.
+TEXTURE, HAS_COLORS = 0, 1
+
+
+class SurfaceTables(NamedTuple):
+    """What the kernels read to colour a surface point (see the module docstring)."""
+
+    texels: np.ndarray
+    levels: np.ndarray
+    textures: np.ndarray
+    objects: np.ndarray
+    decode: np.ndarray
+
+
+@njit(inline="always")
+def wrapped(index, size, wrap):
+    """Return texel ``index`` of a row or column of ``size`` texels under the wrap mode."""
+    if wrap == CLAMP:
+        return min(max(index, 0), size - 1)
+    if wrap == MIRROR:
+        period = index % (2 * size)
+        return period if period < size else 2 * size - 1 - period
+    return index % size
+
+
+@njit(inline="always")
+def _texel(tables, level, col, row):
+    """Linear (r, g, b, a) of texel (col, row) of a level (already wrapped)."""
+    k = tables.levels[level, 0] + row * tables.levels[level, 1] + col
+    decode = tables.decode
+    texel = tables.texels[k]
+    return decode[texel[0]], decode[texel[1]], decode[texel[2]], texel[3] / 255.0
+
+
+@njit
+def _bilinear(tables, level, wrap, u, v):
+    """Bilinear blend of the four texels around (u, v) on one level."""
+    width, height = tables.levels[level, 1], tables.levels[level, 2]
+    x = u * width - 0.5
+    y = (1.0 - v) * height - 0.5
+    col, row = math.floor(x), math.floor(y)
+    fx, fy = x - col, y - row
+    c0, c1 = wrapped(np.intp(col), width, wrap), wrapped(np.intp(col) + 1, width, wrap)
+    r0, r1 = wrapped(np.intp(row), height, wrap), wrapped(np.intp(row) + 1, height, wrap)
+    a = _texel(tables, level, c0, r0)
+    b = _texel(tables, level, c1, r0)
+    c = _texel(tables, level, c0, r1)
+    d = _texel(tables, level, c1, r1)
+    w00, w10, w01, w11 = (1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy
+    return (
+        w00 * a[0] + w10 * b[0] + w01 * c[0] + w11 * d[0],
+        w00 * a[1] + w10 * b[1] + w01 * c[1] + w11 * d[1],
+        w00 * a[2] + w10 * b[2] + w01 * c[2] + w11 * d[2],
+        w00 * a[3] + w10 * b[3] + w01 * c[3] + w11 * d[3],
+    )
+
+
+@njit
+def sample(tables, texture, u, v, footprint):
+    """Linear (r, g, b, a) of ``texture`` at (u, v), filtered for a pixel of ``footprint`` texels.
+
+    ``nearest`` takes the texel under (u, v) and ``bilinear`` blends the four around it, both
+    on the base level; ``trilinear`` blends bilinear lookups on the two mip levels around
+    ``log2(footprint)`` (the base level when a pixel covers less than one texel).
+    """
+    first, count = tables.textures[texture, 0], tables.textures[texture, 1]
+    mode, wrap = tables.textures[texture, 2], tables.textures[texture, 3]
+    if mode == NEAREST:
+        width, height = tables.levels[first, 1], tables.levels[first, 2]
+        col = wrapped(np.intp(math.floor(u * width)), width, wrap)
+        row = wrapped(np.intp(math.floor((1.0 - v) * height)), height, wrap)
+        return _texel(tables, first, col, row)
+    lod = math.log2(footprint) if footprint > 1.0 else 0.0
+    if mode == BILINEAR or lod <= 0.0 or count == 1:
+        return _bilinear(tables, first, wrap, u, v)
+    lod = min(lod, count - 1.0)
+    lower = min(np.intp(lod), count - 2)
+    blend = lod - lower
+    a = _bilinear(tables, first + lower, wrap, u, v)
+    b = _bilinear(tables, first + lower + 1, wrap, u, v)
+    keep = 1.0 - blend
+    return (
+        keep * a[0] + blend * b[0],
+        keep * a[1] + blend * b[1],
+        keep * a[2] + blend * b[2],
+        keep * a[3] + blend * b[3],
+    )
+
+
+@njit(inline="always")
+def colored(tables, obj):
+    """Whether object ``obj`` has a surface colour that varies (a texture or vertex colours)."""
+    return tables.objects[obj, TEXTURE] >= 0 or tables.objects[obj, HAS_COLORS] != 0
+
+
+@njit
+def surface_color(tables, material, obj, uv, colors, a, b, c, w0, w1, w2, dudx, dvdx, dudy,
+                  dvdy):
+    """Surface colour (r, g, b, alpha) at barycentric weights (w0, w1, w2) of vertices a, b, c.
+
+    ``material`` colour × the interpolated vertex colour × the texture at the interpolated
+    texture coordinates. (dudx, dvdx) and (dudy, dvdy) are how far (u, v) moves over one pixel
+    across and down the image: the longer, in texels, is the footprint that sets the mip level.
+    """
+    r, g, bl, alpha = material[0], material[1], material[2], 1.0
+    row = tables.objects[obj]
+    if row[HAS_COLORS]:
+        r *= w0 * colors[a, 0] + w1 * colors[b, 0] + w2 * colors[c, 0]
+        g *= w0 * colors[a, 1] + w1 * colors[b, 1] + w2 * colors[c, 1]
+        bl *= w0 * colors[a, 2] + w1 * colors[b, 2] + w2 * colors[c, 2]
+        alpha *= w0 * colors[a, 3] + w1 * colors[b, 3] + w2 * colors[c, 3]
+    texture = row[TEXTURE]
+    if texture >= 0:
+        u = w0 * uv[a, 0] + w1 * uv[b, 0] + w2 * uv[c, 0]
+        v = w0 * uv[a, 1] + w1 * uv[b, 1] + w2 * uv[c, 1]
+        base = tables.textures[texture, 0]
+        width, height = tables.levels[base, 1], tables.levels[base, 2]
+        across = math.hypot(dudx * width, dvdx * height)
+        down = math.hypot(dudy * width, dvdy * height)
+        footprint = max(across, down)
+        tr, tg, tb, ta = sample(tables, texture, u, v, footprint)
+        r *= tr
+        g *= tg
+        bl *= tb
+        alpha *= ta
+    return r, g, bl, alpha
+
+
+def tiny_tables() -> SurfaceTables:
+    """Return a 2 x 2 texture with two levels on object 0, for the kernels' warm-ups."""
+    texels = np.full((5, 4), 255, dtype=np.uint8)
+    return SurfaceTables(
+        texels,
+        np.array([[0, 2, 2], [4, 1, 1]], dtype=np.intp),
+        np.array([[0, 2, TRILINEAR, REPEAT]], dtype=np.intp),
+        np.array([[0, 1]], dtype=np.intp),
+        np.linspace(0.0, 1.0, 256),
+    )
