@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import math
 import time
 from pathlib import Path
 from typing import Any
@@ -16,6 +17,7 @@ from pixelpath.cli._common import (
 )
 from pixelpath.cli._frames import add_frame_options, run_frames, wants_frames
 from pixelpath.figures import DRAWN_METHODS
+from pixelpath.io.aovs import AOVS, parse_aovs, write_aovs
 from pixelpath.io.models import MODEL_FORMATS
 from pixelpath.raster.shading import SHADINGS
 from pixelpath.renderer import METHOD_NAMES, STYLES
@@ -76,7 +78,25 @@ def register(subparsers: Any) -> None:
     parser.add_argument("--ssaa", type=int, default=1, help="supersampling per side (1 = none)")
     parser.add_argument("--no-cull", action="store_true", help="draw back faces too (two-sided)")
     parser.add_argument("--blinn", action="store_true", help="Blinn-Phong highlights")
-    parser.add_argument("--gamma", type=float, help="encode with this display gamma (e.g. 2.2)")
+    parser.add_argument(
+        "--gamma",
+        type=parse_gamma,
+        help="encode with this display gamma (e.g. 2.2), 'srgb' or 'linear' (default: the "
+        "scene's encoding: sRGB for model files, linear for scene files)",
+    )
+    parser.add_argument(
+        "--transparent",
+        action="store_true",
+        help="write RGBA (PNG): the background transparent, edges (with --ssaa) partly",
+    )
+    parser.add_argument(
+        "--aov",
+        type=parse_aovs_option,
+        default=(),
+        metavar="LIST",
+        help=f"also write these buffers beside the image, comma-separated ({', '.join(AOVS)}): "
+        "depth as .npy, normal, id and alpha as PNG",
+    )
     tracing = parser.add_argument_group("ray tracing (--method raytrace)")
     tracing.add_argument(
         "--samples", type=int, default=1, help="stratified, seeded samples per pixel (default 1)"
@@ -127,6 +147,34 @@ def parse_size(text: str) -> tuple[int, int]:
         raise CommandError(f"--size must look like 1024x768 (WIDTHxHEIGHT), got {text!r}")
     width, height = (int(part) for part in parts)
     return width, height
+
+
+def parse_gamma(text: str) -> float | str:
+    """Return ``--gamma``: a positive number, ``"srgb"`` or ``"linear"``.
+
+    Examples
+    --------
+    >>> from pixelpath.cli.render import parse_gamma
+    >>> parse_gamma("2.2"), parse_gamma("sRGB")
+    (2.2, 'srgb')
+    """
+    if text.strip().lower() in ("srgb", "linear"):
+        return text.strip().lower()
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not value > 0 or not math.isfinite(value):
+        raise argparse.ArgumentTypeError(f"expected a positive number, srgb or linear: {text!r}")
+    return value
+
+
+def parse_aovs_option(text: str) -> tuple[str, ...]:
+    """Return the AOV names of ``--aov`` (argparse reports a bad one as a usage error)."""
+    try:
+        return parse_aovs(text)
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
 
 
 def scene_path(name: str) -> Path:
@@ -202,7 +250,13 @@ def render_to_file(
             fresnel=getattr(args, "fresnel", False),
         )
     image, report = result if explain else (result, None)
-    image.save(output, gamma=args.gamma)
+    try:
+        image.save(output, gamma=args.gamma, alpha=getattr(args, "transparent", False))
+    except ValueError as exc:  # an image format without alpha
+        raise CommandError(str(exc)) from None
+    for path in write_aovs(image, output, getattr(args, "aov", ())):
+        if not args.quiet:
+            console().print(f"wrote {path}")
     return image, report, time.perf_counter() - start
 
 
@@ -211,6 +265,9 @@ def run(args: argparse.Namespace) -> int:
     scene = load_scene_sized(args.scene, args.size)
     check_figures(args)
     if wants_frames(args):
+        if args.transparent or args.aov:
+            raise CommandError("--transparent and --aov write one image's files for now; "
+                               "leave out the frame options")
         return run_frames(args, scene)
     output = Path(args.output)
     image, report, elapsed = render_to_file(scene, output, args, Path(args.scene).stem)

@@ -55,8 +55,8 @@ class FramePlan:
         The tiles of a frame, row by row; one region, the whole image, when not tiled.
     options : dict
         Keyword arguments for :func:`pixelpath.render`.
-    gamma : float or None
-        Display gamma the files are encoded with.
+    gamma : float, "srgb", "linear" or None
+        Display encoding of the files (None: the scene's ``encoding``).
     """
 
     scene: Scene
@@ -65,7 +65,7 @@ class FramePlan:
     paths: dict[int, Path] | None
     regions: tuple[Region, ...]
     options: dict[str, Any]
-    gamma: float | None = None
+    gamma: float | str | None = None
 
     @property
     def jobs(self) -> int:
@@ -323,11 +323,11 @@ def render_options(options: dict[str, Any]) -> dict[str, Any]:
     return dict(options)
 
 
-def _gamma(gamma: Any) -> float | None:
-    if gamma is None:
-        return None
+def _gamma(gamma: Any) -> float | str | None:
+    if gamma is None or gamma in ("srgb", "linear"):
+        return gamma
     if isinstance(gamma, bool) or not isinstance(gamma, numbers.Real) or not gamma > 0:
-        raise ValueError(f"gamma must be a positive number, got {gamma!r}")
+        raise ValueError(f"gamma must be a positive number, 'srgb' or 'linear', got {gamma!r}")
     return float(gamma)
 
 

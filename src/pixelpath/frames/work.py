@@ -99,10 +99,10 @@ def warm_up(options: dict[str, Any]) -> None:
 
 
 def encode(image: Image, suffix: str, gamma: float | None) -> bytes:
-    """Return ``image`` encoded as ``Image.save`` would write it."""
+    """Return ``image`` encoded as ``Image.save`` would write it (its encoding by default)."""
     from pixelpath.io.images import encode_image
 
-    return encode_image(image.rgb, suffix, gamma=gamma)
+    return encode_image(image.rgb, suffix, gamma=image.encoding if gamma is None else gamma)
 
 
 def stitch(tiles: Sequence[Image], regions: Sequence[tuple[int, int, int, int]]) -> Image:
@@ -124,8 +124,14 @@ def stitch(tiles: Sequence[Image], regions: Sequence[tuple[int, int, int, int]])
     rgb = np.empty((height, width, 3), np.float32)
     depth = np.empty((height, width), np.float32)
     object_id = np.empty((height, width), np.int32)
+    alpha = np.empty((height, width), np.float32)
+    normal = np.empty((height, width, 3), np.float32)
     for tile, (x0, y0, x1, y1) in zip(tiles, regions, strict=True):
         rgb[y0:y1, x0:x1] = tile.rgb
         depth[y0:y1, x0:x1] = tile.depth
         object_id[y0:y1, x0:x1] = tile.object_id
-    return Image(rgb, depth, object_id)
+        alpha[y0:y1, x0:x1] = tile.alpha
+        normal[y0:y1, x0:x1] = tile.normal
+    first = tiles[0]
+    return Image(rgb, depth, object_id, alpha=alpha, normal=normal,
+                 background=first._background, encoding=first.encoding)

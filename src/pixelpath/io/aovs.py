@@ -1,0 +1,112 @@
+"""Write a rendered image's other buffers ("arbitrary output variables") beside the picture.
+
+Each is written atomically next to the image, named ``<stem>.<aov>.<ext>``:
+
+========  ============================  ==================================================
+AOV       file                          contents
+========  ============================  ==================================================
+depth     ``<stem>.depth.npy``          float32 (H, W) distance along the viewing axis in
+                                        scene units, ``inf`` where nothing was drawn
+normal    ``<stem>.normal.png``         8-bit RGB ``(n + 1) / 2`` of the unit world-space
+                                        normal; black where nothing was drawn
+id        ``<stem>.id.png``             16-bit greyscale: object index + 1, 0 for the
+                                        background (the scene's object order)
+alpha     ``<stem>.alpha.png``          8-bit coverage, 255 where a surface covers the pixel
+========  ============================  ==================================================
+
+Depth goes to ``.npy`` rather than an image: it is unbounded and ``inf`` marks the background,
+which no integer format holds without a scale the reader must know.
+"""
+
+from __future__ import annotations
+
+import io
+import os
+from collections.abc import Iterable
+from pathlib import Path
+
+import numpy as np
+
+__all__ = ["AOVS", "aov_path", "parse_aovs", "write_aovs"]
+
+AOVS = ("depth", "normal", "id", "alpha")
+_SUFFIXES = {"depth": ".npy", "normal": ".png", "id": ".png", "alpha": ".png"}
+
+
+def parse_aovs(text: str | Iterable[str]) -> tuple[str, ...]:
+    """Return the AOV names of ``"depth,normal"`` (or a sequence), checked and deduplicated.
+
+    Examples
+    --------
+    >>> from pixelpath.io.aovs import parse_aovs
+    >>> parse_aovs("normal, depth,normal")
+    ('normal', 'depth')
+    """
+    names = text.split(",") if isinstance(text, str) else list(text)
+    chosen: list[str] = []
+    for raw in names:
+        name = str(raw).strip().lower()
+        if name not in AOVS:
+            raise ValueError(f"unknown AOV {raw!r}; choose from {', '.join(AOVS)}")
+        if name not in chosen:
+            chosen.append(name)
+    return tuple(chosen)
+
+
+def aov_path(image_path: str | os.PathLike, aov: str) -> Path:
+    """Return where :func:`write_aovs` writes ``aov`` for the picture at ``image_path``.
+
+    Examples
+    --------
+    >>> from pixelpath.io.aovs import aov_path
+    >>> aov_path("out/duck.png", "depth").as_posix()
+    'out/duck.depth.npy'
+    """
+    path = Path(image_path)
+    return path.with_name(f"{path.stem}.{aov}{_SUFFIXES[aov]}")
+
+
+def write_aovs(image, image_path: str | os.PathLike, aovs: Iterable[str]) -> list[Path]:
+    """Write the chosen buffers of ``image`` beside ``image_path``; return the paths written.
+
+    Examples
+    --------
+    >>> import numpy as np, os, tempfile
+    >>> from pixelpath import Image
+    >>> from pixelpath.io.aovs import write_aovs
+    >>> folder = tempfile.mkdtemp()
+    >>> img = Image(np.zeros((2, 2, 3)), depth=np.full((2, 2), 3.0), object_id=np.zeros((2, 2)))
+    >>> [p.name for p in write_aovs(img, os.path.join(folder, "a.png"), ["depth", "id"])]
+    ['a.depth.npy', 'a.id.png']
+    >>> float(np.load(os.path.join(folder, "a.depth.npy"))[0, 0])
+    3.0
+    """
+    from pixelpath.io.images import write_bytes
+
+    written = []
+    for aov in parse_aovs(aovs):
+        path = aov_path(image_path, aov)
+        write_bytes(path, _encoded(image, aov))
+        written.append(path)
+    return written
+
+
+def _encoded(image, aov: str) -> bytes:
+    from PIL import Image as PILImage
+
+    buffer = io.BytesIO()
+    if aov == "depth":
+        np.save(buffer, np.asarray(image.depth, dtype=np.float32))
+        return buffer.getvalue()
+    if aov == "normal":
+        drawn = image.object_id >= 0
+        pixels = np.where(drawn[..., None], np.rint((image.normal + 1.0) * 127.5), 0)
+        PILImage.fromarray(pixels.astype(np.uint8)).save(buffer, format="PNG")
+    elif aov == "id":
+        ids = image.object_id.astype(np.int64) + 1
+        if ids.max(initial=0) > 65535:
+            raise ValueError("the id AOV holds object indices up to 65534 (a 16-bit PNG)")
+        PILImage.fromarray(ids.astype(np.uint16)).save(buffer, format="PNG")
+    else:
+        PILImage.fromarray(np.rint(image.alpha * 255.0).astype(np.uint8)).save(buffer, "PNG")
+    return buffer.getvalue()
