@@ -128,3 +128,118 @@ def test_invalid_arguments_are_named(kwargs, error, message):
     arguments = {"eye": (0, 0, 5), "target": (0, 0, 0), **kwargs}
     with pytest.raises(error, match=message):
         Camera(**arguments)
+
+
+# Orthographic cameras.
+
+
+def ortho(**kwargs) -> Camera:
+    arguments = {"eye": (0, 0, 5), "target": (0, 0, 0), "width": 8, "height": 4, "near": 1,
+                 "far": 9, "projection": "orthographic", "view_height": 2.0, **kwargs}
+    return Camera(**arguments)
+
+
+def test_orthographic_view_box_maps_to_plus_minus_one():
+    # view_height 2 and aspect 2: the box is x in [-2, 2], y in [-1, 1], depth in [1, 9].
+    camera = ortho()
+    np.testing.assert_allclose(ndc(camera, (2, 1, 5 - 1)), [1, 1, -1], atol=1e-15)
+    np.testing.assert_allclose(ndc(camera, (-2, -1, 5 - 9)), [-1, -1, 1], atol=1e-15)
+    np.testing.assert_allclose(ndc(camera, (1, -0.5, 0)), [0.5, -0.5, 0.0], atol=1e-15)
+
+
+def test_orthographic_size_on_screen_does_not_depend_on_depth():
+    camera = ortho()
+    near_point, far_point = ndc(camera, (1.5, 0.5, 3.5)), ndc(camera, (1.5, 0.5, -3.5))
+    np.testing.assert_allclose(near_point[:2], far_point[:2], atol=1e-15)
+    assert (camera.projection_matrix() @ camera.view_matrix() @ [1.5, 0.5, -3.5, 1])[3] == 1
+
+
+def test_viewpoint_is_the_eye_or_the_point_at_infinity_behind_the_camera():
+    np.testing.assert_array_equal(Camera(eye=(1, 2, 3), target=(0, 0, 0)).viewpoint(),
+                                  [1, 2, 3, 1])
+    behind = ortho(eye=(0, 4, 0), target=(0, 0, 0), up=(0, 0, -1)).viewpoint()
+    np.testing.assert_array_equal(behind, [0, 1, 0, 0])
+
+
+def test_perspective_stays_the_default():
+    camera = Camera(eye=(0, 0, 5), target=(0, 0, 0))
+    assert (camera.projection, camera.view_height, camera.orthographic) == (
+        "perspective", None, False)
+    assert ortho().orthographic
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "error", "message"),
+    [
+        ({"view_height": None}, ValueError, "projection='orthographic' needs view_height"),
+        ({"view_height": 0}, ValueError, "view_height must be positive"),
+        ({"view_height": -2}, ValueError, "view_height must be positive"),
+        ({"view_height": float("inf")}, ValueError, "view_height must be finite"),
+        ({"view_height": "4"}, TypeError, "view_height must be a real number"),
+        ({"projection": "isometric"}, ValueError, "projection must be one of"),
+        ({"projection": 1}, TypeError, "projection must be a string"),
+        ({"projection": "perspective", "view_height": 4.0}, ValueError,
+         "view_height is for projection='orthographic' only"),
+    ],
+)
+def test_invalid_orthographic_arguments_are_named(kwargs, error, message):
+    with pytest.raises(error, match=message):
+        ortho(**kwargs)
+
+
+ORTHO_TOML = """
+[camera]
+eye = [4, 3, 5]
+target = [0, 0, 0]
+width = 64
+height = 48
+projection = "orthographic"
+view_height = 4.0
+
+[[objects]]
+type = "sphere"
+center = [0, 0, 0]
+radius = 1
+"""
+
+
+def test_orthographic_camera_round_trips_through_toml_and_to_dict(tmp_path):
+    import json
+
+    from pixelpath.scene import Scene, load_scene
+
+    path = tmp_path / "ortho.toml"
+    path.write_text(ORTHO_TOML)
+    scene = load_scene(path)
+    assert (scene.camera.projection, scene.camera.view_height) == ("orthographic", 4.0)
+    data = json.loads(json.dumps(scene.to_dict()))
+    assert data["camera"]["projection"] == "orthographic"
+    assert data["camera"]["view_height"] == 4.0
+    assert Scene.from_dict(data).camera == scene.camera
+    perspective = Scene.from_dict({"camera": {"eye": [0, 0, 5], "target": [0, 0, 0]}})
+    assert "view_height" not in perspective.to_dict()["camera"]  # TOML has no null
+    assert Scene.from_dict(perspective.to_dict()).camera == perspective.camera
+
+
+def test_orthographic_toml_validates_against_the_published_schema(tmp_path):
+    jsonschema = pytest.importorskip("jsonschema")
+    import tomllib
+
+    from pixelpath.scene.schema import scene_json_schema
+
+    jsonschema.validate(tomllib.loads(ORTHO_TOML), scene_json_schema())
+    bad = tomllib.loads(ORTHO_TOML.replace('"orthographic"', '"isometric"'))
+    with pytest.raises(jsonschema.ValidationError):
+        jsonschema.validate(bad, scene_json_schema())
+
+
+def test_orthographic_toml_errors_name_the_file_and_key(tmp_path):
+    from pixelpath.scene import load_scene
+
+    path = tmp_path / "bad.toml"
+    path.write_text(ORTHO_TOML.replace("view_height = 4.0\n", ""))
+    with pytest.raises(ValueError, match=r"bad\.toml.*camera.*needs view_height"):
+        load_scene(path)
+    path.write_text(ORTHO_TOML.replace('"orthographic"', '"isometric"'))
+    with pytest.raises(ValueError, match=r"bad\.toml.*camera\.projection"):
+        load_scene(path)

@@ -65,6 +65,8 @@ def summarize(scene: Any, file: str) -> dict[str, Any]:
             "height": camera.height,
             "near": camera.near,
             "far": camera.far,
+            "projection": camera.projection,
+            "view_height": camera.view_height,
         },
         "objects": objects,
         "lights": [_light_summary(light) for light in scene.lights],
@@ -127,6 +129,14 @@ def _bounds(bounds: list[list[float]] | None) -> str:
     return "infinite" if bounds is None else f"{_vector(bounds[0])} … {_vector(bounds[1])}"
 
 
+def _view(camera: dict[str, Any]) -> str:
+    """Describe the camera's view: its field of view, or an orthographic view's size."""
+    if camera["projection"] == "orthographic":
+        aspect = camera["width"] / camera["height"]
+        return f"orthographic {camera['view_height'] * aspect:g} × {camera['view_height']:g} units"
+    return f"fov {camera['fov']:g}°"
+
+
 def _count(value: int | None) -> str:
     return "analytic" if value is None else f"{value:,}"
 
@@ -139,7 +149,7 @@ def _print_tables(summary: dict[str, Any]) -> None:
     out.print(f"[bold]{summary['file']}[/]")
     out.print(
         f"camera: eye {_vector(camera['eye'])} → target {_vector(camera['target'])}, "
-        f"fov {camera['fov']:g}°, {camera['width']}×{camera['height']} px, "
+        f"{_view(camera)}, {camera['width']}×{camera['height']} px, "
         f"near {camera['near']:g}, far {camera['far']:g}"
     )
     objects = Table(title="objects", title_justify="left")

@@ -535,7 +535,11 @@ def scene_to_dict(scene: Scene, base_dir: str | Path | None = None) -> dict[str,
     ]
     ambient = scene.ambient.tolist()
     data: dict[str, Any] = {
-        "camera": {name: _plain(getattr(scene.camera, name)) for name in CAMERA},
+        "camera": {
+            name: _plain(getattr(scene.camera, name))
+            for name in CAMERA
+            if getattr(scene.camera, name) is not None  # a perspective camera's view_height
+        },
         "ambient": ambient[0] if len(set(ambient)) == 1 else ambient,
         "background": scene.background.tolist(),
         "lights": [_light_dict(light) for light in scene.lights],

@@ -21,7 +21,7 @@ from collections.abc import Callable
 from typing import Any
 
 from pixelpath.scene.animation import INTERPOLATIONS, Animation, Turntable
-from pixelpath.scene.camera import Camera
+from pixelpath.scene.camera import PROJECTIONS, Camera
 from pixelpath.scene.lights import DirectionalLight, PointLight
 from pixelpath.scene.material import Material
 from pixelpath.scene.primitives import Box, Plane, Sphere
@@ -106,6 +106,11 @@ KINDS: dict[str, Kind] = {
         lambda x: isinstance(x, dict), "a table of translate, rotate, scale",
         {"$ref": "#/$defs/transform"},
     ),
+    "projection": Kind(
+        lambda x: x in PROJECTIONS,
+        " or ".join(map(repr, PROJECTIONS)),
+        {"enum": list(PROJECTIONS)},
+    ),
     "interpolation": Kind(
         lambda x: x in INTERPOLATIONS,
         " or ".join(map(repr, INTERPOLATIONS)),
@@ -135,6 +140,8 @@ CAMERA = {
     "height": Key("integer", "image height in pixels (1..16384)"),
     "near": Key("number", "near clipping distance, > 0"),
     "far": Key("number", "far clipping distance, > near"),
+    "projection": Key("projection", "'perspective' (default) or 'orthographic'"),
+    "view_height": Key("number", "orthographic only, required there: view height in world units"),
 }
 
 MATERIAL = {
