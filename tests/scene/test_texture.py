@@ -1,0 +1,372 @@
+"""Textures: sRGB decoding, the mip pyramid, inputs and errors, and the sampling kernel.
+
+The sampling kernel is checked against a NumPy reference written here from the documented
+conventions (texel (col, row) centred at u = (col + 0.5) / W, v = 1 - (row + 0.5) / H; the
+wrap modes built by tiling the index sequence), and against hand-derived values.
+"""
+
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from PIL import Image as PILImage
+
+from pixelpath.scene import Material, Mesh
+from pixelpath.scene import _texture_kernels as tk
+from pixelpath.scene.texture import (
+    MAX_SIDE,
+    Texture,
+    linear_to_srgb,
+    srgb_to_linear,
+    surface_tables,
+)
+
+QUAD = [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]]
+QUAD_UV = [[0, 0], [1, 0], [1, 1], [0, 1]]
+
+
+# --- sRGB ----------------------------------------------------------------------------------
+
+
+def test_srgb_decode_of_known_codes():
+    # IEC 61966-2-1: linear segment below 0.04045, power 2.4 above.
+    codes = np.array([0, 10, 11, 128, 188, 255]) / 255.0
+    expected = [
+        0.0,
+        (10 / 255) / 12.92,
+        ((11 / 255 + 0.055) / 1.055) ** 2.4,
+        ((128 / 255 + 0.055) / 1.055) ** 2.4,  # ~0.2158
+        ((188 / 255 + 0.055) / 1.055) ** 2.4,  # ~0.5029
+        1.0,
+    ]
+    assert srgb_to_linear(codes) == pytest.approx(expected, rel=1e-12)
+    assert srgb_to_linear(128 / 255) == pytest.approx(0.21586, abs=1e-5)
+    assert linear_to_srgb(0.5) * 255 == pytest.approx(187.5, abs=0.1)  # 0.5 encodes to 188
+    grid = np.linspace(0, 1, 1001)
+    assert linear_to_srgb(srgb_to_linear(grid)) == pytest.approx(grid, abs=1e-12)
+
+
+def test_uint8_texture_is_decoded_float_texture_is_linear():
+    codes = np.array([[[0, 128, 255], [64, 188, 10]]], dtype=np.uint8)
+    eight = Texture(codes)
+    assert eight.srgb is True
+    assert eight.linear()[..., :3] == pytest.approx(srgb_to_linear(codes / 255.0), abs=1e-12)
+    assert np.all(eight.linear()[..., 3] == 1.0)
+    floats = np.array([[[0.0, 0.25, 1.0], [0.5, 0.75, 0.125]]])
+    linear = Texture(floats)
+    assert linear.srgb is False
+    # Stored as 8-bit sRGB codes: the round trip is within half a code step.
+    stored = linear.linear()[..., :3]
+    step = srgb_to_linear(np.minimum(linear_to_srgb(floats) + 1 / 255, 1)) - floats
+    assert np.all(np.abs(stored - floats) <= step / 2 + 1e-12)
+    # srgb= overrides the guess either way.
+    assert Texture(codes, srgb=False).linear()[0, 0, 1] == pytest.approx(128 / 255, abs=3e-3)
+    # (sRGB floats are stored as the nearest 8-bit code: 0.25 -> 64.)
+    assert Texture(floats, srgb=True).linear()[0, 0, 1] == pytest.approx(
+        srgb_to_linear(64 / 255), abs=1e-12
+    )
+
+
+# --- the pyramid ---------------------------------------------------------------------------
+
+
+def numpy_half(linear: np.ndarray) -> np.ndarray:
+    """2 x 2 averages, an odd side repeating its last row/column (written independently)."""
+    h, w = linear.shape[:2]
+    out_h, out_w = max(1, (h + 1) // 2), max(1, (w + 1) // 2)
+    out = np.zeros((out_h, out_w, linear.shape[2]))
+    for r in range(out_h):
+        for c in range(out_w):
+            rows = [min(2 * r, h - 1), min(2 * r + 1, h - 1)] if h > 1 else [0]
+            cols = [min(2 * c, w - 1), min(2 * c + 1, w - 1)] if w > 1 else [0]
+            out[r, c] = np.mean([linear[i, j] for i in rows for j in cols], axis=0)
+    return out
+
+
+def test_level_sizes_for_odd_sides():
+    texture = Texture(np.zeros((7, 5, 3), dtype=np.uint8))
+    shapes = [level.shape for level in texture.levels]
+    assert shapes == [(7, 5, 4), (4, 3, 4), (2, 2, 4), (1, 1, 4)]
+    assert [level.dtype for level in texture.levels] == [np.uint8] * 4
+    strip = Texture(np.zeros((1, 6, 3)))
+    assert [level.shape[:2] for level in strip.levels] == [(1, 6), (1, 3), (1, 2), (1, 1)]
+
+
+def test_levels_average_in_linear_light():
+    rng = np.random.default_rng(3)
+    codes = rng.integers(0, 256, (7, 5, 4), dtype=np.uint8)
+    texture = Texture(codes)
+    expected = texture.linear(0)
+    for k in range(1, len(texture.levels)):
+        # Each level averages the exact (unrounded) linear values of the one above.
+        expected = numpy_half(expected)
+        got = texture.linear(k)
+        # Each level is stored as 8-bit sRGB: within half a code of the exact average.
+        assert np.allclose(got[..., 3], expected[..., 3], atol=0.5 / 255 + 1e-12)
+        encoded = linear_to_srgb(expected[..., :3]) * 255
+        assert np.all(np.abs(texture.levels[k][..., :3] - encoded) <= 0.5 + 1e-9)
+    # Black and white average to linear 0.5 (sRGB code 188), not to code 128.
+    stripes = Texture(np.array([[[0, 0, 0], [255, 255, 255]]], dtype=np.uint8))
+    assert stripes.levels[1][0, 0, :3].tolist() == [188, 188, 188]
+    assert stripes.linear(1)[0, 0, 0] == pytest.approx(0.5, abs=3e-3)
+
+
+@pytest.mark.parametrize("channels", [3, 4])
+def test_array_inputs(channels):
+    rng = np.random.default_rng(channels)
+    codes = rng.integers(0, 256, (3, 4, channels), dtype=np.uint8)
+    by_uint8 = Texture(codes)
+    assert (by_uint8.width, by_uint8.height) == (4, 3)
+    assert np.array_equal(by_uint8.levels[0][..., :channels], codes)
+    if channels == 3:
+        assert np.all(by_uint8.levels[0][..., 3] == 255)
+    # uint16 is scaled by 1/65535 and taken as linear.
+    wide = (codes.astype(np.uint32) * 257).astype(np.uint16)
+    by_uint16 = Texture(wide)
+    assert by_uint16.srgb is False
+    assert np.allclose(by_uint16.linear()[..., :3], Texture(codes / 255.0).linear()[..., :3])
+    # A float array of the same codes with srgb=True is the uint8 texture.
+    assert Texture(codes / 255.0, srgb=True) == by_uint8
+    # A nested list works as an array.
+    assert Texture((codes / 255.0).tolist(), srgb=True) == by_uint8
+
+
+def test_pil_and_path_inputs(tmp_path):
+    rng = np.random.default_rng(5)
+    codes = rng.integers(0, 256, (5, 6, 3), dtype=np.uint8)
+    picture = PILImage.fromarray(codes)
+    path = tmp_path / "picture.png"
+    picture.save(path)
+    from_pil = Texture(picture)
+    from_path = Texture(path)
+    from_str = Texture(str(path))
+    assert from_pil == Texture(codes) == from_path == from_str
+    assert from_path.name == "picture.png" and from_path.srgb is True
+    assert np.all(from_path.linear()[..., 3] == 1.0)
+    # Greyscale and RGBA pictures.
+    grey = PILImage.fromarray(codes[..., 0])
+    assert np.array_equal(Texture(grey).levels[0][..., 0], codes[..., 0])
+    assert np.array_equal(Texture(grey).levels[0][..., 2], codes[..., 0])
+    rgba = np.dstack([codes, np.full((5, 6), 77, np.uint8)])
+    assert np.all(Texture(PILImage.fromarray(rgba, "RGBA")).linear()[..., 3] == 77 / 255)
+
+
+@pytest.mark.parametrize(
+    ("image", "error", "match"),
+    [
+        (np.zeros((4, 4)), ValueError, "shape"),
+        (np.zeros((4, 4, 2)), ValueError, "shape"),
+        (np.zeros((4, 4, 5)), ValueError, "shape"),
+        (np.zeros((0, 4, 3)), ValueError, "shape"),
+        (np.full((2, 2, 3), np.nan), ValueError, "finite"),
+        (np.full((2, 2, 3), np.inf), ValueError, "finite"),
+        (np.full((2, 2, 3), 1.5), ValueError, r"\[0, 1\]"),
+        (np.full((2, 2, 3), -0.1), ValueError, r"\[0, 1\]"),
+        (np.zeros((2, 2, 3), dtype=bool), TypeError, "bool"),
+        (np.full((2, 2, 3), "a"), TypeError, "dtype"),
+    ],
+)
+def test_bad_arrays(image, error, match):
+    with pytest.raises(error, match=match):
+        Texture(image)
+
+
+def test_bad_files(tmp_path):
+    with pytest.raises(FileNotFoundError, match=r"missing\.png"):
+        Texture(tmp_path / "missing.png")
+    corrupt = tmp_path / "corrupt.png"
+    corrupt.write_bytes(b"\x89PNG\r\n\x1a\n" + b"garbage" * 20)
+    with pytest.raises(ValueError, match=r"corrupt\.png"):
+        Texture(corrupt)
+    text = tmp_path / "notes.jpg"
+    text.write_text("not a picture")
+    with pytest.raises(ValueError, match=r"notes\.jpg"):
+        Texture(text)
+    # A truncated PNG: the header reads, the pixels do not.
+    good = tmp_path / "good.png"
+    PILImage.fromarray(np.random.default_rng(0).integers(0, 256, (64, 64, 3), np.uint8)).save(good)
+    truncated = tmp_path / "truncated.png"
+    truncated.write_bytes(good.read_bytes()[:200])
+    with pytest.raises(ValueError, match=r"truncated\.png"):
+        Texture(truncated)
+
+
+def test_bad_keywords():
+    with pytest.raises(TypeError, match="srgb"):
+        Texture(np.zeros((1, 1, 3)), srgb="yes")
+    with pytest.raises(TypeError, match="name"):
+        Texture(np.zeros((1, 1, 3)), name=3)
+
+
+def test_oversized_texture_is_reduced_with_a_warning():
+    wide = np.zeros((1, 2 * MAX_SIDE + 2, 3), dtype=np.uint8)  # 16386 texels: every 3rd kept
+    wide[0, ::3] = 255
+    with pytest.warns(UserWarning, match=str(MAX_SIDE)):
+        texture = Texture(wide)
+    assert texture.width <= MAX_SIDE and texture.width == -(-wide.shape[1] // 3)
+    assert np.all(texture.levels[0][..., :3] == 255)  # the kept texels are the 0th, 3rd, ...
+    picture = PILImage.fromarray(np.zeros((1, MAX_SIDE + 1, 3), dtype=np.uint8))
+    with pytest.warns(UserWarning, match=str(MAX_SIDE)):
+        assert Texture(picture).width <= MAX_SIDE
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert Texture(np.zeros((1, MAX_SIDE, 3), dtype=np.uint8)).width == MAX_SIDE
+
+
+def test_equality_by_value_and_unhashable():
+    a = Texture(np.full((2, 2, 3), 0.5))
+    assert a == Texture(np.full((2, 2, 3), 0.5))
+    assert a != Texture(np.full((2, 2, 3), 0.25))
+    with pytest.raises(TypeError):
+        hash(a)
+
+
+# --- surface tables and the sampling kernel ------------------------------------------------
+
+
+def wrap_index(index: np.ndarray, size: int, wrap: str) -> np.ndarray:
+    if wrap == "clamp":
+        return np.clip(index, 0, size - 1)
+    if wrap == "repeat":
+        return np.mod(index, size)
+    tiled = np.concatenate([np.arange(size), np.arange(size)[::-1]])  # 0 1 .. n-1 n-1 .. 0
+    return tiled[np.mod(index, 2 * size)]
+
+
+def reference_nearest(level: np.ndarray, u, v, wrap: str) -> np.ndarray:
+    h, w = level.shape[:2]
+    col = wrap_index(np.floor(np.asarray(u) * w).astype(int), w, wrap)
+    row = wrap_index(np.floor((1 - np.asarray(v)) * h).astype(int), h, wrap)
+    return level[row, col]
+
+
+def reference_bilinear(level: np.ndarray, u, v, wrap: str) -> np.ndarray:
+    h, w = level.shape[:2]
+    x = np.asarray(u) * w - 0.5  # texel centres at integers
+    y = (1 - np.asarray(v)) * h - 0.5
+    x0, y0 = np.floor(x), np.floor(y)
+    fx, fy = (x - x0)[..., None], (y - y0)[..., None]
+    c0, c1 = (wrap_index(x0.astype(int) + d, w, wrap) for d in (0, 1))
+    r0, r1 = (wrap_index(y0.astype(int) + d, h, wrap) for d in (0, 1))
+    top = (1 - fx) * level[r0, c0] + fx * level[r0, c1]
+    bottom = (1 - fx) * level[r1, c0] + fx * level[r1, c1]
+    return (1 - fy) * top + fy * bottom
+
+
+def tables_for(texture: Texture, texture_filter: str, wrap: str):
+    material = Material(texture=texture, texture_filter=texture_filter, texture_wrap=wrap)
+    return surface_tables([Mesh(QUAD, [[0, 1, 2, 3]], material, uv=QUAD_UV)])
+
+
+def kernel(tables, u, v, footprint=1.0) -> np.ndarray:
+    return np.array([tk.sample(tables, 0, float(a), float(b), footprint) for a, b in zip(
+        np.atleast_1d(u), np.atleast_1d(v), strict=True)])
+
+
+RNG_TEXTURE = Texture(np.random.default_rng(11).integers(0, 256, (6, 5, 4), dtype=np.uint8))
+
+
+@pytest.mark.parametrize("wrap", ["repeat", "clamp", "mirror"])
+@pytest.mark.parametrize("texture_filter", ["nearest", "bilinear"])
+def test_sample_matches_numpy_reference(texture_filter, wrap):
+    rng = np.random.default_rng(7)
+    u, v = rng.uniform(-2.5, 2.5, (2, 400))
+    tables = tables_for(RNG_TEXTURE, texture_filter, wrap)
+    reference = reference_nearest if texture_filter == "nearest" else reference_bilinear
+    expected = reference(RNG_TEXTURE.linear(0), u, v, wrap)
+    assert np.allclose(kernel(tables, u, v, footprint=7.0), expected, atol=1e-12)
+
+
+@settings(max_examples=50, deadline=None)
+@given(
+    st.floats(-3, 3, allow_nan=False),
+    st.floats(-3, 3, allow_nan=False),
+    st.sampled_from(["repeat", "clamp", "mirror"]),
+    st.integers(0, 3),
+    st.floats(0.0, 1.0),
+)
+def test_trilinear_blends_the_two_levels_around_log2_footprint(u, v, wrap, k, frac):
+    tables = tables_for(RNG_TEXTURE, "trilinear", wrap)
+    count = len(RNG_TEXTURE.levels)  # 6x5 -> 3x3 -> 2x2 -> 1x1: four levels
+    assert count == 4
+    exact = kernel(tables, u, v, footprint=2.0**k)[0]
+    assert np.allclose(exact, reference_bilinear(RNG_TEXTURE.linear(k), u, v, wrap), atol=1e-12)
+    if k < count - 1:
+        between = kernel(tables, u, v, footprint=2.0 ** (k + frac))[0]
+        lower = reference_bilinear(RNG_TEXTURE.linear(k), u, v, wrap)
+        upper = reference_bilinear(RNG_TEXTURE.linear(k + 1), u, v, wrap)
+        assert np.allclose(between, (1 - frac) * lower + frac * upper, atol=1e-12)
+    # Below one texel per pixel: the base level; far beyond the pyramid: the last level.
+    base = reference_bilinear(RNG_TEXTURE.linear(0), u, v, wrap)
+    assert np.allclose(kernel(tables, u, v, footprint=0.3)[0], base, atol=1e-12)
+    top = RNG_TEXTURE.linear(count - 1)[0, 0]
+    assert np.allclose(kernel(tables, u, v, footprint=1e6)[0], top, atol=1e-12)
+
+
+def test_sample_hand_values_on_a_two_by_two_texture():
+    # Rows top to bottom: red, green / blue, white. v up: (0.25, 0.75) is the top-left texel.
+    codes = np.array([[[255, 0, 0], [0, 255, 0]], [[0, 0, 255], [255, 255, 255]]], np.uint8)
+    texture = Texture(codes)
+    red, green, blue, white = [1, 0, 0, 1], [0, 1, 0, 1], [0, 0, 1, 1], [1, 1, 1, 1]
+    nearest = tables_for(texture, "nearest", "repeat")
+    assert kernel(nearest, [0.25, 0.75, 0.25, 0.75], [0.75, 0.75, 0.25, 0.25]).tolist() == [
+        red, green, blue, white,
+    ]
+    bilinear = tables_for(texture, "bilinear", "clamp")
+    # Texel centres give the texel; the middle of the picture the average of all four.
+    assert np.allclose(kernel(bilinear, 0.25, 0.75), [red])
+    assert np.allclose(kernel(bilinear, 0.5, 0.5), [[0.5, 0.5, 0.5, 1.0]])
+    # Halfway between the top two texels.
+    assert np.allclose(kernel(bilinear, 0.5, 0.75), [[0.5, 0.5, 0, 1]])
+    # Clamp: outside the picture is the nearest edge texel.
+    assert np.allclose(kernel(bilinear, [-0.3, 1.7], [0.75, 0.25]), [red, white])
+
+
+@pytest.mark.parametrize(
+    ("wrap", "u", "expected_u"),
+    [
+        ("repeat", -0.33, 0.67),
+        ("repeat", 1.74, 0.74),
+        ("repeat", 2.16, 0.16),
+        ("clamp", -0.33, 0.05),
+        ("clamp", 1.74, 0.95),
+        ("mirror", -0.33, 0.33),
+        ("mirror", 1.74, 0.26),
+        ("mirror", 2.16, 0.16),
+        ("mirror", -1.24, 0.76),
+    ],
+)
+def test_wrap_modes_by_hand(wrap, u, expected_u):
+    # A 10-texel ramp: texel c holds c / 9 in red (linear floats), so the nearest sample
+    # at u tells which column was read (u chosen away from texel borders).
+    ramp = np.zeros((1, 10, 3))
+    ramp[0, :, 0] = np.arange(10) / 9
+    texture = Texture(ramp)
+    tables = tables_for(texture, "nearest", wrap)
+    got = kernel(tables, u, 0.5)[0, 0]
+    want = texture.linear()[0, int(np.floor(expected_u * 10)), 0]
+    assert got == pytest.approx(want, abs=1e-12)
+    # The same along v (rows run downwards: v = 1 - (row + 0.5) / H).
+    column = np.ascontiguousarray(ramp.transpose(1, 0, 2)[::-1])  # row 9 at the top
+    tables_v = tables_for(Texture(column), "nearest", wrap)
+    assert kernel(tables_v, 0.5, u)[0, 0] == pytest.approx(want, abs=1e-12)
+
+
+def test_surface_tables_pack_each_texture_once():
+    shared = Texture(np.ones((4, 4, 3)))
+    mat_a = Material(texture=shared, texture_filter="nearest")
+    mat_b = Material(texture=shared, texture_filter="bilinear", texture_wrap="mirror")
+    with_uv = Mesh(QUAD, [[0, 1, 2, 3]], mat_a, uv=QUAD_UV)
+    other = Mesh(QUAD, [[0, 1, 2, 3]], mat_b, uv=QUAD_UV, colors=[[1, 0, 0]] * 4)
+    no_uv = Mesh(QUAD, [[0, 1, 2, 3]], mat_a)  # a texture without uv is left out
+    tables = surface_tables([with_uv, other, no_uv, with_uv])
+    assert tables.levels.tolist() == [[0, 4, 4], [16, 2, 2], [20, 1, 1]]
+    assert len(tables.texels) == 21
+    assert tables.textures.tolist() == [[0, 3, tk.NEAREST, tk.REPEAT],
+                                        [0, 3, tk.BILINEAR, tk.MIRROR]]
+    assert tables.objects.tolist() == [[0, 0], [1, 1], [-1, 0], [0, 0]]
+    assert tables.decode[128] == pytest.approx(srgb_to_linear(128 / 255))
