@@ -221,13 +221,18 @@ def pack(scene: Scene, camera: Camera, options: RenderOptions):
     plane_points = np.array([p.point for _, p in planes]).reshape(-1, 3)
     viewpoint = camera.viewpoint()
     polygon_back = ~front_facing(triangles.polygon_normals, triangles.polygon_points, viewpoint)
+    # Double-sided materials are never culled (as in the rasterizer's pipeline.prepare).
+    double_sided = np.array([o.material.double_sided for o in scene.objects], dtype=bool)
+    tri_back = polygon_back[triangles.polygon] & ~double_sided[triangles.objects]
+    plane_back = ~front_facing(plane_normals, plane_points, viewpoint)
+    plane_back &= ~double_sided[np.array([k for k, _ in planes], dtype=np.intp)]
     materials = scene_materials(scene)
     world = wk.TraceScene(
         spheres=np.array([[*s.center, s.radius] for _, s in spheres]).reshape(-1, 4),
         sphere_object=np.array([k for k, _ in spheres], dtype=np.intp),
         planes=np.ascontiguousarray(np.hstack([plane_points, plane_normals])),
         plane_object=np.array([k for k, _ in planes], dtype=np.intp),
-        plane_back=~front_facing(plane_normals, plane_points, viewpoint),
+        plane_back=plane_back,
         bounds=triangles.bvh.bounds,
         links=triangles.bvh.links,
         tris=triangles.bvh.corners,
@@ -235,7 +240,7 @@ def pack(scene: Scene, camera: Camera, options: RenderOptions):
         tri_flat=triangles.flat,
         tri_object=triangles.objects,
         tri_source=triangles.bvh.order,
-        tri_back=np.ascontiguousarray(polygon_back[triangles.polygon]),
+        tri_back=np.ascontiguousarray(tri_back),
         tri_pass=np.ascontiguousarray(materials[triangles.objects, wk.TRANSPARENCY]),
         materials=materials,
         lights=pack_lights(scene.lights),
