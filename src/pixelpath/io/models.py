@@ -122,7 +122,9 @@ _TYPE_COMPONENTS = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4, "MAT2": 4, "MA
 _SCHEME = re.compile(r"^[A-Za-z][A-Za-z0-9+.\-]*:")
 
 
-def read_model(path: str | Path, *, size: tuple[int, int] | None = None) -> Scene:
+def read_model(
+    path: str | Path, *, size: tuple[int, int] | None = None, frame: bool = False
+) -> Scene:
     """Read a model file into a Scene: its parts, camera and lights, or good defaults.
 
     See the module's documentation for what each file feature becomes.
@@ -135,6 +137,8 @@ def read_model(path: str | Path, *, size: tuple[int, int] | None = None) -> Scen
     size : (int, int), optional
         Picture size (width, height) of the camera (default 800 x 600, or the glTF camera's
         aspect ratio at a height of 600).
+    frame : bool
+        Frame the model with :func:`framing_camera` even when the file has a camera.
 
     Returns
     -------
@@ -160,7 +164,7 @@ def read_model(path: str | Path, *, size: tuple[int, int] | None = None) -> Scen
     objects, gltf = _read_objects(path)
     bounds = _bounds_of(objects)
     try:
-        camera = _file_camera(gltf, bounds, size) if gltf else None
+        camera = _file_camera(gltf, bounds, size) if gltf and not frame else None
         lights = _file_lights(gltf, bounds) if gltf else []
     except (TypeError, ValueError, KeyError, AttributeError, IndexError) as exc:
         raise ValueError(f"{path}: a glTF camera or light is not valid ({exc})") from None
@@ -216,7 +220,19 @@ def _model_path(path: Any) -> Path:
 
 
 def _read_objects(path: Path) -> tuple[list[Mesh], dict | None]:
-    """Return the file's meshes and, for glTF, its checked JSON."""
+    """Return the file's meshes and, for glTF, its checked JSON; every error names the file."""
+    try:
+        return _read_checked(path)
+    except (ValueError, TypeError) as exc:
+        if str(path) in str(exc):
+            raise
+        raise type(exc)(f"{path}: {exc}") from None
+    except (KeyError, IndexError, AttributeError, OverflowError, struct.error) as exc:
+        # a JSON value of an unexpected kind that slipped past the checks, found by fuzzing
+        raise ValueError(f"{path}: malformed file ({type(exc).__name__}: {exc})") from None
+
+
+def _read_checked(path: Path) -> tuple[list[Mesh], dict | None]:
     suffix = path.suffix.lower()
     if suffix == ".stl":  # one mesh, no materials: pixelpath's own reader merges the soup
         return [Mesh.load(path, _plain_material())], None
@@ -553,6 +569,9 @@ def _texture(path: Path, image: Any, *, keep_alpha: bool) -> Any:
     if image is None:
         return None
     import PIL.Image
+
+    if not isinstance(image, PIL.Image.Image):
+        raise ValueError(f"{path}: a texture is not a picture ({type(image).__name__})")
 
     try:
         image.load()  # decode now: a truncated PNG/JPEG fails here, not in a render
