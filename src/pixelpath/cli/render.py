@@ -75,6 +75,11 @@ def register(subparsers: Any) -> None:
         help="filled surfaces, every edge (wireframe) or only the visible edges (hidden-line)",
     )
     parser.add_argument("--size", help="image size WIDTHxHEIGHT (default: the scene camera's)")
+    parser.add_argument(
+        "--frame",
+        action="store_true",
+        help="model files: frame the whole model from the front, even if the file has a camera",
+    )
     parser.add_argument("--ssaa", type=int, default=1, help="supersampling per side (1 = none)")
     parser.add_argument("--no-cull", action="store_true", help="draw back faces too (two-sided)")
     parser.add_argument("--blinn", action="store_true", help="Blinn-Phong highlights")
@@ -191,20 +196,23 @@ def scene_path(name: str) -> Path:
     raise FileNotFoundError(f"scene file not found: {path} (bundled scenes: {names})")
 
 
-def load_scene_sized(name: str, size: str | None) -> Any:
-    """Load the scene file (or bundled scene) and apply ``--size``."""
+def load_scene_sized(name: str, size: str | None, frame: bool = False) -> Any:
+    """Load the scene file (or bundled scene) and apply ``--size`` (and ``--frame``)."""
     import dataclasses
 
     from pixelpath.scene import load_scene
 
     path = scene_path(name)
-    if size is not None and path.suffix.lower() in MODEL_FORMATS:
+    model = path.suffix.lower() in MODEL_FORMATS
+    if frame and not model:
+        raise CommandError("--frame applies to model files (.glb .gltf .obj .ply .stl)")
+    if model and (size is not None or frame):
         from pixelpath.io.models import read_model
 
-        width, height = parse_size(size)
-        if not (1 <= width <= 16384 and 1 <= height <= 16384):
+        sides = None if size is None else parse_size(size)
+        if sides is not None and not all(1 <= side <= 16384 for side in sides):
             raise CommandError(f"--size {size}: each side must lie in 1..16384")
-        return read_model(path, size=(width, height))  # framed for this size, not cropped
+        return read_model(path, size=sides, frame=frame)  # framed for this size, not cropped
     scene = load_scene(path)
     if size is not None:
         width, height = parse_size(size)
@@ -262,7 +270,7 @@ def render_to_file(
 
 def run(args: argparse.Namespace) -> int:
     """Render the scene and write the image."""
-    scene = load_scene_sized(args.scene, args.size)
+    scene = load_scene_sized(args.scene, args.size, args.frame)
     check_figures(args)
     if wants_frames(args):
         if args.transparent or args.aov:
