@@ -133,3 +133,21 @@ def test_raytrace_ids_and_depths_equal_the_zbuffers_orthographically(kind):
     exact = same & ~np.isin(reference.object_id, spheres) & np.isfinite(reference.depth)
     np.testing.assert_allclose(image.depth[exact], reference.depth[exact], rtol=1e-4)
 
+
+
+@pytest.mark.parametrize("style", ["wireframe", "hidden-line"])
+def test_lines_have_the_same_pixels_at_any_distance_and_the_nearest_edges_depth(style):
+    # Seen along its axis, the box's back edges project onto its front edges: the line pixels
+    # (cells [i, i + 1) x [j, j + 1) under the ends, 10 pixels per unit) are the same at both
+    # distances and carry the depth of the front face's edges.
+    pixels = []
+    for z in (2.0, -30.0):
+        box = pp.Box((-1.23, -0.52, z - 1.0), (0.77, 0.38, z + 1.0))
+        scene = pp.Scene(ortho_camera(), objects=[box], lights=[pp.PointLight((5, 5, 20))])
+        image = pp.render(scene, style=style)
+        drawn = np.isfinite(image.depth)
+        np.testing.assert_allclose(image.depth[drawn], 10.0 - (z + 1.0), rtol=1e-6)
+        pixels.append(drawn)
+    np.testing.assert_array_equal(pixels[0], pixels[1])
+    rows, columns = np.nonzero(pixels[0])
+    assert (rows.min(), rows.max(), columns.min(), columns.max()) == (6, 15, 7, 27)

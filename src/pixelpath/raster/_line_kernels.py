@@ -9,6 +9,10 @@
   8-connected, the minor coordinate stepping when the error term says the line is nearer the
   next row (column). Segments are always walked from the end earlier in scan order, so a
   segment gives the same pixels whichever way round its ends are given.
+
+Depth along a line works as in the triangle rasterizer: the ends carry the depth key (1/w for
+a perspective camera, affine in depth for an orthographic one), which is affine along the
+projected line, and :func:`pixelpath.raster._kernels.key_depth` turns it into a depth.
 """
 
 from __future__ import annotations
@@ -18,20 +22,20 @@ import math
 import numpy as np
 
 from pixelpath._jit import njit
-from pixelpath.raster._kernels import FRUSTUM_PLANES
+from pixelpath.raster._kernels import FRUSTUM_PLANES, ORTHO_KEY_AT_NDC_0, key_depth
 
-# Columns of a screen segment: both ends' (x, y, 1/w) in pixels.
+# Columns of a screen segment: both ends' (x, y, depth key) in pixels.
 SEGMENT_FIELDS = 6
-# Where each end's (x, y, 1/w) starts in a segment's row; not literals, for which Numba
+# Where each end's (x, y, key) starts in a segment's row; not literals, for which Numba
 # compiled _to_screen once per value.
 START_END, STOP_END = np.intp(0), np.intp(3)
 
 
 @njit
-def clip_segments(starts, ends, matrix, screen, kept, width, height):
+def clip_segments(starts, ends, matrix, orthographic, screen, kept, width, height):
     """Clip world segments (E, 3) to the frustum, ``matrix`` mapping world to clip space.
 
-    Writes each kept segment's ends as (x, y, 1/w) in pixels into ``screen``
+    Writes each kept segment's ends as (x, y, depth key) in pixels into ``screen``
     (E, SEGMENT_FIELDS) and whether anything was left into ``kept`` (E,); returns how many
     segments were cut.
     """
@@ -59,8 +63,8 @@ def clip_segments(starts, ends, matrix, screen, kept, width, height):
             continue
         if first > 0.0 or last < 1.0:
             cut += 1
-        _to_screen(a, b, first, screen, e, START_END, width, height)
-        _to_screen(a, b, last, screen, e, STOP_END, width, height)
+        _to_screen(a, b, first, orthographic, screen, e, START_END, width, height)
+        _to_screen(a, b, last, orthographic, screen, e, STOP_END, width, height)
     return cut
 
 
@@ -79,15 +83,23 @@ def _plane_side(plane, point):
 
 
 @njit
-def _to_screen(a, b, s, screen, e, column, width, height):
-    """Write (x, y, 1/w) in pixels of the point a + s (b - a) (clip coordinates)."""
+def _to_screen(a, b, s, orthographic, screen, e, column, width, height):
+    """Write (x, y, depth key) in pixels of the point a + s (b - a) (clip coordinates).
+
+    The key is the triangle rasterizer's (``screen_point``): 1/w, or for an orthographic
+    camera ``ORTHO_KEY_AT_NDC_0 - z_ndc / 2``.
+    """
     x = a[0] + s * (b[0] - a[0])
     y = a[1] + s * (b[1] - a[1])
     w = a[3] + s * (b[3] - a[3])
     inv_w = 1.0 / w
     screen[e, column] = (x * inv_w + 1.0) * 0.5 * width
     screen[e, column + 1] = (1.0 - y * inv_w) * 0.5 * height
-    screen[e, column + 2] = inv_w
+    if orthographic:
+        z = a[2] + s * (b[2] - a[2])
+        screen[e, column + 2] = ORTHO_KEY_AT_NDC_0 - 0.5 * z * inv_w
+    else:
+        screen[e, column + 2] = inv_w
 
 
 @njit
@@ -137,13 +149,15 @@ def bresenham_pixels(ia, ja, ib, jb):
 
 
 @njit
-def draw_segments(screen, kept, owner, width, height, x0, y0, limit, depth, ids):
+def draw_segments(screen, kept, owner, width, height, orthographic, near, far, x0, y0, limit,
+                  depth, ids):
     """Draw the kept segments one pixel wide into the region's depth (h, w) and ids (h, w).
 
     ``screen`` (E, SEGMENT_FIELDS) holds the segments in image pixels (``width`` × ``height``),
-    the region's top-left pixel is (x0, y0). At each pixel the line's depth w is interpolated
-    perspective-correctly (1/w is affine along the projected line, evaluated at the pixel
-    centre's position along the major axis). A line pixel is kept where its depth is at most
+    the region's top-left pixel is (x0, y0). At each pixel the line's depth is interpolated
+    correctly for the projection (its depth key is affine along the projected line, evaluated
+    at the pixel centre's position along the major axis; ``orthographic``, ``near`` and
+    ``far`` turn it into a depth). A line pixel is kept where its depth is at most
     ``limit`` (h, w) there, and then only when nearer than the line already drawn there
     (``depth`` starts at inf, ``ids`` at -1; ties keep the earlier segment). ``ids`` receives
     the segment's ``owner``. Returns the number of line pixels inside the region and how many
@@ -174,7 +188,7 @@ def draw_segments(screen, kept, owner, width, height, x0, y0, limit, depth, ids)
             if 0 <= col < w and 0 <= row < h:
                 inside += 1
                 along = _along(i + 0.5, xa, xb) if major_x else _along(j + 0.5, ya, yb)
-                distance = 1.0 / (va + along * (vb - va))
+                distance = key_depth(va + along * (vb - va), orthographic, near, far)
                 if distance > limit[row, col]:
                     hidden += 1
                 elif distance < depth[row, col]:
@@ -200,7 +214,8 @@ def warmup() -> None:
     ends = np.array([[0.5, 0.5, -2.0]])
     screen = np.empty((1, SEGMENT_FIELDS))
     kept = np.empty(1, dtype=np.bool_)
-    clip_segments(starts, ends, matrix, screen, kept, 8, 8)
+    clip_segments(starts, ends, matrix, False, screen, kept, 8, 8)
     bresenham_pixels(0, 0, 5, 2)
-    draw_segments(screen, kept, np.zeros(1, dtype=np.intp), 8, 8, 0, 0, np.full((8, 8), np.inf),
-                  np.full((8, 8), np.inf), np.full((8, 8), -1, dtype=np.int32))
+    draw_segments(screen, kept, np.zeros(1, dtype=np.intp), 8, 8, False, 0.1, 10.0, 0, 0,
+                  np.full((8, 8), np.inf), np.full((8, 8), np.inf),
+                  np.full((8, 8), -1, dtype=np.int32))

@@ -133,12 +133,13 @@ def draw_lines(
     screen = np.empty((len(starts), _line_kernels.SEGMENT_FIELDS))
     kept = np.empty(len(starts), dtype=np.bool_)
     matrix = kernel_array(camera.projection_matrix() @ camera.view_matrix())
-    cut = _line_kernels.clip_segments(starts, ends, matrix, screen, kept, camera.width,
-                                      camera.height)
+    cut = _line_kernels.clip_segments(starts, ends, matrix, camera.orthographic, screen, kept,
+                                      camera.width, camera.height)
     depth = np.full(shape, np.inf)
     owner = np.full(shape, -1, dtype=np.int32)
     drawn, hidden = _line_kernels.draw_segments(
-        screen, kept, owners, camera.width, camera.height, view.x0, view.y0, limit, depth, owner
+        screen, kept, owners, camera.width, camera.height, camera.orthographic, camera.near,
+        camera.far, view.x0, view.y0, limit, depth, owner,
     )
     counts = {
         "edges outside the frustum": int(len(kept) - np.count_nonzero(kept)),
