@@ -1,0 +1,94 @@
+"""pixelpath.io.aovs: names, paths, and the files written for depth, normal, id and alpha."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from PIL import Image as PILImage
+
+import pixelpath as pp
+from pixelpath.io.aovs import AOVS, aov_path, parse_aovs, write_aovs
+
+
+def test_parse_aovs():
+    assert AOVS == ("depth", "normal", "id", "alpha")
+    assert parse_aovs("depth") == ("depth",)
+    assert parse_aovs(" Normal ,DEPTH,normal,id") == ("normal", "depth", "id")
+    assert parse_aovs(["alpha", "id", "alpha"]) == ("alpha", "id")
+    assert parse_aovs([]) == ()
+    for bad in ("depth,colour", "", "depth,", ["mask"]):
+        with pytest.raises(ValueError, match="unknown AOV") as info:
+            parse_aovs(bad)
+        assert "depth, normal, id, alpha" in str(info.value)
+
+
+def test_aov_paths():
+    assert aov_path("out/duck.png", "depth").as_posix() == "out/duck.depth.npy"
+    assert aov_path("out/duck.png", "normal").as_posix() == "out/duck.normal.png"
+    assert aov_path("duck.jpg", "id").as_posix() == "duck.id.png"
+    assert aov_path("a.b.png", "alpha").as_posix() == "a.b.alpha.png"
+
+
+def read(path) -> tuple[np.ndarray, str]:
+    with PILImage.open(path) as img:
+        return np.asarray(img), img.mode
+
+
+def handmade_image() -> pp.Image:
+    object_id = np.array([[-1, 0, 3], [1, -1, 2]])
+    depth = np.array([[np.inf, 2.5, 7.25], [1e-3, np.inf, 100.0]])
+    normal = np.zeros((2, 3, 3))
+    normal[0, 1] = (1, 0, 0)
+    normal[0, 2] = (-1, 0, 0)
+    normal[1, 0] = (0.28, 0.96, 0)
+    normal[1, 1] = (0, 0, 1)  # a background pixel with a normal: written black anyway
+    normal[1, 2] = (0, -0.6, 0.8)
+    alpha = np.array([[0, 1, 0.5], [0.25, 0, 1]])
+    return pp.Image(np.zeros((2, 3, 3)), depth, object_id, alpha=alpha, normal=normal)
+
+
+def test_write_every_aov(tmp_path):
+    image = handmade_image()
+    target = tmp_path / "shot.png"
+    written = write_aovs(image, target, "depth,normal,id,alpha")
+    assert [p.name for p in written] == [
+        "shot.depth.npy", "shot.normal.png", "shot.id.png", "shot.alpha.png",
+    ]
+    assert not target.exists()  # only the AOVs are written here
+
+    depth = np.load(tmp_path / "shot.depth.npy")
+    assert depth.dtype == np.float32 and depth.shape == (2, 3)
+    assert np.isinf(depth[0, 0]) and np.isinf(depth[1, 1])
+    assert depth[0, 1] == 2.5 and depth[0, 2] == 7.25 and depth[1, 2] == 100.0
+
+    normal, mode = read(tmp_path / "shot.normal.png")
+    assert mode == "RGB" and normal.shape == (2, 3, 3)
+    expected = (image.normal.astype(np.float64) + 1) / 2 * 255  # (n + 1) / 2 in 0..255
+    drawn = image.object_id >= 0
+    assert np.all(np.abs(normal[drawn] - expected[drawn]) <= 0.5 + 1e-6)
+    assert normal[0, 1].tolist()[0] == 255 and normal[0, 2].tolist()[0] == 0
+    assert np.all(normal[~drawn] == 0)  # black background, even where a normal was given
+
+    ids, mode = read(tmp_path / "shot.id.png")
+    assert mode.startswith("I;16") or mode == "I"
+    assert ids.tolist() == [[0, 1, 4], [2, 0, 3]]
+
+    alpha, mode = read(tmp_path / "shot.alpha.png")
+    assert mode == "L"
+    assert alpha[0, 0] == 0 and alpha[0, 1] == 255 and alpha[1, 2] == 255
+    assert abs(int(alpha[0, 2]) - 127.5) <= 0.5 and abs(int(alpha[1, 0]) - 63.75) <= 0.5
+
+
+def test_id_aov_limit(tmp_path):
+    image = pp.Image(np.zeros((1, 2, 3)), object_id=[[65534, 70000]])
+    with pytest.raises(ValueError, match="65534"):
+        write_aovs(image, tmp_path / "x.png", ["id"])
+    fine = pp.Image(np.zeros((1, 2, 3)), object_id=[[65534, -1]])
+    write_aovs(fine, tmp_path / "x.png", ["id"])
+    assert read(tmp_path / "x.id.png")[0].tolist() == [[65535, 0]]
+
+
+def test_unknown_aov_writes_nothing(tmp_path):
+    with pytest.raises(ValueError, match="unknown AOV"):
+        write_aovs(handmade_image(), tmp_path / "x.png", ["depth", "colour"])
+    assert list(tmp_path.iterdir()) == []
