@@ -98,7 +98,7 @@ from pixelpath.scene.lights import DirectionalLight, PointLight
 from pixelpath.scene.material import Material
 from pixelpath.scene.mesh import Mesh
 from pixelpath.scene.scene import Scene
-from pixelpath.scene.texture import srgb_to_linear
+from pixelpath.scene.texture import Texture, srgb_to_linear
 
 __all__ = ["MODEL_FORMATS", "framing_camera", "light_rig", "read_model", "read_model_objects"]
 
@@ -414,6 +414,9 @@ def _check_accessors(path: Path, gltf: dict, binary_length: int | None) -> None:
 def _meshes(path: Path, loaded: Any, gltf: dict | None) -> list[Mesh]:
     node_names = {n.get("name") for n in (gltf or {}).get("nodes", []) if isinstance(n, dict)}
     meshes = []
+    # Parts share trimesh's material and image objects: each is mapped (and each picture
+    # decoded) once, and parts sharing a picture share one Texture, packed once to render.
+    shared: dict[tuple, Any] = {}
     for node in loaded.graph.nodes_geometry:
         matrix, geometry_name = loaded.graph.get(node)
         geometry = loaded.geometry[geometry_name]
@@ -421,13 +424,16 @@ def _meshes(path: Path, loaded: Any, gltf: dict | None) -> list[Mesh]:
             continue  # points and paths have nothing to shade
         name = node if gltf is None or node in node_names else geometry_name
         try:
-            meshes.append(_mesh(path, geometry, np.asarray(matrix, dtype=np.float64), name, gltf))
+            matrix = np.asarray(matrix, dtype=np.float64)
+            meshes.append(_mesh(path, geometry, matrix, name, gltf, shared))
         except (ValueError, TypeError) as exc:
             raise type(exc)(f"{path}: part {name!r}: {exc}") from None
     return meshes
 
 
-def _mesh(path: Path, geometry: Any, matrix: np.ndarray, name: str, gltf: dict | None) -> Mesh:
+def _mesh(
+    path: Path, geometry: Any, matrix: np.ndarray, name: str, gltf: dict | None, shared: dict
+) -> Mesh:
     vertices = np.asarray(geometry.vertices, dtype=np.float64)
     faces = np.asarray(geometry.faces, dtype=np.int64)
     if not np.all(np.isfinite(vertices)):
@@ -445,7 +451,7 @@ def _mesh(path: Path, geometry: Any, matrix: np.ndarray, name: str, gltf: dict |
     if np.linalg.det(linear) < 0.0:  # a mirroring node: keep faces counter-clockwise outside
         faces = faces[:, ::-1]
     visual = geometry.visual
-    material = _material(path, visual, gltf)
+    material = _material(path, visual, gltf, shared)
     uv = _uv(visual, len(vertices))
     colors = _vertex_colors(visual, len(vertices), linear=gltf is not None)
     return Mesh(vertices, faces, material, normals, colors, uv, name)
@@ -478,16 +484,20 @@ def _plain_material() -> Material:
     return Material(color=(0.8, 0.8, 0.8), ka=1.0, kd=1.0, ks=0.2, shininess=32.0)
 
 
-def _material(path: Path, visual: Any, gltf: dict | None) -> Material:
+def _material(path: Path, visual: Any, gltf: dict | None, shared: dict) -> Material:
     source = getattr(visual, "material", None)
     if source is None:
         return _plain_material()
-    if type(source).__name__ == "PBRMaterial":
-        return _pbr_material(path, source, gltf)
-    return _simple_material(path, source)
+    key = ("material", id(source))
+    if key not in shared:
+        if type(source).__name__ == "PBRMaterial":
+            shared[key] = _pbr_material(path, source, gltf, shared)
+        else:
+            shared[key] = _simple_material(path, source, shared)
+    return shared[key]
 
 
-def _pbr_material(path: Path, source: Any, gltf: dict | None) -> Material:
+def _pbr_material(path: Path, source: Any, gltf: dict | None, shared: dict) -> Material:
     """Map a glTF metallic-roughness material onto the notes' Phong model (see the table)."""
     factor = source.baseColorFactor
     rgba = np.ones(4) if factor is None else np.asarray(factor, dtype=np.float64)
@@ -497,7 +507,7 @@ def _pbr_material(path: Path, source: Any, gltf: dict | None) -> Material:
     roughness = 1.0 if source.roughnessFactor is None else float(source.roughnessFactor)
     metallic, roughness = (float(np.clip(x, 0.0, 1.0)) for x in (metallic, roughness))
     mode = (source.alphaMode or "OPAQUE").upper()
-    texture = _texture(path, source.baseColorTexture, keep_alpha=mode != "OPAQUE")
+    texture = _texture(path, source.baseColorTexture, shared, keep_alpha=mode != "OPAQUE")
     if texture is None:
         _refuse_lost_texture(path, source, gltf)
     kd = 1.0 - 0.6 * metallic
@@ -521,7 +531,7 @@ def _shininess(roughness: float) -> float:
     return float(np.clip(2.0 / roughness**4 - 2.0, 1.0, 1000.0))
 
 
-def _simple_material(path: Path, source: Any) -> Material:
+def _simple_material(path: Path, source: Any, shared: dict) -> Material:
     """Map an MTL material (trimesh's SimpleMaterial and its raw MTL values) (see the table)."""
     raw = {key.lower(): value for key, value in (getattr(source, "kwargs", None) or {}).items()}
     kd_color = _mtl_color(raw.get("kd"), (0.8, 0.8, 0.8))
@@ -538,7 +548,7 @@ def _simple_material(path: Path, source: Any) -> Material:
         shininess=max(ns, 1.0),
         transparency=1.0 - opacity,
         name=source.name if isinstance(source.name, str) else None,
-        texture=_texture(path, getattr(source, "image", None), keep_alpha=True),
+        texture=_texture(path, getattr(source, "image", None), shared, keep_alpha=True),
     )
 
 
@@ -564,21 +574,26 @@ def _mtl_number(value: Any, default: float) -> float:
     return number if math.isfinite(number) else default
 
 
-def _texture(path: Path, image: Any, *, keep_alpha: bool) -> Any:
-    """Return the picture as a decoded PIL image (RGB, or RGBA when its alpha matters)."""
+def _texture(path: Path, image: Any, shared: dict, *, keep_alpha: bool) -> Texture | None:
+    """Return the picture as a Texture (with alpha only when it matters), decoded once."""
     if image is None:
         return None
     import PIL.Image
 
     if not isinstance(image, PIL.Image.Image):
         raise ValueError(f"{path}: a texture is not a picture ({type(image).__name__})")
-
+    key = ("texture", id(image), keep_alpha)
+    if key in shared:
+        return shared[key]
     try:
         image.load()  # decode now: a truncated PNG/JPEG fails here, not in a render
         has_alpha = image.mode in ("RGBA", "LA", "PA") or "transparency" in image.info
-        return image.convert("RGBA" if keep_alpha and has_alpha else "RGB")
+        # Texture converts to RGBA itself: only an alpha that must be dropped needs a pass here.
+        picture = image.convert("RGB") if has_alpha and not keep_alpha else image
     except (OSError, ValueError, SyntaxError, PIL.Image.DecompressionBombError) as exc:
         raise ValueError(f"{path}: a texture could not be decoded ({exc})") from None
+    shared[key] = Texture(picture, name=f"{path.name} texture")
+    return shared[key]
 
 
 def _refuse_lost_texture(path: Path, source: Any, gltf: dict | None) -> None:
