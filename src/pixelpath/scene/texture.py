@@ -194,7 +194,7 @@ def _from_pil(img: Any, label: str) -> tuple[np.ndarray, bool]:
         grey = grey / (65535.0 if img.mode != "F" else 1.0)
         return _from_array(np.repeat(grey[..., None], 3, axis=2))[0], False
     try:
-        rgba = np.asarray(img.convert("RGBA"))
+        rgba = np.asarray(img.convert("RGBA"))  # Pillow adds the alpha faster than NumPy
     except OSError as exc:  # truncated data is only found when decoding
         raise ValueError(f"{label}: not a readable image ({exc})") from None
     return _from_array(rgba)[0], True
