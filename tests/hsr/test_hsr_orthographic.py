@@ -151,3 +151,15 @@ def test_lines_have_the_same_pixels_at_any_distance_and_the_nearest_edges_depth(
     np.testing.assert_array_equal(pixels[0], pixels[1])
     rows, columns = np.nonzero(pixels[0])
     assert (rows.min(), rows.max(), columns.min(), columns.max()) == (6, 15, 7, 27)
+
+
+@pytest.mark.parametrize("method", ["zbuffer", "scanline", "octree"])
+def test_reports_name_the_depth_key_of_the_projection(method):
+    box = pp.Box((-1.0, -0.5, -1.0), (1.0, 0.5, 1.0))
+    scene = pp.Scene(ortho_camera(), objects=[box], lights=[pp.PointLight((5, 5, 20))])
+    _, report = pp.render(scene, method, explain=True)
+    assert any("(3 − z_ndc)/2" in note for note in report.notes)
+    perspective = dataclasses.replace(scene, camera=pp.Camera(eye=(0, 0, 10), target=(0, 0, 0)))
+    _, report = pp.render(perspective, method, explain=True)
+    assert any("1/w" in note for note in report.notes)
+    assert not any("z_ndc" in note for note in report.notes)

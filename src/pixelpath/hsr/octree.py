@@ -260,7 +260,7 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     options.progress(1)
     report = None
     if options.explain:
-        report = _report(octree, prepared, visibility, stats)
+        report = _report(octree, prepared, view, visibility, stats)
         report.arrays.update(_cell_arrays(octree, view, *visits))
     return pipeline.shade(prepared, scene, view, visibility, options, report)
 
@@ -310,10 +310,12 @@ def _cell_arrays(octree: Octree, view: View, rects: np.ndarray,
     }
 
 
-def _report(octree: Octree, prepared: pipeline.Prepared, visibility: pipeline.Visibility,
+def _report(octree: Octree, prepared: pipeline.Prepared, view: View,
+            visibility: pipeline.Visibility,
             stats: np.ndarray):
     """Report the tree's size and build time, and what the traversal did (total, per level)."""
     from pixelpath.hsr._kernels import octree as kernels
+    from pixelpath.raster.transform import depth_key_name
     from pixelpath.report import Report, Table
 
     per_level = stats.sum(axis=0)
@@ -355,7 +357,8 @@ def _report(octree: Octree, prepared: pipeline.Prepared, visibility: pipeline.Vi
         ),
         notes=(
             "object space orders, image space decides: cells are visited front to back from "
-            "the eye, each leaf's triangles scan-converted with a depth test on 1/w",
+            "the eye, each leaf's triangles scan-converted with a depth test on "
+            f"{depth_key_name(view.camera)}",
             "a pixel is decided once its nearest hit lies in a cell already drawn; a cell "
             "whose pixels are all decided is skipped with its subtree",
             "the tree is built per frame over the triangles left after culling and clipping",

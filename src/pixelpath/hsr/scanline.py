@@ -139,8 +139,10 @@ def _scan(prepared: pipeline.Prepared, view: View) -> tuple[pipeline.Visibility,
 def _report(prepared: pipeline.Prepared, view: View, visibility: pipeline.Visibility,
             counts: np.ndarray):
     """Totals, a table of every k-th scan line, and every line's counts as arrays."""
+    from pixelpath.raster.transform import depth_key_name
     from pixelpath.report import Report, Table
 
+    key = depth_key_name(view.camera)
     totals = counts.sum(axis=0)
     image_rows = np.arange(view.y0, view.y0 + view.height)
     step = max(1, math.ceil(view.height / PRINTED_LINES))
@@ -168,9 +170,9 @@ def _report(prepared: pipeline.Prepared, view: View, visibility: pipeline.Visibi
         notes=(
             "image space: per scan line the active edge list is sorted by x and walked left to "
             "right; a span covered by one polygon needs no depth, one covered by several is "
-            "decided by 1/w at its two ends and split where two polygons' planes cross",
+            f"decided by {key} at its two ends and split where two polygons' planes cross",
             "per line: edges = active edges, one polygon = spans decided without depth, by "
-            "depth = spans compared by 1/w, splits = spans split where planes cross, pixel "
+            f"depth = spans compared by {key}, splits = spans split where planes cross, pixel "
             "tests = one-pixel pieces decided by the z-buffer's test",
             "edges entering counts each band's edge table: an edge crossing a band border "
             "enters again at the band's first line (bands of 32 lines run in parallel)",

@@ -88,6 +88,7 @@ def _report(prepared: pipeline.Prepared, view: View, visibility: pipeline.Visibi
 
     tests = np.zeros((view.height, view.width), dtype=np.int32)
     _kernels.count_coverage(prepared.setup, prepared.rows, view.x0, view.y0, tests)
+    from pixelpath.raster.transform import depth_key_name
     drawn = int(np.count_nonzero(visibility.triangle_id >= 0))
     total = int(tests.sum())
     return Report(
@@ -100,8 +101,8 @@ def _report(prepared: pipeline.Prepared, view: View, visibility: pipeline.Visibi
             "largest depth complexity": int(tests.max(initial=0)),
         },
         notes=(
-            "image space: every pixel of every triangle is compared with the buffer's 1/w "
-            "and replaces it when nearer",
+            "image space: every pixel of every triangle is compared with the buffer's "
+            f"{depth_key_name(view.camera)} and replaces it when nearer",
         ),
         arrays={"depth tests": tests},
     )

@@ -27,7 +27,7 @@ from pixelpath.raster._arrays import kernel_array
 if TYPE_CHECKING:
     from pixelpath.scene import Camera
 
-__all__ = ["clip_to_screen", "world_to_clip"]
+__all__ = ["clip_to_screen", "depth_key_name", "world_to_clip"]
 
 
 def world_to_clip(points: np.ndarray, camera: Camera) -> np.ndarray:
@@ -97,6 +97,23 @@ def clip_to_screen(
         raise TypeError(f"orthographic must be a bool, got {type(orthographic).__name__}")
     _kernels.clip_to_screen(clip, int(width), int(height), bool(orthographic), screen)
     return screen
+
+
+def depth_key_name(camera: Camera) -> str:
+    """Name the depth key the raster methods compare, as their reports write it.
+
+    1/w for a perspective camera; ``(3 − z_ndc)/2``, affine in depth, for an orthographic one.
+
+    Examples
+    --------
+    >>> from pixelpath.scene import Camera
+    >>> from pixelpath.raster.transform import depth_key_name
+    >>> depth_key_name(Camera(eye=(0, 0, 5), target=(0, 0, 0)))
+    '1/w'
+    """
+    if camera.orthographic:
+        return "(3 − z_ndc)/2"
+    return "1/w"
 
 
 def _points(values: np.ndarray, size: int, name: str) -> np.ndarray:
