@@ -259,11 +259,11 @@ def test_texture_coordinates_are_perspective_correct(method):
 # --- colour and light ------------------------------------------------------------------------
 
 
-@pytest.mark.parametrize("method", ["zbuffer", "painter", "raytrace"])
-@pytest.mark.parametrize("shading", ["flat", "gouraud", "phong"])
+@pytest.mark.parametrize(("method", "shading"), [
+    *((m, s) for m in ("zbuffer", "painter") for s in ("flat", "gouraud", "phong")),
+    ("raytrace", "flat"), ("raytrace", "phong"),
+])
 def test_textured_lit_colour_by_hand(method, shading):
-    if method == "raytrace" and shading == "gouraud":
-        pytest.skip("the ray tracer shades flat or phong")
     codes = np.array([[[200, 100, 50], [30, 220, 140]], [[255, 255, 0], [90, 60, 250]]],
                      np.uint8)
     colour = np.array([0.9, 0.6, 0.8])
@@ -368,7 +368,10 @@ def test_double_sided_quad_seen_from_behind(method):
         quad = pp.Mesh(SQUARE, [[0, 1, 2, 3]], material)
         # A plane under it whose normal points away from the eye too.
         plane = pp.Plane((0, -1.2, 0), (0, -1, 0), material)
-        scene = facing_scene([quad, plane], eye=(0, 0, -3), lights=[pp.PointLight((1, 1, -4))])
+        # (An eye off the plane's tessellation grid: a grid point in the eye's plane maps to
+        # infinity, which the no-JIT pass reports as a division warning.)
+        scene = facing_scene([quad, plane], eye=(0.1, 0.2, -3.1),
+                             lights=[pp.PointLight((1, 1, -4))])
         return pp.render(scene, method, "phong")
 
     two_sided = render(True)
