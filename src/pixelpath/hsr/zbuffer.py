@@ -84,11 +84,11 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
 def _report(prepared: pipeline.Prepared, view: View, visibility: pipeline.Visibility):
     """Count the depth tests: every pixel each triangle covers is one comparison."""
     from pixelpath.raster import _kernels
+    from pixelpath.raster.transform import depth_key_name
     from pixelpath.report import Report
 
     tests = np.zeros((view.height, view.width), dtype=np.int32)
     _kernels.count_coverage(prepared.setup, prepared.rows, view.x0, view.y0, tests)
-    from pixelpath.raster.transform import depth_key_name
     drawn = int(np.count_nonzero(visibility.triangle_id >= 0))
     total = int(tests.sum())
     return Report(
