@@ -10,7 +10,9 @@ Drawn with Pillow from the algorithms' own traces (no matplotlib needed):
   method, from its rendered image and :class:`~pixelpath.report.Report` (``report.figure()``,
   ``report.animate("steps.gif")``), drawn by :mod:`pixelpath.figures.hidden_surfaces`;
 * :mod:`pixelpath.figures.ray_tree`: a pixel's ray tree drawn over the scene
-  (``ray_tree(scene, (x, y)).figure()``).
+  (``ray_tree(scene, (x, y)).figure()``);
+* :mod:`pixelpath.figures.texturing`: a receding checkerboard with affine and with
+  perspective-correct texture coordinates side by side (``perspective_figure()``).
 
 Examples
 --------

@@ -411,7 +411,101 @@ def shade(
         in_runs(shade_run, order[start:stop])
         options.progress(SHADE_SLICES // len(runs))
     orthographic_depth(view, visibility, out.depth)
+    if report is not None:
+        report = with_texture_lookups(report, prepared, scene, view, visibility)
     return Frame(out.rgb, out.depth, out.object_id, prepared.stats, report, out.normal)
+
+
+def with_texture_lookups(report, prepared: Prepared, scene: Scene, view: View,
+                         visibility: Visibility):
+    """Return a method's explain report with the texture lookups of its picture added.
+
+    Nothing is added when no drawn object is textured. Otherwise, per textured pixel, the
+    footprint of the shading pass chooses the mip level (:func:`pixelpath.scene.
+    _texture_kernels.mip_level`) and the summary counts the textured pixels and the texels
+    read: 1 per ``nearest`` lookup, 4 per ``bilinear`` one, 4 or 8 per ``trilinear`` one (one
+    level or a blend of two). A table lists each texture's filter and wrap, another the pixels
+    per mip level (a blended pixel counts at its finer level). ``report.arrays`` gains, per
+    pixel of the region, ``"texture"`` (the table's row, -1 for none), ``"texture level"``
+    (-1 for none) and ``"texture blend"`` (the next level's weight).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import pixelpath as pp
+    >>> floor = pp.Mesh([[-1, 0, -1], [1, 0, -1], [1, 0, 1], [-1, 0, 1]], [[3, 2, 1, 0]],
+    ...                 pp.Material(texture=np.ones((64, 64, 3))),
+    ...                 uv=[[0, 0], [1, 0], [1, 1], [0, 1]])
+    >>> scene = pp.Scene(pp.Camera(eye=(0, 1, 2), target=(0, 0, 0), width=32, height=24),
+    ...                  [floor], [pp.PointLight((0, 3, 3))])
+    >>> _, report = pp.render(scene, explain=True)
+    >>> report.summary["textured pixels"] > 0, report.tables[-1].title
+    (True, 'mip levels')
+    """
+    import dataclasses
+
+    from pixelpath.raster import _kernels
+    from pixelpath.report import Table
+    from pixelpath.scene._texture_kernels import NEAREST, TEXTURE, TRILINEAR
+    from pixelpath.scene.texture import FILTERS, WRAPS
+
+    tables = prepared.geometry.surfaces
+    if not np.any(tables.objects[:, TEXTURE] >= 0):
+        return report
+    shape = visibility.triangle_id.shape
+    texture, level = np.empty(shape, np.int32), np.empty(shape, np.int32)
+    blend = np.empty(shape)
+    _kernels.texture_lookups(view.x0, view.y0, visibility.triangle_id,
+                             surfaces(prepared, scene), texture, level, blend)
+    textured = texture >= 0
+    modes = tables.textures[:, 2]
+    texels_each = np.where(modes == NEAREST, 1, 4)[texture[textured]]
+    texels_each[(modes[texture[textured]] == TRILINEAR) & (blend[textured] > 0.0)] = 8
+    names = _texture_names(prepared.geometry, tables)
+    samplers, levels = [], []
+    for k, (first, _, mode, wrap) in enumerate(tables.textures.tolist()):
+        mine = texture[textured] == k
+        samplers.append((names[k], _size(tables, first), FILTERS[mode], WRAPS[wrap],
+                         int(mine.sum()), int(texels_each[mine].sum())))
+        used = level[textured][mine]
+        blended = blend[textured][mine] > 0.0
+        for m in np.unique(used).tolist():
+            levels.append((names[k], m, _size(tables, first + m), int(np.sum(used == m)),
+                           int(np.sum(blended[used == m]))))
+    return dataclasses.replace(
+        report,
+        summary={**report.summary, "textured pixels": int(textured.sum()),
+                 "texels read": int(texels_each.sum())},
+        tables=(*report.tables,
+                Table("textures", ("texture", "size", "filter", "wrap", "pixels", "texels read"),
+                      samplers),
+                Table("mip levels", ("texture", "level", "size", "pixels", "blended with next"),
+                      levels)),
+        notes=(*report.notes,
+               "textures: a pixel's footprint, how many base texels it spans (from the screen "
+               "derivatives of u and v), chooses the mip level: log2(footprint) with trilinear "
+               "filtering, blending the two levels around it; the base level otherwise"),
+        arrays={**report.arrays, "texture": texture, "texture level": level,
+                "texture blend": blend},
+    )
+
+
+def _texture_names(geometry, tables) -> list[str]:
+    """Name each texture row of the surface tables after its picture, or its first object."""
+    from pixelpath.scene._texture_kernels import TEXTURE
+
+    names = [""] * len(tables.textures)
+    for obj in range(len(tables.objects) - 1, -1, -1):  # backwards: the first object wins
+        k = tables.objects[obj, TEXTURE]
+        if k >= 0:
+            mesh = geometry.meshes[obj]
+            names[k] = mesh.material.texture.name or mesh.name or f"object {obj}"
+    return names
+
+
+def _size(tables, level: int) -> str:
+    """Return "w×h" of a packed mip level."""
+    return f"{tables.levels[level, 1]}×{tables.levels[level, 2]}"
 
 
 def _vertex_colors(geometry, lighting: Lighting, two_sided: bool, blends) -> np.ndarray:

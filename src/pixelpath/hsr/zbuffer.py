@@ -77,7 +77,11 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
         in_runs(render_run, order[start:stop])
         options.progress(pipeline.SHADE_SLICES // len(runs))
     pipeline.orthographic_depth(view, visibility, out.depth)
-    report = _report(prepared, view, visibility) if options.explain else None
+    report = None
+    if options.explain:
+        report = pipeline.with_texture_lookups(
+            _report(prepared, view, visibility), prepared, scene, view, visibility
+        )
     return Frame(out.rgb, out.depth, out.object_id, prepared.stats, report, out.normal)
 
 

@@ -41,7 +41,14 @@ import numpy as np
 from pixelpath._jit import njit
 from pixelpath.clip._kernels import PLANE, clip_stage
 from pixelpath.lighting._kernels import shade_planar, shade_point
-from pixelpath.scene._texture_kernels import colored, surface_color, tiny_tables
+from pixelpath.scene._texture_kernels import (
+    TEXTURE,
+    colored,
+    mip_level,
+    surface_color,
+    texel_footprint,
+    tiny_tables,
+)
 
 FLAT = 0
 GOURAUD = 1
@@ -900,40 +907,94 @@ def _store_normal(normal, i, normals, a, b, c, b0, b1, b2, flipped):
     normal[i, 2] = nz * scale
 
 
+@njit(inline="always")
+def _perspective_terms(setup, t, x, y):
+    """Weights and screen gradients of triangle t at pixel centre (x, y).
+
+    Returns the perspective-correct weights ``b_k = t_k / D`` (``t_k = s_k / w_k``, D their
+    sum, the interpolated 1/w), ``1 / D``, then ``d t_k / dx`` and ``d t_k / dy`` (constants:
+    the ``t_k`` are affine in screen space): 10 numbers.
+    """
+    w0, w1, w2 = setup[t, VERTEX_INVW], setup[t, VERTEX_INVW + 1], setup[t, VERTEX_INVW + 2]
+    # s1 = x1 x + y1 y + c1 and s2 = x2 x + y2 y + c2: the screen weights' planes.
+    x1, y1, c1 = setup[t, S1_PLANE], setup[t, S1_PLANE + 1], setup[t, S1_PLANE + 2]
+    x2, y2, c2 = setup[t, S2_PLANE], setup[t, S2_PLANE + 1], setup[t, S2_PLANE + 2]
+    s1 = x1 * x + y1 * y + c1
+    s2 = x2 * x + y2 * y + c2
+    t0, t1, t2 = (1.0 - s1 - s2) * w0, s1 * w1, s2 * w2
+    inv = 1.0 / (t0 + t1 + t2)
+    return (
+        t0 * inv, t1 * inv, t2 * inv, inv,
+        -(x1 + x2) * w0, x1 * w1, x2 * w2,
+        -(y1 + y2) * w0, y1 * w1, y2 * w2,
+    )
+
+
+@njit(inline="always")
+def texture_coordinates(setup, t, uv, a, b, c, x, y):
+    """Return (u, v, du/dx, dv/dx, du/dy, dv/dy) of triangle t (vertices a, b, c) at (x, y).
+
+    The texture coordinates are interpolated perspective-correctly and differentiated along
+    the image's rows and columns, which gives how far they move over one pixel (the
+    footprint that chooses the mip level): for ``u = sum t_k u_k / D`` with affine ``t_k``,
+    ``du/dx = (sum t_k,x u_k - u sum t_k,x) / D``. Shared by the shading pass and the
+    explain report's count of mip levels, so both see the same footprint.
+    """
+    b0, b1, b2, inv, gx0, gx1, gx2, gy0, gy1, gy2 = _perspective_terms(setup, t, x, y)
+    u = _mix(uv, a, b, c, b0, b1, b2, 0)
+    v = _mix(uv, a, b, c, b0, b1, b2, 1)
+    gx, gy = gx0 + gx1 + gx2, gy0 + gy1 + gy2
+    dudx = (_mix(uv, a, b, c, gx0, gx1, gx2, 0) - u * gx) * inv
+    dvdx = (_mix(uv, a, b, c, gx0, gx1, gx2, 1) - v * gx) * inv
+    dudy = (_mix(uv, a, b, c, gy0, gy1, gy2, 0) - u * gy) * inv
+    dvdy = (_mix(uv, a, b, c, gy0, gy1, gy2, 1) - v * gy) * inv
+    return u, v, dudx, dvdx, dudy, dvdy
+
+
 @njit
 def _pixel_color(s, t, obj, x, y):
     """Return the surface colour (r, g, b, alpha) of triangle t at pixel centre (x, y).
 
-    The perspective-correct weights ``b_k = t_k / D`` (``t_k = s_k / w_k``, D their sum) give
-    the point; their screen derivatives give how far the texture coordinates move over one
-    pixel, which chooses the mip level: for an attribute ``u = sum t_k u_k / D`` with affine
-    ``t_k``, ``du/dx = (sum t_k,x u_k - u sum t_k,x) / D``.
+    At the perspective-correct weights, the texture filtered for the footprint of
+    :func:`texture_coordinates` (no texture coordinates: vertex colours only).
     """
-    record = s.setup[t]
-    w0, w1, w2 = record[VERTEX_INVW], record[VERTEX_INVW + 1], record[VERTEX_INVW + 2]
-    s1 = record[S1_PLANE] * x + record[S1_PLANE + 1] * y + record[S1_PLANE + 2]
-    s2 = record[S2_PLANE] * x + record[S2_PLANE + 1] * y + record[S2_PLANE + 2]
-    t0, t1, t2 = (1.0 - s1 - s2) * w0, s1 * w1, s2 * w2
-    inv = 1.0 / (t0 + t1 + t2)
-    b0, b1, b2 = t0 * inv, t1 * inv, t2 * inv
+    b0, b1, b2 = _perspective_terms(s.setup, t, x, y)[:3]
     a, b, c = s.triangles[t, 0], s.triangles[t, 1], s.triangles[t, 2]
     dudx = dvdx = dudy = dvdy = 0.0
     if s.uv.shape[0] > 0:
-        gx0, gx1 = -(record[S1_PLANE] + record[S2_PLANE]) * w0, record[S1_PLANE] * w1
-        gx2 = record[S2_PLANE] * w2
-        gy0, gy1 = -(record[S1_PLANE + 1] + record[S2_PLANE + 1]) * w0, record[S1_PLANE + 1] * w1
-        gy2 = record[S2_PLANE + 1] * w2
-        u = _mix(s.uv, a, b, c, b0, b1, b2, 0)
-        v = _mix(s.uv, a, b, c, b0, b1, b2, 1)
-        gx, gy = gx0 + gx1 + gx2, gy0 + gy1 + gy2
-        dudx = (_mix(s.uv, a, b, c, gx0, gx1, gx2, 0) - u * gx) * inv
-        dvdx = (_mix(s.uv, a, b, c, gx0, gx1, gx2, 1) - v * gx) * inv
-        dudy = (_mix(s.uv, a, b, c, gy0, gy1, gy2, 0) - u * gy) * inv
-        dvdy = (_mix(s.uv, a, b, c, gy0, gy1, gy2, 1) - v * gy) * inv
+        _, _, dudx, dvdx, dudy, dvdy = texture_coordinates(s.setup, t, s.uv, a, b, c, x, y)
     return surface_color(
         s.tables, s.materials[obj], obj, s.uv, s.vertex_colors, a, b, c, b0, b1, b2, dudx, dvdx,
         dudy, dvdy,
     )
+
+
+@njit
+def texture_lookups(x0, y0, triangle_id, surfaces, texture, level, blend):
+    """Record the texture lookup of every drawn pixel of a region, for the explain report.
+
+    From the visibility buffer ``triangle_id`` (h, w) of the region whose top-left pixel is
+    (x0, y0): writes, per pixel, the texture (row of ``surfaces.tables.textures``) read there,
+    the mip level read (0 the base) and the weight of the next level (:func:`mip_level`,
+    from the same footprint as the shading pass); -1, -1 and 0 where no texture is read.
+    """
+    s = surfaces
+    for row in range(triangle_id.shape[0]):
+        y = (y0 + row) + 0.5
+        for i in range(triangle_id.shape[1]):
+            texture[row, i], level[row, i], blend[row, i] = -1, -1, 0.0
+            t = triangle_id[row, i]
+            if t < 0:
+                continue
+            k = s.tables.objects[s.info[t, 0], TEXTURE]
+            if k < 0:
+                continue
+            a, b, c = s.triangles[t, 0], s.triangles[t, 1], s.triangles[t, 2]
+            x = (x0 + i) + 0.5
+            _, _, dudx, dvdx, dudy, dvdy = texture_coordinates(s.setup, t, s.uv, a, b, c, x, y)
+            footprint = texel_footprint(s.tables, k, dudx, dvdx, dudy, dvdy)
+            texture[row, i] = k
+            level[row, i], blend[row, i] = mip_level(s.tables, k, footprint)
 
 
 @njit(inline="always")
@@ -1128,9 +1189,14 @@ def warm_back() -> None:
 
 
 def warm_shade() -> None:
-    """Compile the shading pass the other methods run on the visibility they decided."""
+    """Compile the shading pass the other methods run on the visibility they decided.
+
+    And the count of texture lookups every raster method's explain report makes.
+    """
     bands, _, _, _, _, inv_depth, triangle_id, surfaces, out = _tiny_shading_pass()
     shade_bands(bands, BAND_ROWS, 0, 0, inv_depth, triangle_id, surfaces, out)
+    lookups = np.empty(triangle_id.shape, dtype=np.int32)
+    texture_lookups(0, 0, triangle_id, surfaces, lookups, lookups.copy(), np.empty(inv_depth.shape))
     orthographic_depth(inv_depth, 0.1, 10.0, out.depth)
 
 

@@ -85,29 +85,57 @@ def _bilinear(tables, level, wrap, u, v):
     )
 
 
+@njit(inline="always")
+def texel_footprint(tables, texture, dudx, dvdx, dudy, dvdy):
+    """Length, in base-level texels of ``texture``, that one pixel covers.
+
+    (dudx, dvdx) and (dudy, dvdy) are how far (u, v) moves over one pixel across and down the
+    image; the longer of the two steps, in texels, is the footprint.
+    """
+    base = tables.textures[texture, 0]
+    width, height = tables.levels[base, 1], tables.levels[base, 2]
+    across = math.hypot(dudx * width, dvdx * height)
+    down = math.hypot(dudy * width, dvdy * height)
+    return max(across, down)
+
+
+@njit(inline="always")
+def mip_level(tables, texture, footprint):
+    """Return (level, blend): the mip level a lookup reads (0 the base) and the next one's weight.
+
+    ``nearest`` and ``bilinear`` read the base level. ``trilinear`` reads the two levels
+    around ``log2(footprint)``, the finer one with weight ``1 - blend`` and the next with
+    ``blend``; a blend of 0 reads one level only (the base level when a pixel covers at most
+    one texel, the last, 1 x 1, level when it covers the whole texture).
+    """
+    count = tables.textures[texture, 1]
+    # "not >" rather than "<=": a NaN footprint reads the base level.
+    if tables.textures[texture, 2] != TRILINEAR or not footprint > 1.0 or count == 1:
+        return np.intp(0), 0.0
+    lod = min(math.log2(footprint), count - 1.0)
+    level = np.intp(lod)
+    return level, lod - level
+
+
 @njit
 def sample(tables, texture, u, v, footprint):
     """Linear (r, g, b, a) of ``texture`` at (u, v), filtered for a pixel of ``footprint`` texels.
 
-    ``nearest`` takes the texel under (u, v) and ``bilinear`` blends the four around it, both
-    on the base level; ``trilinear`` blends bilinear lookups on the two mip levels around
-    ``log2(footprint)`` (the base level when a pixel covers less than one texel).
+    ``nearest`` takes the texel under (u, v) on the base level; ``bilinear`` blends the four
+    around it on the level :func:`mip_level` chooses, and ``trilinear`` blends two such
+    lookups on consecutive levels when the pixel falls between them.
     """
-    first, count = tables.textures[texture, 0], tables.textures[texture, 1]
-    mode, wrap = tables.textures[texture, 2], tables.textures[texture, 3]
-    if mode == NEAREST:
+    first, wrap = tables.textures[texture, 0], tables.textures[texture, 3]
+    if tables.textures[texture, 2] == NEAREST:
         width, height = tables.levels[first, 1], tables.levels[first, 2]
         col = wrapped(np.intp(math.floor(u * width)), width, wrap)
         row = wrapped(np.intp(math.floor((1.0 - v) * height)), height, wrap)
         return _texel(tables, first, col, row)
-    lod = math.log2(footprint) if footprint > 1.0 else 0.0
-    if mode == BILINEAR or lod <= 0.0 or count == 1:
-        return _bilinear(tables, first, wrap, u, v)
-    lod = min(lod, count - 1.0)
-    lower = min(np.intp(lod), count - 2)
-    blend = lod - lower
-    a = _bilinear(tables, first + lower, wrap, u, v)
-    b = _bilinear(tables, first + lower + 1, wrap, u, v)
+    level, blend = mip_level(tables, texture, footprint)
+    a = _bilinear(tables, first + level, wrap, u, v)
+    if blend == 0.0:
+        return a
+    b = _bilinear(tables, first + level + 1, wrap, u, v)
     keep = 1.0 - blend
     return (
         keep * a[0] + blend * b[0],
@@ -143,11 +171,7 @@ def surface_color(tables, material, obj, uv, colors, a, b, c, w0, w1, w2, dudx, 
     if texture >= 0:
         u = w0 * uv[a, 0] + w1 * uv[b, 0] + w2 * uv[c, 0]
         v = w0 * uv[a, 1] + w1 * uv[b, 1] + w2 * uv[c, 1]
-        base = tables.textures[texture, 0]
-        width, height = tables.levels[base, 1], tables.levels[base, 2]
-        across = math.hypot(dudx * width, dvdx * height)
-        down = math.hypot(dudy * width, dvdy * height)
-        footprint = max(across, down)
+        footprint = texel_footprint(tables, texture, dudx, dvdx, dudy, dvdy)
         tr, tg, tb, ta = sample(tables, texture, u, v, footprint)
         r *= tr
         g *= tg
