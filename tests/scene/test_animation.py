@@ -301,3 +301,39 @@ def test_the_animation_example_of_the_format_document_loads(tmp_path):
     scene = load_scene(_write(tmp_path, head + 'name = "ring"\n' + example))
     assert scene.animation.frames == 120 and scene.animation.turntable.turns == 1
     assert scene.camera_at(60).fov == 50.0
+
+
+def test_view_height_keys_zoom_an_orthographic_camera():
+    from pixelpath.scene import Camera, Scene
+    from pixelpath.scene.animation import Animation, CameraKey
+
+    camera = Camera(eye=(0, 0, 5), target=(0, 0, 0), projection="orthographic", view_height=2.0)
+    animation = Animation(11, camera=[CameraKey(10, view_height=6.0)])
+    scene = Scene(camera, animation=animation)
+    assert [scene.camera_at(f).view_height for f in (0, 5, 10)] == [2.0, 4.0, 6.0]
+    assert scene.camera_at(5).projection == "orthographic"
+
+
+def test_view_height_keys_on_a_perspective_camera_are_refused():
+    from pixelpath.scene import Camera, Scene
+    from pixelpath.scene.animation import Animation, CameraKey
+
+    animation = Animation(11, camera=[CameraKey(10, view_height=6.0)])
+    with pytest.raises(ValueError, match=r"camera\[0\].*view_height keys zoom an orthographic"):
+        Scene(Camera(eye=(0, 0, 5), target=(0, 0, 0)), animation=animation)
+    with pytest.raises(ValueError, match="view_height must be positive"):
+        CameraKey(10, view_height=0)
+
+
+def test_view_height_keys_load_from_toml(tmp_path):
+    from pixelpath.scene import load_scene
+
+    path = tmp_path / "zoom.toml"
+    path.write_text(
+        '[camera]\neye = [0, 0, 5]\ntarget = [0, 0, 0]\nprojection = "orthographic"\n'
+        "view_height = 2.0\n\n[animation]\nframes = 5\n\n[[animation.camera]]\nframe = 4\n"
+        "view_height = 10.0\n"
+    )
+    scene = load_scene(path)
+    assert scene.camera_at(2).view_height == 6.0
+    assert scene.at_frame(4).camera.view_height == 10.0

@@ -1,8 +1,8 @@
 """Animation: the camera and object transforms keyed over frames, and the turntable orbit.
 
 A scene's :class:`Animation` has ``frames`` frames, numbered ``0 .. frames - 1``. Each keyed
-property (the camera's ``eye``, ``target`` and ``fov``; an object's ``translate``, ``rotate``
-and ``scale``) is a track of the keys that set it:
+property (the camera's ``eye``, ``target``, ``fov`` and ``view_height``; an object's
+``translate``, ``rotate`` and ``scale``) is a track of the keys that set it:
 
 - frame 0 is the scene as written (the camera's values; the identity transform for objects),
   and keys set values at later frames (1 .. frames - 1), so rendering the scene itself draws
@@ -41,7 +41,7 @@ from pixelpath.scene.transform import transform_matrix, transform_object
 
 INTERPOLATIONS = ("linear", "smooth")
 MAX_FRAMES = 1_000_000
-CAMERA_TRACKS = ("eye", "target", "fov")
+CAMERA_TRACKS = ("eye", "target", "fov", "view_height")
 OBJECT_TRACKS = ("translate", "rotate", "scale")
 _IDENTITY = {"translate": np.zeros(3), "rotate": np.zeros(3), "scale": np.ones(3)}
 
@@ -74,12 +74,17 @@ class CameraKey(Record):
         Vertical field of view in degrees, in (0, 180).
     interpolation : {"linear", "smooth"}, optional
         How values move from this key to the next (default: the animation's).
+    view_height : float, optional
+        The view's height in world units, > 0: the zoom of an orthographic camera (keys of it
+        on a perspective camera are a ValueError when the animation meets the scene).
 
     Examples
     --------
     >>> from pixelpath.scene.animation import CameraKey
     >>> CameraKey(30, eye=(0, 2, 6)).eye.tolist()
     [0.0, 2.0, 6.0]
+    >>> CameraKey(30, view_height=8).view_height
+    8.0
     """
 
     frame: int
@@ -87,11 +92,14 @@ class CameraKey(Record):
     target: Any = None
     fov: Any = None
     interpolation: str | None = None
+    view_height: Any = None
 
     def __post_init__(self) -> None:
         values = {name: getattr(self, name) for name in CAMERA_TRACKS}
         if all(value is None for value in values.values()):
-            raise ValueError("a camera key must set at least one of eye, target, fov")
+            raise ValueError(
+                "a camera key must set at least one of eye, target, fov, view_height"
+            )
         fov = self.fov
         if fov is not None:
             fov = v.real(fov, "fov")
@@ -103,6 +111,8 @@ class CameraKey(Record):
             target=None if self.target is None else v.vector3(self.target, "target"),
             fov=fov,
             interpolation=_interpolation(self.interpolation, optional=True),
+            view_height=None if self.view_height is None
+            else v.real(self.view_height, "view_height", positive=True),
         )
 
 
@@ -251,6 +261,11 @@ class Animation(Record):
         ``center`` is the turntable's axis point when the turntable names none.
         """
         frame = self.checkframe_number(frame)
+        if not camera.orthographic and any(key.view_height is not None for key in self.camera):
+            raise ValueError(
+                "view_height keys zoom an orthographic camera; this camera is perspective "
+                "(key its fov instead)"
+            )
         values = {
             name: _track_value(
                 self.camera, name, frame, getattr(camera, name), self.interpolation
@@ -265,7 +280,9 @@ class Animation(Record):
             angle = 2.0 * math.pi * self.turntable.turns * frame / self.frames
             turn = _rotation_about(camera.up, angle)
             eye, target = (pivot + turn @ (point - pivot) for point in (eye, target))
-        return dataclasses.replace(camera, eye=eye, target=target, fov=float(values["fov"]))
+        height = values["view_height"]  # None for a perspective camera
+        return dataclasses.replace(camera, eye=eye, target=target, fov=float(values["fov"]),
+                                   view_height=None if height is None else float(height))
 
     def matrix_at(self, index: int, frame: int) -> np.ndarray | None:
         """Return the animated (4, 4) transform of object ``index`` at ``frame`` (None: unkeyed)."""

@@ -249,6 +249,7 @@ CAMERA_KEY = {
     "eye": Key("vector3", "camera position at this frame"),
     "target": Key("vector3", "the point looked at, at this frame"),
     "fov": Key("number", "vertical field of view at this frame, degrees"),
+    "view_height": Key("number", "orthographic view height at this frame, world units"),
 }
 OBJECT_KEY = {
     "object": Key("object", "the object: index in [[objects]] or a mesh's name", required=True),
@@ -351,7 +352,9 @@ def scene_json_schema() -> dict[str, Any]:
     top["properties"]["materials"]["additionalProperties"] = {"$ref": "#/$defs/material"}
     top["properties"]["objects"]["items"] = {"oneOf": objects}
     animation = _section_schema(ANIMATION, Animation)
-    animation["properties"]["camera"]["items"] = _keyed(CAMERA_KEY, "eye", "target", "fov")
+    animation["properties"]["camera"]["items"] = _keyed(
+        CAMERA_KEY, "eye", "target", "fov", "view_height"
+    )
     animation["properties"]["objects"]["items"] = _keyed(
         OBJECT_KEY, "translate", "rotate", "scale"
     )
