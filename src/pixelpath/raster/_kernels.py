@@ -43,7 +43,6 @@ from pixelpath.clip._kernels import PLANE, clip_stage
 from pixelpath.lighting._kernels import shade_planar, shade_point
 from pixelpath.scene._texture_kernels import (
     TEXTURE,
-    colored,
     mip_level,
     surface_color,
     texel_footprint,
@@ -112,6 +111,7 @@ class PhongBatch(NamedTuple):
     scratch: np.ndarray  # (5, SHADE_BATCH) work space of shade_planar
     denominators: np.ndarray  # (SHADE_BATCH,) interpolated 1/w: points are numerators first
     columns: np.ndarray  # (SHADE_BATCH,) intp: the pixel column of each gathered pixel
+    row_colors: np.ndarray  # (w, 3) surface colour of a row's pixels of coloured objects
 
 
 class Surfaces(NamedTuple):
@@ -128,6 +128,7 @@ class Surfaces(NamedTuple):
     uv: np.ndarray  # (V, 2) texture coordinates; (0, 2) when nothing is textured
     vertex_colors: np.ndarray  # (V, 4) vertex colours; (0, 4) when no object has them
     tables: object  # SurfaceTables: textures and which objects have coloured surfaces
+    coloured: np.ndarray  # (O,) bool: objects with a texture or vertex colours
     materials: np.ndarray  # (O, 8) packed materials
     lights: np.ndarray  # (L, 7) packed lights
     ambient: np.ndarray  # (3,) ambient intensity
@@ -760,7 +761,7 @@ def _clamp01(value):
 
 
 @njit
-def _new_batch():
+def _new_batch(width):
     return PhongBatch(
         np.empty((3, SHADE_BATCH)),
         np.empty((3, SHADE_BATCH)),
@@ -769,6 +770,7 @@ def _new_batch():
         np.empty((5, SHADE_BATCH)),
         np.empty(SHADE_BATCH),
         np.empty(SHADE_BATCH, dtype=np.intp),
+        np.empty((width, 3)),
     )
 
 
@@ -787,7 +789,7 @@ def render_bands(bands, setup, rows, offsets, items, band_rows, x0, y0, inv_dept
         _rasterize_band(
             setup, rows, offsets, items, band, band_rows, x0, y0, inv_depth, triangle_id
         )
-        batch = _new_batch()
+        batch = _new_batch(inv_depth.shape[1])
         first, stop = _band_rows(band, band_rows, y0, height)
         for j in range(first, stop):
             _shade_row(j, x0, y0, triangle_id, inv_depth, surfaces, out, batch)
@@ -805,7 +807,7 @@ def shade_bands(bands, band_rows, x0, y0, inv_depth, triangle_id, surfaces, out)
     """
     height = inv_depth.shape[0]
     for k in range(bands.shape[0]):
-        batch = _new_batch()
+        batch = _new_batch(inv_depth.shape[1])
         first, stop = _band_rows(bands[k], band_rows, y0, height)
         for j in range(first, stop):
             _shade_row(j, x0, y0, triangle_id, inv_depth, surfaces, out, batch)
@@ -834,6 +836,9 @@ def _shade_row(j, x0, y0, triangle_id, inv_depth, surfaces, out, batch):
     _fill_row(inv_depth[row], s.background, rgb, out.depth[row], out.object_id[row], normal)
     ids = triangle_id[row]
     half = s.colors.shape[1] // 2  # Gouraud: the columns of the light from the front
+    if s.uv.shape[0] > 0 or s.vertex_colors.shape[0] > 0:
+        _row_surface_colors(j, x0, ids, s.info, s.setup, s.triangles, s.uv, s.vertex_colors,
+                            s.tables, s.materials, s.coloured, batch.row_colors)
     for i in range(ids.shape[0]):
         t = ids[i]
         if t < 0:
@@ -841,12 +846,11 @@ def _shade_row(j, x0, y0, triangle_id, inv_depth, surfaces, out, batch):
         obj = s.info[t, 0]
         out.object_id[row, i] = obj
         x = (x0 + i) + 0.5
+        coloured = s.coloured[obj]
         if s.mode != PHONG:
-            coloured = colored(s.tables, obj)
             tint = (1.0, 1.0, 1.0)
             if coloured:
-                cr, cg, cb, _ = _pixel_color(s, t, obj, x, y)
-                tint = (cr, cg, cb)
+                tint = (batch.row_colors[i, 0], batch.row_colors[i, 1], batch.row_colors[i, 2])
             if s.mode == FLAT:
                 for channel in range(3):
                     normal[i, channel] = s.face_normals[t, channel]
@@ -881,13 +885,11 @@ def _shade_row(j, x0, y0, triangle_id, inv_depth, surfaces, out, batch):
         batch.normals[0, count] = line[8] * x + line[9]
         batch.normals[1, count] = line[10] * x + line[11]
         batch.normals[2, count] = line[12] * x + line[13]
-        if colored(s.tables, obj):
-            cr, cg, cb, _ = _pixel_color(s, t, obj, x, y)
-        else:
-            cr, cg, cb = s.materials[obj, 0], s.materials[obj, 1], s.materials[obj, 2]
-        batch.albedo[0, count] = cr
-        batch.albedo[1, count] = cg
-        batch.albedo[2, count] = cb
+        colors = batch.row_colors if coloured else s.materials
+        k = i if coloured else obj
+        batch.albedo[0, count] = colors[k, 0]
+        batch.albedo[1, count] = colors[k, 1]
+        batch.albedo[2, count] = colors[k, 2]
         batch.columns[count] = i
         count += 1
     if count > 0:
@@ -931,8 +933,10 @@ def _perspective_terms(setup, t, x, y):
 
 
 @njit(inline="always")
-def texture_coordinates(setup, t, uv, a, b, c, x, y):
-    """Return (u, v, du/dx, dv/dx, du/dy, dv/dy) of triangle t (vertices a, b, c) at (x, y).
+def texture_coordinates(terms, uv, a, b, c):
+    """Return (u, v, du/dx, dv/dx, du/dy, dv/dy) of a triangle (vertices a, b, c) at a pixel.
+
+    ``terms`` are the triangle's :func:`_perspective_terms` at the pixel's centre.
 
     The texture coordinates are interpolated perspective-correctly and differentiated along
     the image's rows and columns, which gives how far they move over one pixel (the
@@ -940,7 +944,7 @@ def texture_coordinates(setup, t, uv, a, b, c, x, y):
     ``du/dx = (sum t_k,x u_k - u sum t_k,x) / D``. Shared by the shading pass and the
     explain report's count of mip levels, so both see the same footprint.
     """
-    b0, b1, b2, inv, gx0, gx1, gx2, gy0, gy1, gy2 = _perspective_terms(setup, t, x, y)
+    b0, b1, b2, inv, gx0, gx1, gx2, gy0, gy1, gy2 = terms
     u = _mix(uv, a, b, c, b0, b1, b2, 0)
     v = _mix(uv, a, b, c, b0, b1, b2, 1)
     gx, gy = gx0 + gx1 + gx2, gy0 + gy1 + gy2
@@ -951,22 +955,31 @@ def texture_coordinates(setup, t, uv, a, b, c, x, y):
     return u, v, dudx, dvdx, dudy, dvdy
 
 
-@njit
-def _pixel_color(s, t, obj, x, y):
-    """Return the surface colour (r, g, b, alpha) of triangle t at pixel centre (x, y).
+@njit(refcount=False)
+def _row_surface_colors(j, x0, ids, info, setup, triangles, uv, vertex_colors, tables,
+                        materials, coloured, out):
+    """Write the surface colour (r, g, b) of row j's pixels that show a coloured object.
 
-    At the perspective-correct weights, the texture filtered for the footprint of
-    :func:`texture_coordinates` (no texture coordinates: vertex colours only).
+    One call per row, compiled without reference counting: the lookups' arrays are handed
+    on per pixel without the atomic count updates a counted kernel makes at each call.
     """
-    b0, b1, b2 = _perspective_terms(s.setup, t, x, y)[:3]
-    a, b, c = s.triangles[t, 0], s.triangles[t, 1], s.triangles[t, 2]
-    dudx = dvdx = dudy = dvdy = 0.0
-    if s.uv.shape[0] > 0:
-        _, _, dudx, dvdx, dudy, dvdy = texture_coordinates(s.setup, t, s.uv, a, b, c, x, y)
-    return surface_color(
-        s.tables, s.materials[obj], obj, s.uv, s.vertex_colors, a, b, c, b0, b1, b2, dudx, dvdx,
-        dudy, dvdy,
-    )
+    y = j + 0.5
+    for i in range(ids.shape[0]):
+        t = ids[i]
+        if t < 0 or not coloured[info[t, 0]]:
+            continue
+        x = (x0 + i) + 0.5
+        terms = _perspective_terms(setup, t, x, y)
+        b0, b1, b2 = terms[0], terms[1], terms[2]
+        a, b, c = triangles[t, 0], triangles[t, 1], triangles[t, 2]
+        dudx = dvdx = dudy = dvdy = 0.0
+        if uv.shape[0] > 0:
+            _, _, dudx, dvdx, dudy, dvdy = texture_coordinates(terms, uv, a, b, c)
+        r, g, bl, _ = surface_color(tables, materials, info[t, 0], uv, vertex_colors, a, b, c,
+                                    b0, b1, b2, dudx, dvdx, dudy, dvdy)
+        out[i, 0] = r
+        out[i, 1] = g
+        out[i, 2] = bl
 
 
 @njit
@@ -991,7 +1004,8 @@ def texture_lookups(x0, y0, triangle_id, surfaces, texture, level, blend):
                 continue
             a, b, c = s.triangles[t, 0], s.triangles[t, 1], s.triangles[t, 2]
             x = (x0 + i) + 0.5
-            _, _, dudx, dvdx, dudy, dvdy = texture_coordinates(s.setup, t, s.uv, a, b, c, x, y)
+            terms = _perspective_terms(s.setup, t, x, y)
+            _, _, dudx, dvdx, dudy, dvdy = texture_coordinates(terms, s.uv, a, b, c)
             footprint = texel_footprint(s.tables, k, dudx, dvdx, dudy, dvdy)
             texture[row, i] = k
             level[row, i], blend[row, i] = mip_level(s.tables, k, footprint)
@@ -1166,7 +1180,8 @@ def _tiny_shading_pass():
     surfaces = Surfaces(
         setup, triangles, clip[:, :3].copy(), normals, np.zeros((3, 6)),
         np.zeros((1, 2), dtype=np.intp), np.ones((1, 3)), normals[:1].copy(), np.zeros((3, 2)),
-        np.ones((3, 4)), tiny_tables(), materials, lights, ambient, np.array([0.0, 0.0, 5.0]),
+        np.ones((3, 4)), tiny_tables(), np.ones(1, dtype=np.bool_), materials, lights, ambient,
+        np.array([0.0, 0.0, 5.0]),
         np.zeros(3), PHONG, False,
     )
     out = Buffers(

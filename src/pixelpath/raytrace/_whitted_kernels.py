@@ -612,7 +612,7 @@ def _schlick(cos_i, cos_t, eta, ior):
     return r0 + (1.0 - r0) * m * m * m * m * m
 
 
-@njit
+@njit(inline="always")
 def _coloured_material(scene, out, obj, index, w1, w2, px, py, pz, nx, ny, nz, dx, dy, dz):
     """Write object ``obj``'s material with the surface colour at the hit into ``out``.
 
@@ -629,9 +629,10 @@ def _coloured_material(scene, out, obj, index, w1, w2, px, py, pz, nx, ny, nz, d
     length = math.sqrt(dx * dx + dy * dy + dz * dz)
     cosine = abs(nx * dx + ny * dy + nz * dz) / length if length > 0.0 else 1.0
     span = scene.tri_texel_scale[index] * width / max(cosine, 1e-3)
+    first = 3 * index  # the triangle's corners' rows of tri_uv and tri_colors
     r, g, b, _ = surface_color(
-        scene.tables, out, obj, scene.tri_uv, scene.tri_colors, 3 * index, 3 * index + 1,
-        3 * index + 2, 1.0 - w1 - w2, w1, w2, span, 0.0, 0.0, span,
+        scene.tables, scene.materials, obj, scene.tri_uv, scene.tri_colors, first, first + 1,
+        first + 2, 1.0 - w1 - w2, w1, w2, span, 0.0, 0.0, span,
     )
     out[0], out[1], out[2] = r, g, b
     return out

@@ -54,28 +54,44 @@ def wrapped(index, size, wrap):
 
 
 @njit(inline="always")
-def _texel(tables, level, col, row):
-    """Linear (r, g, b, a) of texel (col, row) of a level (already wrapped)."""
-    k = tables.levels[level, 0] + row * tables.levels[level, 1] + col
-    decode = tables.decode
-    texel = tables.texels[k]
-    return decode[texel[0]], decode[texel[1]], decode[texel[2]], texel[3] / 255.0
+def _texel(tables, start, width, col, row):
+    """Linear (r, g, b, a) of texel (col, row) of the level at ``start`` and ``width`` texels wide.
+
+    Every array is indexed in full (``texels[k, 0]``, not ``texels[k][0]``): a row view per
+    texel would cost a reference count update on the shared table, per lookup.
+    """
+    k = start + row * width + col
+    decode, texels = tables.decode, tables.texels
+    return decode[texels[k, 0]], decode[texels[k, 1]], decode[texels[k, 2]], texels[k, 3] / 255.0
 
 
-@njit
+@njit(inline="always")
+def _neighbours(x, size, wrap):
+    """Return the texels (i0, i1) on either side of texel coordinate x, and x's fraction past i0.
+
+    ``repeat``, by far the commonest, wraps in floating point: an integer modulo (Python's,
+    for negative indices) per texel was most of a bilinear lookup's time.
+    """
+    floor_x = math.floor(x)
+    fraction = x - floor_x
+    if wrap == REPEAT:
+        # Clamped as well: far from 0 the float quotient may round across a period's edge.
+        i0 = min(max(np.intp(floor_x - size * math.floor(floor_x / size)), 0), size - 1)
+        return i0, (i0 + 1 if i0 + 1 < size else np.intp(0)), fraction
+    i = np.intp(floor_x)
+    return wrapped(i, size, wrap), wrapped(i + 1, size, wrap), fraction
+
+
+@njit(inline="always")
 def _bilinear(tables, level, wrap, u, v):
     """Bilinear blend of the four texels around (u, v) on one level."""
-    width, height = tables.levels[level, 1], tables.levels[level, 2]
-    x = u * width - 0.5
-    y = (1.0 - v) * height - 0.5
-    col, row = math.floor(x), math.floor(y)
-    fx, fy = x - col, y - row
-    c0, c1 = wrapped(np.intp(col), width, wrap), wrapped(np.intp(col) + 1, width, wrap)
-    r0, r1 = wrapped(np.intp(row), height, wrap), wrapped(np.intp(row) + 1, height, wrap)
-    a = _texel(tables, level, c0, r0)
-    b = _texel(tables, level, c1, r0)
-    c = _texel(tables, level, c0, r1)
-    d = _texel(tables, level, c1, r1)
+    start, width, height = tables.levels[level, 0], tables.levels[level, 1], tables.levels[level, 2]
+    c0, c1, fx = _neighbours(u * width - 0.5, width, wrap)
+    r0, r1, fy = _neighbours((1.0 - v) * height - 0.5, height, wrap)
+    a = _texel(tables, start, width, c0, r0)
+    b = _texel(tables, start, width, c1, r0)
+    c = _texel(tables, start, width, c0, r1)
+    d = _texel(tables, start, width, c1, r1)
     w00, w10, w01, w11 = (1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy
     return (
         w00 * a[0] + w10 * b[0] + w01 * c[0] + w11 * d[0],
@@ -94,9 +110,9 @@ def texel_footprint(tables, texture, dudx, dvdx, dudy, dvdy):
     """
     base = tables.textures[texture, 0]
     width, height = tables.levels[base, 1], tables.levels[base, 2]
-    across = math.hypot(dudx * width, dvdx * height)
-    down = math.hypot(dudy * width, dvdy * height)
-    return max(across, down)
+    across = (dudx * width) ** 2 + (dvdx * height) ** 2
+    down = (dudy * width) ** 2 + (dvdy * height) ** 2
+    return math.sqrt(max(across, down))
 
 
 @njit(inline="always")
@@ -117,7 +133,9 @@ def mip_level(tables, texture, footprint):
     return level, lod - level
 
 
-@njit
+# The lookups allocate nothing and only read the tables they are given: compiled without
+# reference counting, which would update the shared tables' counts atomically per pixel.
+@njit(inline="always")
 def sample(tables, texture, u, v, footprint):
     """Linear (r, g, b, a) of ``texture`` at (u, v), filtered for a pixel of ``footprint`` texels.
 
@@ -128,9 +146,9 @@ def sample(tables, texture, u, v, footprint):
     first, wrap = tables.textures[texture, 0], tables.textures[texture, 3]
     if tables.textures[texture, 2] == NEAREST:
         width, height = tables.levels[first, 1], tables.levels[first, 2]
-        col = wrapped(np.intp(math.floor(u * width)), width, wrap)
-        row = wrapped(np.intp(math.floor((1.0 - v) * height)), height, wrap)
-        return _texel(tables, first, col, row)
+        col = _neighbours(u * width, width, wrap)[0]
+        row = _neighbours((1.0 - v) * height, height, wrap)[0]
+        return _texel(tables, tables.levels[first, 0], width, col, row)
     level, blend = mip_level(tables, texture, footprint)
     a = _bilinear(tables, first + level, wrap, u, v)
     if blend == 0.0:
@@ -151,23 +169,23 @@ def colored(tables, obj):
     return tables.objects[obj, TEXTURE] >= 0 or tables.objects[obj, HAS_COLORS] != 0
 
 
-@njit
-def surface_color(tables, material, obj, uv, colors, a, b, c, w0, w1, w2, dudx, dvdx, dudy,
+@njit(inline="always")
+def surface_color(tables, materials, obj, uv, colors, a, b, c, w0, w1, w2, dudx, dvdx, dudy,
                   dvdy):
     """Surface colour (r, g, b, alpha) at barycentric weights (w0, w1, w2) of vertices a, b, c.
 
-    ``material`` colour × the interpolated vertex colour × the texture at the interpolated
-    texture coordinates. (dudx, dvdx) and (dudy, dvdy) are how far (u, v) moves over one pixel
-    across and down the image: the longer, in texels, is the footprint that sets the mip level.
+    The colour of ``materials[obj]`` × the interpolated vertex colour × the texture at the
+    interpolated texture coordinates. (dudx, dvdx) and (dudy, dvdy) are how far (u, v) moves
+    over one pixel across and down the image: the longer, in texels, is the footprint that
+    sets the mip level.
     """
-    r, g, bl, alpha = material[0], material[1], material[2], 1.0
-    row = tables.objects[obj]
-    if row[HAS_COLORS]:
+    r, g, bl, alpha = materials[obj, 0], materials[obj, 1], materials[obj, 2], 1.0
+    if tables.objects[obj, HAS_COLORS]:
         r *= w0 * colors[a, 0] + w1 * colors[b, 0] + w2 * colors[c, 0]
         g *= w0 * colors[a, 1] + w1 * colors[b, 1] + w2 * colors[c, 1]
         bl *= w0 * colors[a, 2] + w1 * colors[b, 2] + w2 * colors[c, 2]
         alpha *= w0 * colors[a, 3] + w1 * colors[b, 3] + w2 * colors[c, 3]
-    texture = row[TEXTURE]
+    texture = tables.objects[obj, TEXTURE]
     if texture >= 0:
         u = w0 * uv[a, 0] + w1 * uv[b, 0] + w2 * uv[c, 0]
         v = w0 * uv[a, 1] + w1 * uv[b, 1] + w2 * uv[c, 1]
