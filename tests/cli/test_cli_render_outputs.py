@@ -141,3 +141,31 @@ def test_frames_with_aov_or_transparent_is_a_clear_error(scene_file, tmp_path, c
     err = capsys.readouterr().err
     assert "--aov" in err and "--transparent" in err and "Traceback" not in err
     assert list(tmp_path.glob("f_*")) == []
+
+
+def test_turntable_orbits_a_scene_without_an_animation(scene_file, tmp_path):
+    pattern = str(tmp_path / "spin_{frame}.png")
+    assert main(["render", str(scene_file), "--turntable", "4", "-o", pattern, "-q"]) == 0
+    frames = [np.asarray(PILImage.open(tmp_path / f"spin_{k}.png")) for k in range(4)]
+    # A quarter turn apart: the camera sees the cube's front (+Z), then the +X side (both lit,
+    # differently, by the light at (2, 3, 4)), then the back and the -X side, which face away
+    # from the light and show the ambient light alone.
+    front, right, back, left = frames
+    assert len({front.tobytes(), right.tobytes(), back.tobytes()}) == 3
+    np.testing.assert_array_equal(back, left)
+    assert not (tmp_path / "spin_4.png").exists()
+
+
+def test_turntable_with_frames_renders_only_those(scene_file, tmp_path):
+    pattern = str(tmp_path / "f_{frame}.png")
+    assert main(["render", str(scene_file), "--turntable", "8", "--frames", "2,5", "-o",
+                 pattern, "-q"]) == 0
+    assert sorted(p.name for p in tmp_path.glob("f_*.png")) == ["f_2.png", "f_5.png"]
+
+
+def test_turntable_refuses_a_scene_with_its_own_animation(tmp_path, capsys):
+    path = tmp_path / "animated.toml"
+    path.write_text(SCENE + "\n[animation]\nframes = 3\nturntable = { turns = 1 }\n")
+    code = main(["render", str(path), "--turntable", "4", "-o", str(tmp_path / "f_{frame}.png")])
+    assert code != 0
+    assert "has an [animation] of its own" in capsys.readouterr().err

@@ -31,6 +31,13 @@ def add_frame_options(parser: argparse.ArgumentParser) -> None:
         "5, 1,4,9 or all; -o must then contain {frame}, e.g. out/f_{frame:04d}.png",
     )
     group.add_argument(
+        "--turntable",
+        type=int,
+        metavar="N",
+        help="orbit the camera once round the scene in N frames (for a scene without an "
+        "[animation], such as a model file); renders them all unless --frames says otherwise",
+    )
+    group.add_argument(
         "--tiles",
         metavar="CxR",
         help="split each frame into COLUMNSxROWS tiles rendered in parallel and stitched "
@@ -57,7 +64,7 @@ def add_frame_options(parser: argparse.ArgumentParser) -> None:
 
 def wants_frames(args: argparse.Namespace) -> bool:
     """Return True when any of the frame options was given."""
-    given = (args.frames, args.tiles, args.workers, args.scheduler)
+    given = (args.frames, args.tiles, args.workers, args.scheduler, args.turntable)
     return args.resume or any(value is not None for value in given)
 
 

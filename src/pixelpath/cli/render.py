@@ -272,6 +272,9 @@ def run(args: argparse.Namespace) -> int:
     """Render the scene and write the image."""
     scene = load_scene_sized(args.scene, args.size, args.frame)
     check_figures(args)
+    if args.turntable is not None:
+        scene = with_turntable(scene, args.turntable)
+        args.frames = args.frames or "all"
     if wants_frames(args):
         if args.transparent or args.aov:
             raise CommandError("--transparent and --aov write one image's files for now; "
@@ -290,6 +293,31 @@ def run(args: argparse.Namespace) -> int:
             f"shading) in {elapsed:.2f} s"
         )
     return 0
+
+
+def with_turntable(scene: Any, frames: int) -> Any:
+    """Return ``scene`` animated by one turn of the camera round it in ``frames`` frames.
+
+    Examples
+    --------
+    >>> from pixelpath.cli.render import with_turntable
+    >>> from pixelpath.scene import Box, Camera, Scene
+    >>> scene = Scene(Camera(eye=(0, 0, 5), target=(0, 0, 0)), [Box((-1, -1, -1), (1, 1, 1))])
+    >>> with_turntable(scene, 4).camera_at(1).eye.round(9).tolist()
+    [5.0, 0.0, 0.0]
+    """
+    import dataclasses
+
+    from pixelpath.scene import Animation, Turntable
+
+    if scene.animation is not None:
+        raise CommandError("--turntable: the scene has an [animation] of its own; use --frames")
+    if frames < 1:
+        raise CommandError(f"--turntable needs at least one frame, got {frames}")
+    try:
+        return dataclasses.replace(scene, animation=Animation(frames, turntable=Turntable()))
+    except ValueError as exc:  # nothing bounded to orbit
+        raise CommandError(f"--turntable: {exc}") from None
 
 
 def wants_figures(args: argparse.Namespace) -> bool:
