@@ -30,6 +30,8 @@ import pixelpath as pp
 
 MESHES = Path(__file__).resolve().parents[2] / "shared" / "data" / "meshes"
 
+# With TEXTURED defined, the shaders also carry texture coordinates and multiply the colour
+# by the (sRGB-decoded, trilinearly filtered) texture, as pixelpath's textured Phong does.
 VERTEX_SHADER = """
 #version 330
 uniform mat4 mvp;
@@ -37,9 +39,16 @@ in vec3 in_position;
 in vec3 in_normal;
 out vec3 position;
 out vec3 normal;
+#ifdef TEXTURED
+in vec2 in_uv;
+out vec2 uv;
+#endif
 void main() {
     position = in_position;
     normal = in_normal;
+#ifdef TEXTURED
+    uv = in_uv;
+#endif
     gl_Position = mvp * vec4(in_position, 1.0);
 }
 """
@@ -54,20 +63,36 @@ uniform float ambient;
 in vec3 position;
 in vec3 normal;
 out vec4 frag;
+#ifdef TEXTURED
+uniform sampler2D picture;
+in vec2 uv;
+#endif
 void main() {
     vec3 n = normalize(normal);
     vec3 l = normalize(light - position);
     vec3 v = normalize(eye - position);
     float n_dot_l = dot(n, l);
-    vec3 intensity = coefficients.x * ambient * color;
+    vec3 albedo = color;
+#ifdef TEXTURED
+    albedo *= texture(picture, uv).rgb;
+#endif
+    vec3 intensity = coefficients.x * ambient * albedo;
     if (n_dot_l > 0.0) {
-        intensity += coefficients.y * color * n_dot_l;
+        intensity += coefficients.y * albedo * n_dot_l;
         float r_dot_v = dot(2.0 * n_dot_l * n - l, v);
         if (r_dot_v > 0.0) intensity += vec3(coefficients.z * pow(r_dot_v, coefficients.w));
     }
     frag = vec4(clamp(intensity, 0.0, 1.0), 1.0);
 }
 """
+
+
+def _shader(source: str, textured: bool) -> str:
+    """The shader source, with TEXTURED defined after its version line when asked."""
+    if not textured:
+        return source
+    version, rest = source.strip().split("\n", 1)
+    return f"{version}\n#define TEXTURED\n{rest}"
 
 
 def load_model(name: str) -> tuple[str, pp.Mesh]:
@@ -113,7 +138,11 @@ def time_frames(draw, frames: int) -> tuple[float, float]:
 
 
 class Llvmpipe:
-    """The same scene drawn by OpenGL on Mesa's llvmpipe through moderngl (EGL, no display)."""
+    """The same scene drawn by OpenGL on Mesa's llvmpipe through moderngl (EGL, no display).
+
+    A mesh with texture coordinates and a textured material is drawn textured: an sRGB
+    texture with mip maps, sampled trilinearly, its repeat wrap, multiplying the colour.
+    """
 
     def __init__(self, scene: pp.Scene) -> None:
         import moderngl
@@ -123,7 +152,9 @@ class Llvmpipe:
         camera = scene.camera
         mesh = scene.objects[0]
         material = mesh.material
-        program = self.ctx.program(vertex_shader=VERTEX_SHADER, fragment_shader=FRAGMENT_SHADER)
+        textured = mesh.uv is not None and material.texture is not None
+        program = self.ctx.program(vertex_shader=_shader(VERTEX_SHADER, textured),
+                                   fragment_shader=_shader(FRAGMENT_SHADER, textured))
         mvp = camera.projection_matrix() @ camera.view_matrix()
         program["mvp"].write(mvp.T.astype("f4").tobytes())  # GLSL matrices are column-major
         program["eye"].value = tuple(camera.eye)
@@ -132,9 +163,23 @@ class Llvmpipe:
         program["coefficients"].value = (material.ka, material.kd, material.ks, material.shininess)
         program["ambient"].value = float(scene.ambient[0])
         corners = mesh.triangles.reshape(-1)
-        data = np.hstack([mesh.vertices[corners], mesh.vertex_normals[corners]]).astype("f4")
+        columns = [mesh.vertices[corners], mesh.vertex_normals[corners]]
+        layout, names = "3f 3f", ["in_position", "in_normal"]
+        if textured:
+            columns.append(mesh.uv[corners])
+            layout, names = "3f 3f 2f", [*names, "in_uv"]
+            base = material.texture.levels[0]  # RGBA, sRGB colour, row 0 at the top
+            self.texture = self.ctx.texture(
+                (base.shape[1], base.shape[0]), 4, np.ascontiguousarray(base[::-1]).tobytes(),
+                internal_format=0x8C43,  # GL_SRGB8_ALPHA8: decoded to linear when sampled
+            )
+            self.texture.build_mipmaps()
+            self.texture.filter = (moderngl.LINEAR_MIPMAP_LINEAR, moderngl.LINEAR)
+            self.texture.use(0)
+            program["picture"].value = 0
+        data = np.hstack(columns).astype("f4")
         self.vao = self.ctx.vertex_array(
-            program, [(self.ctx.buffer(data.tobytes()), "3f 3f", "in_position", "in_normal")]
+            program, [(self.ctx.buffer(data.tobytes()), layout, *names)]
         )
         size = (camera.width, camera.height)
         self.fbo = self.ctx.framebuffer(
