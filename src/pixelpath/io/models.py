@@ -45,6 +45,15 @@ glTF ``baseColorTexture``     ``texture`` (sRGB); its alpha channel is dropped w
 glTF ``metallicFactor`` m     ``kd = 1 - 0.6 m``; ``ks = (1 - r)^2 (0.25 + 0.75 m)``
 glTF ``roughnessFactor`` r    ``shininess = clip(2 / r^4 - 2, 1, 1000)``; r = 1 (the default)
                               gives ``ks = 0``: no highlight
+glTF sampler of the           ``texture_wrap`` from ``wrapS``: REPEAT (10497, the default)
+``baseColorTexture``          "repeat", CLAMP_TO_EDGE (33071) "clamp", MIRRORED_REPEAT
+                              (33648) "mirror"; pixelpath has one wrap for both axes, so a
+                              ``wrapT`` that differs gives a warning (once per material).
+                              ``texture_filter`` from ``minFilter``: NEAREST (9728) "nearest"
+                              when ``magFilter`` is NEAREST or absent ("bilinear" when it is
+                              LINEAR), LINEAR (9729) "bilinear", the mipmap filters
+                              (9984-9987) "trilinear", absent "trilinear" (glTF leaves the
+                              choice to the viewer). No sampler: "repeat", "trilinear".
 glTF ``doubleSided``          ``double_sided``
 glTF ``alphaMode``            OPAQUE: texture alpha ignored; MASK (with ``alphaCutoff``) and
                               BLEND: the texture keeps its alpha channel
@@ -59,6 +68,13 @@ MTL ``d``                     ``transparency = 1 - d`` (``Tr`` is ignored: expor
 no material (PLY, STL)        light grey ``(0.8, 0.8, 0.8)``, ``kd = 1``, ``ks = 0.2``,
                               ``shininess = 32``
 ============================  =================================================================
+
+trimesh's materials do not say which glTF material they came from, so the sampler is found
+through the material's name, as the texture check is: where several glTF materials share the
+name (or several have none), which one a part uses is ambiguous and its texture keeps the
+defaults ("trilinear", "repeat"). A sampler that is not valid glTF (a texture or sampler index
+out of range, a value of the wrong type, an unknown filter or wrap code) is refused with a
+``ValueError`` naming the file and the material.
 
 Bad input
 ---------
@@ -510,6 +526,9 @@ def _pbr_material(path: Path, source: Any, gltf: dict | None, shared: dict) -> M
     texture = _texture(path, source.baseColorTexture, shared, keep_alpha=mode != "OPAQUE")
     if texture is None:
         _refuse_lost_texture(path, source, gltf)
+        texture_filter, texture_wrap = "trilinear", "repeat"  # nothing to sample
+    else:
+        texture_filter, texture_wrap = _sampler(path, source, gltf, shared)
     kd = 1.0 - 0.6 * metallic
     return Material(
         color=np.clip(rgba[:3], 0.0, 1.0),
@@ -520,6 +539,8 @@ def _pbr_material(path: Path, source: Any, gltf: dict | None, shared: dict) -> M
         transparency=float(np.clip(1.0 - rgba[3], 0.0, 1.0)) if mode == "BLEND" else 0.0,
         name=source.name if isinstance(source.name, str) else None,
         texture=texture,
+        texture_filter=texture_filter,
+        texture_wrap=texture_wrap,
         double_sided=bool(source.doubleSided),
     )
 
@@ -609,6 +630,121 @@ def _refuse_lost_texture(path: Path, source: Any, gltf: dict | None) -> None:
                 f"{path}: material {source.name!r} has a base-colour texture that could not "
                 "be read (missing, or not a PNG/JPEG trimesh can decode)"
             )
+
+
+# glTF sampler codes (the values of WebGL's constants)
+_WRAPS = {10497: "repeat", 33071: "clamp", 33648: "mirror"}
+_NEAREST, _LINEAR = 9728, 9729
+_MIN_FILTERS = {_NEAREST: "nearest", _LINEAR: "bilinear", 9984: "trilinear",
+                9985: "trilinear", 9986: "trilinear", 9987: "trilinear"}
+
+
+def _sampler(path: Path, source: Any, gltf: dict | None, shared: dict) -> tuple[str, str]:
+    """Return ``(texture_filter, texture_wrap)`` of the material's base-colour texture sampler.
+
+    Parameters
+    ----------
+    path : Path
+        The model file, named in the warning.
+    source : trimesh.visual.material.PBRMaterial
+        The material trimesh read; matched to the glTF material of the same name.
+    gltf : dict or None
+        The checked glTF JSON (None for other formats: the defaults).
+    shared : dict
+        The loader's per-file cache; records which materials were warned about.
+
+    Returns
+    -------
+    (str, str)
+        The filter and wrap (see the module's material table); ``("trilinear", "repeat")``
+        when there is no sampler or no single glTF material has the material's name.
+
+    Raises
+    ------
+    ValueError
+        When the texture reference or the sampler is not valid glTF.
+    """
+    index = _gltf_material_index(gltf, source.name)
+    if index is None:
+        return "trilinear", "repeat"
+    name = source.name
+    pbr = gltf["materials"][index].get("pbrMetallicRoughness")
+    ref = pbr.get("baseColorTexture") if isinstance(pbr, dict) else None
+    if ref is None:
+        return "trilinear", "repeat"
+    sampler = _sampler_json(gltf, ref, f"material {name!r}")
+    wrap_s = _code(sampler, "wrapS", _WRAPS, 10497, name)
+    wrap_t = _code(sampler, "wrapT", _WRAPS, 10497, name)
+    minify = _code(sampler, "minFilter", _MIN_FILTERS, None, name)
+    magnify = _code(sampler, "magFilter", {_NEAREST: "nearest", _LINEAR: "bilinear"}, None, name)
+    if wrap_t != wrap_s and ("sampler warned", index) not in shared:
+        shared["sampler warned", index] = True
+        warnings.warn(
+            f"{path}: material {name!r}: the texture's wrapT ({wrap_t}, {_WRAPS[wrap_t]!r}) "
+            f"differs from its wrapS ({wrap_s}, {_WRAPS[wrap_s]!r}); pixelpath has one wrap "
+            f"for both axes and uses {_WRAPS[wrap_s]!r}",
+            stacklevel=2,
+        )
+    if minify is None:
+        texture_filter = "trilinear"  # glTF leaves the choice to the viewer
+    elif minify == _NEAREST and magnify == _LINEAR:
+        texture_filter = "bilinear"
+    else:
+        texture_filter = _MIN_FILTERS[minify]
+    return texture_filter, _WRAPS[wrap_s]
+
+
+def _gltf_material_index(gltf: dict | None, name: Any) -> int | None:
+    """Return the index of the one glTF material named ``name`` (None: none or ambiguous)."""
+    materials = (gltf or {}).get("materials")
+    if not isinstance(materials, list):
+        return None
+    found = [
+        i for i, material in enumerate(materials)
+        if isinstance(material, dict) and material.get("name") == name
+    ]
+    return found[0] if len(found) == 1 else None
+
+
+def _sampler_json(gltf: dict, ref: Any, where: str) -> dict:
+    """Return the sampler object a texture reference leads to (``{}``: the default sampler)."""
+    if not isinstance(ref, dict):
+        raise ValueError(f"{where}: baseColorTexture must be an object, got {ref!r}")
+    textures = gltf.get("textures")
+    texture = _item(textures, ref.get("index"), where, "baseColorTexture index", "textures")
+    if texture.get("sampler") is None:
+        return {}
+    return _item(gltf.get("samplers"), texture.get("sampler"), where, "texture sampler",
+                 "samplers")
+
+
+def _item(items: Any, index: Any, where: str, what: str, kind: str) -> dict:
+    """Return ``items[index]``, an object, refusing a bad index with a ValueError."""
+    what = f"{where}: {what}"
+    if not _is_int(index):
+        raise ValueError(f"{what} must be an integer, got {index!r}")
+    if not isinstance(items, list) or not 0 <= index < len(items):
+        count = len(items) if isinstance(items, list) else 0
+        raise ValueError(f"{what} {index} is out of range (the file has {count} {kind})")
+    if not isinstance(items[index], dict):
+        raise ValueError(f"{where}: glTF {kind}[{index}] must be an object")
+    return items[index]
+
+
+def _code(sampler: dict, key: str, codes: dict, default: int | None, name: Any) -> int | None:
+    value = sampler.get(key)
+    if value is None:
+        return default
+    if not _is_int(value) or value not in codes:
+        raise ValueError(
+            f"material {name!r}: sampler {key} {value!r} is not one of "
+            f"{', '.join(map(str, codes))}"
+        )
+    return value
+
+
+def _is_int(value: Any) -> bool:
+    return isinstance(value, int) and not isinstance(value, bool)
 
 
 def _missing_image_file(path: Path, gltf: Any, ref: Any) -> bool:
