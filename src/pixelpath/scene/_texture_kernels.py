@@ -200,11 +200,13 @@ def surface_color(tables, materials, obj, uv, colors, a, b, c, w0, w1, w2, dudx,
 
 def tiny_tables() -> SurfaceTables:
     """Return a 2 x 2 texture with two levels on object 0, for the kernels' warm-ups."""
+    from pixelpath.scene.texture import decode_table
+
     texels = np.full((5, 4), 255, dtype=np.uint8)
     return SurfaceTables(
         texels,
         np.array([[0, 2, 2], [4, 1, 1]], dtype=np.intp),
         np.array([[0, 2, TRILINEAR, REPEAT]], dtype=np.intp),
         np.array([[0, 1]], dtype=np.intp),
-        np.linspace(0.0, 1.0, 256),
+        decode_table(),  # the real (read-only) table: Numba types read-only arrays apart
     )
