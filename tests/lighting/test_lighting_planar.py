@@ -32,7 +32,8 @@ def scalar_reference(points, normals, material, lights, ambient, blinn):
     expected = np.empty((points.shape[1], 3))
     for i in range(points.shape[1]):
         shade_point(
-            *points[:, i], *normals[:, i], *EYE, material, lights, ambient, blinn, expected[i]
+            *points[:, i], *normals[:, i], *EYE, 1.0, material, lights, ambient, blinn,
+            expected[i],
         )
     return expected
 
@@ -46,7 +47,8 @@ def test_planar_equals_scalar_bit_for_bit(blinn, shininess):
     ambient = np.array([0.2, 0.3, 0.1])
     out = np.full((3, count + 3), -7.0)
     albedo = np.repeat(material[:3, None], count + 3, axis=1)
-    shade_planar(count, points, normals, albedo, EYE, material, lights, ambient, blinn, out,
+    shade_planar(count, points, normals, albedo, np.append(EYE, 1.0), material, lights, ambient,
+                 blinn, out,
                  np.empty((5, count + 3)))
     expected = scalar_reference(points[:, :count], normals[:, :count], material, lights,
                                 ambient, blinn)
@@ -63,7 +65,7 @@ def test_planar_hand_computed_point():
     material = np.array([1.0, 0.5, 0.25, 0.1, 0.5, 0.4, 2.0, 0.0])
     lights = np.array([[POINT_LIGHT, 0.0, 3.0, 4.0, 1.0, 1.0, 1.0]])
     out = np.empty((3, 1))
-    shade_planar(1, points, normals, material[:3, None].copy(), np.array([0.0, 0.0, 2.0]),
+    shade_planar(1, points, normals, material[:3, None].copy(), np.array([0.0, 0.0, 2.0, 1.0]),
                  material, lights, np.full(3, 0.5), False, out, np.empty((5, 1)))
     np.testing.assert_allclose(out[:, 0], [0.706, 0.481, 0.3685], rtol=1e-12)
 
@@ -76,6 +78,25 @@ def test_planar_albedo_tints_ambient_and_diffuse_not_the_highlight():
     material = np.array([1.0, 0.5, 0.25, 0.1, 0.5, 0.4, 2.0, 0.0])
     lights = np.array([[POINT_LIGHT, 0.0, 3.0, 4.0, 1.0, 1.0, 1.0]])
     out = np.empty((3, 1))
-    shade_planar(1, points, normals, np.array([[0.5], [1.0], [0.0]]), np.array([0.0, 0.0, 2.0]),
+    shade_planar(1, points, normals, np.array([[0.5], [1.0], [0.0]]),
+                 np.array([0.0, 0.0, 2.0, 1.0]),
                  material, lights, np.full(3, 0.5), False, out, np.empty((5, 1)))
     np.testing.assert_allclose(out[:, 0], [0.45 * 0.5 + 0.256, 0.45 + 0.256, 0.256], rtol=1e-12)
+
+
+def test_a_viewer_at_infinity_sees_every_point_along_one_direction():
+    # Homogeneous eye (0, 0, 1, 0): V = (0, 0, 1) at every point (an orthographic camera), so
+    # the highlight of a light straight above is the same at points far apart, where a point
+    # eye at (0, 0, 2) would see it fade.
+    points = np.array([[0.0, 30.0], [0.0, 0.0], [0.0, 0.0]])
+    normals = np.array([[0.0, 0.0], [0.0, 0.0], [1.0, 1.0]])
+    material = np.array([1.0, 1.0, 1.0, 0.0, 0.0, 1.0, 8.0, 0.0])
+    lights = np.array([[DIRECTIONAL_LIGHT, 0.0, 0.0, -1.0, 1.0, 1.0, 1.0]])
+    out = np.empty((3, 2))
+    albedo = np.ones((3, 2))
+    shade_planar(2, points, normals, albedo, np.array([0.0, 0.0, 1.0, 0.0]), material, lights,
+                 np.zeros(3), False, out, np.empty((5, 2)))
+    np.testing.assert_allclose(out, 1.0, rtol=1e-12)  # R = V = +z everywhere: (R.V)^8 = 1
+    shade_planar(2, points, normals, albedo, np.array([0.0, 0.0, 2.0, 1.0]), material, lights,
+                 np.zeros(3), False, out, np.empty((5, 2)))
+    assert out[0, 0] == pytest.approx(1.0) and out[0, 1] < 1e-3

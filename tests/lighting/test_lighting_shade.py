@@ -94,8 +94,8 @@ def test_shade_point_is_callable_from_another_kernel():
     def grid(points, normal, eye, material, lights, ambient, out):
         for i in range(points.shape[0]):
             shade_point(points[i, 0], points[i, 1], points[i, 2], normal[0], normal[1],
-                        normal[2], eye[0], eye[1], eye[2], material, lights, ambient, False,
-                        out[i])
+                        normal[2], eye[0], eye[1], eye[2], 1.0, material, lights, ambient,
+                        False, out[i])
 
     points = np.array([[0.0, 0.0, 0.0], [1.0, -2.0, 0.0], [3.0, 1.0, 0.0]])
     lamp = point_light((0.0, 3.0, 4.0), intensity=2.0, color=(1.0, 1.0, 0.5))

@@ -65,7 +65,10 @@ STAT_NAMES = (
 
 
 class Lighting(NamedTuple):
-    """What the illumination model needs besides the surface: packed lights, Ia, eye, model."""
+    """What the illumination model needs besides the surface: lights, Ia, viewpoint, model.
+
+    ``eye`` is the camera's homogeneous viewpoint (4,) (see ``Camera.viewpoint``).
+    """
 
     lights: np.ndarray
     ambient: np.ndarray
@@ -192,7 +195,7 @@ def prepare(
     lighting = Lighting(
         pack_lights(scene.lights),
         kernel_array(scene.ambient),
-        kernel_array(camera.eye),
+        kernel_array(camera.viewpoint()),  # V towards the eye, or the view's own direction
         options.blinn,
     )
     geometry = geometry if geometry is not None else scene_geometry(scene, camera)

@@ -27,11 +27,17 @@ DIRECTIONAL_LIGHT = 1.0
 
 
 @njit(inline="always")
-def unit_to_eye(px, py, pz, ex, ey, ez):
-    """Return V, the unit vector from point p to the eye (zero when the eye is on p)."""
-    vx = ex - px
-    vy = ey - py
-    vz = ez - pz
+def unit_to_eye(px, py, pz, ex, ey, ez, ew):
+    """Return V, the unit vector from point p to the eye (zero when the eye is on p).
+
+    The eye is homogeneous, (ex, ey, ez, ew): a point when ew = 1 (a perspective camera, or a
+    ray's origin), the direction towards a viewer at infinity when ew = 0 (an orthographic
+    camera, whose V is the same everywhere). ``ew · p`` with ew = 1 is exact, so a point eye
+    gives the bits of ``e − p``.
+    """
+    vx = ex - ew * px
+    vy = ey - ew * py
+    vz = ez - ew * pz
     v_len = math.sqrt(vx * vx + vy * vy + vz * vz)
     # Conditional expressions on cheap values, not branches: the planar loops stay vectorizable.
     inv = 1.0 / v_len if v_len > 0.0 else 1.0
@@ -76,8 +82,10 @@ def light_cosines(nx, ny, nz, lx, ly, lz, vx, vy, vz, blinn):
 
 
 @njit
-def shade_point(px, py, pz, nx, ny, nz, ex, ey, ez, material, lights, ambient, blinn, out):
+def shade_point(px, py, pz, nx, ny, nz, ex, ey, ez, ew, material, lights, ambient, blinn, out):
     """Write the unclamped intensity (r, g, b) at surface point p with unit normal n into out.
+
+    (ex, ey, ez, ew) is the eye, homogeneous (see :func:`unit_to_eye`).
 
     I_c = ka Ia_c C_c + sum over lights of [kd IL_c C_c max(0, N.L) + ks IL_c spec], where C is
     the object colour and spec = (R.V)^n (Phong) or (N.H)^n (Blinn-Phong). spec is 0 whenever
@@ -89,7 +97,7 @@ def shade_point(px, py, pz, nx, ny, nz, ex, ey, ez, material, lights, ambient, b
     ks = material[5]
     for c in range(3):
         out[c] = material[3] * ambient[c] * material[c]
-    vx, vy, vz = unit_to_eye(px, py, pz, ex, ey, ez)
+    vx, vy, vz = unit_to_eye(px, py, pz, ex, ey, ez, ew)
     for k in range(lights.shape[0]):
         lx, ly, lz = light_direction(lights, k, px, py, pz)
         diffuse, cosine = light_cosines(nx, ny, nz, lx, ly, lz, vx, vy, vz, blinn)
@@ -106,7 +114,8 @@ def shade_planar(count, points, normals, albedo, eye, material, lights, ambient,
                  scratch):
     """Shade the first ``count`` points like :func:`shade_point`, in planar layout.
 
-    ``points`` and ``normals`` (3, N) hold x, y and z in rows, ``albedo`` (3, N) the object
+    ``eye`` (4,) is homogeneous (see :func:`unit_to_eye`). ``points`` and ``normals`` (3, N)
+    hold x, y and z in rows, ``albedo`` (3, N) the object
     colour C of each point (the material's colour, or a textured surface's colour there; it
     takes the place of the material's r, g, b), ``out`` (3, N) receives r, g and b,
     ``scratch`` (5, N) is work space. With C equal to the material's colour the results are
@@ -127,12 +136,12 @@ def shade_planar(count, points, normals, albedo, eye, material, lights, ambient,
     ambient_r = material[3] * ambient[0]
     ambient_g = material[3] * ambient[1]
     ambient_b = material[3] * ambient[2]
-    ex, ey, ez = eye[0], eye[1], eye[2]
+    ex, ey, ez, ew = eye[0], eye[1], eye[2], eye[3]
     for i in range(count):
         red[i] = ambient_r * cr[i]
         green[i] = ambient_g * cg[i]
         blue[i] = ambient_b * cb[i]
-        vx[i], vy[i], vz[i] = unit_to_eye(x[i], y[i], z[i], ex, ey, ez)
+        vx[i], vy[i], vz[i] = unit_to_eye(x[i], y[i], z[i], ex, ey, ez, ew)
     for k in range(lights.shape[0]):
         diffuse_r = kd * lights[k, 4]
         diffuse_g = kd * lights[k, 5]
@@ -215,6 +224,7 @@ def shade_many(points, normals, eye, material, lights, ambient, blinn, out):
             eye[0],
             eye[1],
             eye[2],
+            1.0,
             material,
             lights,
             ambient,

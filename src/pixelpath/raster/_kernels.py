@@ -132,7 +132,7 @@ class Surfaces(NamedTuple):
     materials: np.ndarray  # (O, 8) packed materials
     lights: np.ndarray  # (L, 7) packed lights
     ambient: np.ndarray  # (3,) ambient intensity
-    eye: np.ndarray  # (3,) eye position
+    eye: np.ndarray  # (4,) the camera's homogeneous viewpoint (eye, 1) or (-d, 0)
     background: np.ndarray  # (3,) colour where nothing is drawn
     mode: int  # FLAT, GOURAUD or PHONG
     blinn: bool  # Blinn-Phong highlights
@@ -727,7 +727,7 @@ def shade_points(first, stop, points, normals, flip, owner, materials, lights, a
     """Unclamped intensities at points [first, stop) with unit normals, into out (N, 3).
 
     Each point has its owner's material; where ``flip`` is set the normal is reversed first
-    (a surface seen from behind).
+    (a surface seen from behind). ``eye`` (4,) is homogeneous (the camera's viewpoint).
     """
     for p in range(first, stop):
         sign = -1.0 if flip[p] else 1.0
@@ -741,6 +741,7 @@ def shade_points(first, stop, points, normals, flip, owner, materials, lights, a
             eye[0],
             eye[1],
             eye[2],
+            eye[3],
             materials[owner[p]],
             lights,
             ambient,
@@ -1164,7 +1165,7 @@ def warm_vertex_shading() -> None:
     normals, materials, lights, ambient = _tiny_lighting()
     shade_points(
         0, 3, np.zeros((3, 3)), normals, np.zeros(3, np.bool_), np.zeros(3, np.intp), materials,
-        lights, ambient, np.zeros(3), False, np.empty((3, 3)),
+        lights, ambient, np.array([0.0, 0.0, 5.0, 1.0]), False, np.empty((3, 3)),
     )
 
 
@@ -1181,8 +1182,7 @@ def _tiny_shading_pass():
         setup, triangles, clip[:, :3].copy(), normals, np.zeros((3, 6)),
         np.zeros((1, 2), dtype=np.intp), np.ones((1, 3)), normals[:1].copy(), np.zeros((3, 2)),
         np.ones((3, 4)), tiny_tables(), np.ones(1, dtype=np.bool_), materials, lights, ambient,
-        np.array([0.0, 0.0, 5.0]),
-        np.zeros(3), PHONG, False,
+        np.array([0.0, 0.0, 5.0, 1.0]), np.zeros(3), PHONG, False,
     )
     out = Buffers(
         np.zeros((8, 8, 3), dtype=np.float32),

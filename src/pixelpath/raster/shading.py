@@ -76,8 +76,10 @@ def shade_points(
         Packed lights (:func:`pixelpath.lighting.pack_lights`).
     ambient : (3,) float64
         Ambient intensity per channel.
-    eye : (3,) float64
-        The eye position.
+    eye : (3,) or (4,) float64
+        The eye position, or the camera's homogeneous viewpoint (``Camera.viewpoint()``: the
+        eye with w = 1, or the direction towards the viewer with w = 0 for an orthographic
+        camera, whose view vector V is then the same at every point).
     blinn : bool
         Blinn-Phong highlights instead of Phong's.
 
@@ -109,7 +111,7 @@ def shade_points(
         kernel_array(materials),
         kernel_array(lights),
         kernel_array(ambient),
-        kernel_array(eye),
+        kernel_array(eye if len(eye) == 4 else np.append(eye, 1.0)),
     )
     in_threads(
         lambda first, stop: _kernels.shade_points(first, stop, *arrays, bool(blinn), out),

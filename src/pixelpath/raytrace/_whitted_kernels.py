@@ -894,7 +894,7 @@ def trace_row(y, x0, width, scene, settings, work, out):
                 if hit_kind == TRIANGLE and colored(scene.tables, obj):
                     material = _coloured_material(scene, work.material, obj, index, w1, w2, px,
                                                   py, pz, nx, ny, nz, dx, dy, dz)
-                shade_point(px, py, pz, nx, ny, nz, ox, oy, oz, material, lit[:lit_count],
+                shade_point(px, py, pz, nx, ny, nz, ox, oy, oz, 1.0, material, lit[:lit_count],
                             ambient, settings.blinn, shaded)
                 r += weight * shaded[0]
                 g += weight * shaded[1]
