@@ -172,3 +172,31 @@ def test_reports_name_the_depth_key_of_the_projection(method):
     _, report = pp.render(perspective, method, explain=True)
     assert any("1/w" in note for note in report.notes)
     assert not any("z_ndc" in note for note in report.notes)
+
+
+@pytest.mark.parametrize("shading", ["phong", "gouraud"])
+def test_an_orthographic_highlight_sits_where_the_ray_tracer_puts_it(shading):
+    # V is the view's direction at every point: the highlight of a light straight ahead sits
+    # over the sphere's centre, off the image's centre, as the ray tracer finds it (a point
+    # eye at the camera's position would pull it towards the image's centre).
+    camera = pp.Camera(eye=(3, 0, 3), target=(3, 0, 0), projection="orthographic",
+                       view_height=4, width=160, height=120)
+    shiny = pp.Material(ks=0.8, shininess=50)
+    scene = pp.Scene(camera, [pp.Sphere((4, 0, 0), 1.5, shiny)], [pp.PointLight((4, 0, 20))])
+    traced = np.asarray(pp.render(scene, "raytrace")).sum(axis=2)
+    drawn = np.asarray(pp.render(scene, "zbuffer", shading)).sum(axis=2)
+    traced_at = np.unravel_index(traced.argmax(), traced.shape)
+    drawn_at = np.unravel_index(drawn.argmax(), drawn.shape)
+    # The sphere's centre is 1 unit = 30 pixels right of the image's centre (column 80).
+    assert traced_at[1] > 100
+    assert abs(drawn_at[0] - traced_at[0]) <= 1 and abs(drawn_at[1] - traced_at[1]) <= 1
+
+
+def test_a_wide_orthographic_view_of_a_plane_is_covered_to_its_edges():
+    # A view 400 units wide at a near far plane: the plane's square must reach the view's
+    # sides (fitted to the width of the view, not to a field of view).
+    camera = pp.Camera(eye=(0, 5, 0.001), target=(0, 0, 0), projection="orthographic",
+                       view_height=300, width=64, height=48, far=50)
+    scene = pp.Scene(camera, [pp.Plane((0, 0, 0), (0, 1, 0))], [pp.PointLight((0, 10, 0))])
+    for method in ("zbuffer", "raytrace"):
+        assert np.all(pp.render(scene, method).object_id == 0), method

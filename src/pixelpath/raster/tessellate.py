@@ -173,8 +173,10 @@ def view_reach(camera: Camera) -> float:
     """Return the largest distance from the eye of a point the camera can see.
 
     That is the distance to the far plane's corners: ``far · sqrt(1 + tan²(h/2) + tan²(v/2))``
-    for the horizontal and vertical fields of view h and v. A square of this half-size centred
-    under the eye contains every visible point of a plane.
+    for the horizontal and vertical fields of view h and v; for an orthographic camera, whose
+    view is a box ``view_height`` high, ``sqrt(far² + (width/2)² + (height/2)²)`` in world
+    units. A square of this half-size centred under the eye contains every visible point of a
+    plane.
 
     Examples
     --------
@@ -184,6 +186,10 @@ def view_reach(camera: Camera) -> float:
     ...                         width=1, height=1)), 6)  # sqrt(1 + 1 + 1) * 10
     17.320508
     """
+    if camera.orthographic:
+        half_v = camera.view_height / 2
+        half_h = half_v * camera.aspect
+        return math.sqrt(camera.far * camera.far + half_h * half_h + half_v * half_v)
     tan_v = math.tan(math.radians(camera.fov) / 2)
     tan_h = tan_v * camera.width / camera.height
     return camera.far * math.sqrt(1.0 + tan_h * tan_h + tan_v * tan_v)
