@@ -221,6 +221,16 @@ def bench(name: str, size: int, frames: int) -> None:
     image = pp.render(scene, shading="phong")
     median, best = time_frames(lambda: pp.render(scene, shading="phong"), frames)
     print(f"  pixelpath zbuffer  {median:7.1f} ms/frame (best {best:.1f})")
+    compare_with_llvmpipe(scene, np.asarray(image), median, frames)
+
+
+def compare_with_llvmpipe(scene: pp.Scene, image: np.ndarray, median: float, frames: int,
+                          encode=lambda rgb: rgb) -> None:
+    """Time llvmpipe on ``scene`` and print its figures beside pixelpath's ``median`` ms.
+
+    ``image`` is pixelpath's picture of the scene; both pictures pass through ``encode``
+    (for example the sRGB curve) before they are compared.
+    """
     anchor = open_llvmpipe(scene)
     if anchor is None:
         return
@@ -230,7 +240,7 @@ def bench(name: str, size: int, frames: int) -> None:
           f"{read_median:.1f} ms with read-back  [{anchor.renderer}]")
     print(f"  ratio pixelpath / llvmpipe: {median / gl_median:.2f} "
           f"({median / read_median:.2f} against draw + read-back)")
-    difference = np.abs(np.asarray(image) - anchor.draw_and_read())
+    difference = np.abs(encode(image) - encode(anchor.draw_and_read()))
     print(f"  images agree: mean |difference| {difference.mean():.4f}, "
           f"{(difference.max(axis=2) > 8 / 255).mean():.2%} of pixels differ by more than 8/255")
 

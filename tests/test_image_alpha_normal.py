@@ -2,13 +2,12 @@
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 import pytest
 from PIL import Image as PILImage
 
 import pixelpath as pp
+from camera_rays import view_rays
 from pixelpath.scene.texture import linear_to_srgb
 
 METHODS = ["zbuffer", "scanline", "painter", "bsp", "warnock", "octree", "raytrace"]
@@ -27,20 +26,6 @@ def tilted_square(material=None) -> pp.Mesh:
     square = pp.Mesh([[-1, -1, 0], [1, -1, 0], [1, 1, 0], [-1, 1, 0]], [[0, 1, 2, 3]],
                      material or pp.Material())
     return square.transformed(pp.scene.transform_matrix(rotate=(0, 0, 20)))
-
-
-def view_rays(camera: pp.Camera) -> np.ndarray:
-    """(H, W, 3) unit-forward-scaled rays through the pixel centres (dot with forward = 1)."""
-    eye, target = np.asarray(camera.eye, float), np.asarray(camera.target, float)
-    w = (eye - target) / np.linalg.norm(eye - target)
-    u = np.cross([0.0, 1.0, 0.0], w)
-    u /= np.linalg.norm(u)
-    v = np.cross(w, u)
-    half = math.tan(math.radians(camera.fov) / 2)
-    cols, rows = np.meshgrid(np.arange(camera.width) + 0.5, np.arange(camera.height) + 0.5)
-    x = (2 * cols / camera.width - 1) * half * camera.width / camera.height
-    y = (1 - 2 * rows / camera.height) * half
-    return x[..., None] * u + y[..., None] * v - w
 
 
 # --- alpha ---------------------------------------------------------------------------------

@@ -2,42 +2,13 @@
 
 from __future__ import annotations
 
-import textwrap
-
 import numpy as np
 import pytest
+from box_scene import SCENE
 
 from pixelpath.cli import main
 from pixelpath.io import read_image
 from pixelpath.scene import bundled_scenes
-
-SCENE = textwrap.dedent(
-    """\
-    background = [0, 0, 0.5]
-
-    [camera]
-    eye = [0, 0, 5]
-    target = [0, 0, 0]
-    width = 24
-    height = 16
-
-    [[lights]]
-    type = "point"
-    position = [2, 3, 4]
-
-    [[objects]]
-    type = "box"
-    minimum = [-1, -1, -1]
-    maximum = [1, 1, 1]
-    """
-)
-
-
-@pytest.fixture
-def scene_file(tmp_path):
-    path = tmp_path / "scene.toml"
-    path.write_text(SCENE)
-    return path
 
 
 def test_render_writes_the_image(scene_file, tmp_path, capsys):

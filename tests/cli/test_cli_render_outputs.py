@@ -2,42 +2,15 @@
 
 from __future__ import annotations
 
-import textwrap
-
 import numpy as np
 import pytest
+
+# scene_file (tests/cli/conftest.py) is the cube of box_scene: its front face (z = 1) fills
+# the middle, 4 units from the eye.
+from box_scene import SCENE
 from PIL import Image as PILImage
 
 from pixelpath.cli import main
-
-# A cube seen straight on: its front face (z = 1) fills the middle, 4 units from the eye.
-SCENE = textwrap.dedent(
-    """\
-    background = [0, 0, 0.5]
-
-    [camera]
-    eye = [0, 0, 5]
-    target = [0, 0, 0]
-    width = 24
-    height = 16
-
-    [[lights]]
-    type = "point"
-    position = [2, 3, 4]
-
-    [[objects]]
-    type = "box"
-    minimum = [-1, -1, -1]
-    maximum = [1, 1, 1]
-    """
-)
-
-
-@pytest.fixture
-def scene_file(tmp_path):
-    path = tmp_path / "scene.toml"
-    path.write_text(SCENE)
-    return path
 
 
 def read(path) -> np.ndarray:

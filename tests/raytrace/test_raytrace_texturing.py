@@ -7,27 +7,13 @@ reflections must show textured surfaces the right way round.
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 import pytest
 
 import pixelpath as pp
+from camera_rays import view_rays
 
 QUADRANTS = np.array([[[255, 0, 0], [0, 255, 0]], [[0, 0, 255], [255, 255, 255]]], np.uint8)
-
-
-def pixel_rays(camera: pp.Camera) -> np.ndarray:
-    eye, target = np.asarray(camera.eye, float), np.asarray(camera.target, float)
-    w = (eye - target) / np.linalg.norm(eye - target)
-    u = np.cross([0.0, 1.0, 0.0], w)
-    u /= np.linalg.norm(u)
-    v = np.cross(w, u)
-    half = math.tan(math.radians(camera.fov) / 2)
-    cols, rows = np.meshgrid(np.arange(camera.width) + 0.5, np.arange(camera.height) + 0.5)
-    x = (2 * cols / camera.width - 1) * half * camera.width / camera.height
-    y = (1 - 2 * rows / camera.height) * half
-    return x[..., None] * u + y[..., None] * v - w
 
 
 def barycentrics(eye, rays, a, b, c):
@@ -50,7 +36,7 @@ def test_vertex_colours_at_the_hit_barycentrics(method, shading):
     triangle = pp.Mesh(corners, [[0, 1, 2]], material, colors=colors)
     camera = pp.Camera(eye=(0.3, 0.2, 3.0), target=(0, 0, -1), fov=50, width=40, height=32)
     image = pp.render(pp.Scene(camera, objects=[triangle], ambient=1.0), method, shading)
-    weights = barycentrics(np.asarray(camera.eye, float), pixel_rays(camera), *corners)
+    weights = barycentrics(np.asarray(camera.eye, float), view_rays(camera), *corners)
     inside = np.all(weights > 0.02, axis=-1)  # away from the edges
     assert inside.sum() > 100
     assert np.all(image.object_id[inside] == 0)
