@@ -192,14 +192,12 @@ def prepare(
     camera = view.camera
     mode = shading_mode(options.shading)
     advance = options.progress
+    viewpoint = kernel_array(camera.viewpoint())  # the eye, or the view's direction (w = 0)
     lighting = Lighting(
-        pack_lights(scene.lights),
-        kernel_array(scene.ambient),
-        kernel_array(camera.viewpoint()),  # V towards the eye, or the view's own direction
-        options.blinn,
+        pack_lights(scene.lights), kernel_array(scene.ambient), viewpoint, options.blinn
     )
     geometry = geometry if geometry is not None else scene_geometry(scene, camera)
-    front = front_facing(geometry.polygon_normals, geometry.polygon_points, camera.viewpoint())
+    front = front_facing(geometry.polygon_normals, geometry.polygon_points, viewpoint)
     # Double-sided materials keep their back faces (drawn lit from behind, as with no culling).
     keep = (front | geometry.double_sided[geometry.polygon_object])[geometry.triangle_polygon]
     if not options.backface_cull:
