@@ -371,3 +371,18 @@ def test_bundled_scenes_follow_the_published_schema():
 
     for path in bundled_scenes().values():
         jsonschema.validate(tomllib.loads(path.read_text()), scene_json_schema())
+
+
+def test_encoding_is_read_written_back_and_checked(tmp_path):
+    camera = '[camera]\neye = [0, 0, 5]\ntarget = [0, 0, 0]\n'
+    path = tmp_path / "s.toml"
+    path.write_text(camera)
+    plain = load_scene(path)
+    assert plain.encoding == "linear" and "encoding" not in plain.to_dict()
+    path.write_text('encoding = "srgb"\n' + camera)
+    scene = load_scene(path)
+    assert scene.encoding == "srgb"
+    assert Scene.from_dict(scene.to_dict()).encoding == "srgb"
+    path.write_text('encoding = "gamma"\n' + camera)
+    with pytest.raises(ValueError, match="encoding"):
+        load_scene(path)

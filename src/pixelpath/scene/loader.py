@@ -263,7 +263,7 @@ def scene_from_dict(
     for i, table in enumerate(top.get("objects", [])):
         made = _object(table, ("objects", i), materials, base, source)
         objects.extend(made if isinstance(made, list) else [made])  # a model file's parts
-    extras = {name: top[name] for name in ("ambient", "background") if name in top}
+    extras = {name: top[name] for name in ("ambient", "background", "encoding") if name in top}
     if "animation" in top:
         extras["animation"] = _animation(top["animation"], camera, objects, source)
     with _reported(source, (), extras):
@@ -552,6 +552,8 @@ def scene_to_dict(scene: Scene, base_dir: str | Path | None = None) -> dict[str,
     data["objects"] = objects
     if scene.animation is not None:
         data["animation"] = _animation_dict(scene.animation)
+    if scene.encoding != "linear":
+        data["encoding"] = scene.encoding
     return data
 
 

@@ -26,7 +26,7 @@ from pixelpath.scene.lights import DirectionalLight, PointLight
 from pixelpath.scene.material import Material
 from pixelpath.scene.primitives import Box, Plane, Sphere
 from pixelpath.scene.procedural import icosphere, torus
-from pixelpath.scene.scene import Scene
+from pixelpath.scene.scene import ENCODINGS, Scene
 from pixelpath.scene.transform import transform_matrix
 
 SCHEMA_ID = "https://pixelpath.invalid/scene.schema.json"
@@ -110,6 +110,11 @@ KINDS: dict[str, Kind] = {
         lambda x: x in PROJECTIONS,
         " or ".join(map(repr, PROJECTIONS)),
         {"enum": list(PROJECTIONS)},
+    ),
+    "encoding": Kind(
+        lambda x: x in ENCODINGS,
+        " or ".join(map(repr, ENCODINGS)),
+        {"enum": list(ENCODINGS)},
     ),
     "interpolation": Kind(
         lambda x: x in INTERPOLATIONS,
@@ -278,6 +283,9 @@ TOP_LEVEL = {
     "ambient": Key("intensity", "ambient light intensity Ia, scalar or (r, g, b)"),
     "background": Key("vector3", "colour where nothing is drawn"),
     "animation": Key("animation", "keyframes over frames; frame 0 is the scene as written"),
+    "encoding": Key(
+        "encoding", "how pictures are saved: 'linear' (intensity x 255) or 'srgb' (sRGB curve)"
+    ),
 }
 
 
@@ -333,7 +341,7 @@ def scene_json_schema() -> dict[str, Any]:
     --------
     >>> from pixelpath.scene.schema import scene_json_schema
     >>> sorted(scene_json_schema()["properties"])
-    ['ambient', 'animation', 'background', 'camera', 'lights', 'materials', 'objects']
+    ['ambient', 'animation', 'background', 'camera', 'encoding', 'lights', 'materials', 'objects']
     >>> sorted(scene_json_schema()["$defs"]["animation"]["properties"])
     ['camera', 'frames', 'interpolation', 'objects', 'turntable']
     """
