@@ -127,6 +127,17 @@ def test_methods_agree_with_the_zbuffer_on_textured_scenes(method, shading):
     check_agreement(textured_scene(1), method, shading)
 
 
+@pytest.mark.parametrize("method", ["zbuffer", "scanline", "warnock", "raytrace"])
+def test_a_region_of_a_textured_scene_equals_that_part_of_the_whole(method):
+    # Texture lookups depend on the pixel's place in the whole image (its footprint too),
+    # never on the region rendered: tiles stitch without seams.
+    scene = textured_scene(2)
+    whole = pp.render(scene, method)
+    part = pp.render(scene, method, region=(13, 7, 61, 45))
+    np.testing.assert_array_equal(np.asarray(part), np.asarray(whole)[7:45, 13:61])
+    np.testing.assert_array_equal(part.normal, whole.normal[7:45, 13:61])
+
+
 def test_textures_change_the_picture():
     # A guard for the agreement test: the scene's surfaces really are textured and painted.
     scene = textured_scene(1)
