@@ -335,19 +335,21 @@ def visibility_buffers(view: View) -> Visibility:
     return buffers
 
 
-def surfaces(prepared: Prepared, scene: Scene):
+def surfaces(prepared: Prepared, scene: Scene, view: View):
     """Return what the shading kernels read, as their ``Surfaces`` record."""
     from pixelpath.raster import _kernels
     from pixelpath.raster._arrays import kernel_array
 
     lighting = prepared.lighting
+    camera = view.camera
     return _kernels.Surfaces(
         prepared.setup, prepared.triangles, prepared.positions, prepared.normals,
         prepared.colors, prepared.info, prepared.flat_colors, prepared.face_normals,
         prepared.uv, prepared.vertex_colors, prepared.geometry.surfaces,
         prepared.geometry.coloured, prepared.geometry.materials,
         lighting.lights, lighting.ambient, lighting.eye, kernel_array(scene.background),
-        prepared.mode, bool(lighting.blinn),
+        prepared.mode, bool(lighting.blinn), camera.orthographic, float(camera.near),
+        float(camera.far),
     )
 
 
@@ -362,20 +364,6 @@ def output_buffers(view: View):
         _pool.empty(shape, np.int32),
         _pool.empty((*shape, 3), np.float32),
     )
-
-
-def orthographic_depth(view: View, visibility: Visibility, depth: np.ndarray) -> None:
-    """Rewrite ``depth`` from the depth keys when the camera is orthographic.
-
-    The shading pass writes 1/key, the view-axis depth of a perspective camera's key (1/w);
-    an orthographic key is affine in depth instead (:func:`pixelpath.raster._kernels.key_depth`),
-    and is converted here, from the float64 keys. A perspective frame is left as it is.
-    """
-    from pixelpath.raster import _kernels
-
-    camera = view.camera
-    if camera.orthographic:
-        _kernels.orthographic_depth(visibility.inv_depth, camera.near, camera.far, depth)
 
 
 def slices(view: View) -> list[tuple[int, int]]:
@@ -400,7 +388,7 @@ def shade(
     from pixelpath.raster import _kernels
 
     out = output_buffers(view)
-    kernel_surfaces = surfaces(prepared, scene)
+    kernel_surfaces = surfaces(prepared, scene, view)
     _, order = bands(view)
     runs = slices(view)
     def shade_run(run: np.ndarray) -> None:
@@ -411,7 +399,6 @@ def shade(
     for start, stop in runs:
         in_runs(shade_run, order[start:stop])
         options.progress(SHADE_SLICES // len(runs))
-    orthographic_depth(view, visibility, out.depth)
     if report is not None:
         report = with_texture_lookups(report, prepared, scene, view, visibility)
     return Frame(out.rgb, out.depth, out.object_id, prepared.stats, report, out.normal)
@@ -457,7 +444,7 @@ def with_texture_lookups(report, prepared: Prepared, scene: Scene, view: View,
     texture, level = np.empty(shape, np.int32), np.empty(shape, np.int32)
     blend = np.empty(shape)
     _kernels.texture_lookups(view.x0, view.y0, visibility.triangle_id,
-                             surfaces(prepared, scene), texture, level, blend)
+                             surfaces(prepared, scene, view), texture, level, blend)
     textured = texture >= 0
     modes = tables.textures[:, 2]
     texels_each = np.where(modes == NEAREST, 1, 4)[texture[textured]]

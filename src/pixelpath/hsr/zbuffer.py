@@ -64,7 +64,7 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     visibility = pipeline.visibility_buffers(view)
     offsets, items = pipeline.binned(prepared, view)
     out = pipeline.output_buffers(view)
-    surfaces = pipeline.surfaces(prepared, scene)
+    surfaces = pipeline.surfaces(prepared, scene, view)
     _, order = pipeline.bands(view)
     runs = pipeline.slices(view)
     def render_run(run: np.ndarray) -> None:
@@ -76,7 +76,6 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     for start, stop in runs:
         in_runs(render_run, order[start:stop])
         options.progress(pipeline.SHADE_SLICES // len(runs))
-    pipeline.orthographic_depth(view, visibility, out.depth)
     report = None
     if options.explain:
         report = pipeline.with_texture_lookups(

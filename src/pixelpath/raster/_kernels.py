@@ -136,6 +136,9 @@ class Surfaces(NamedTuple):
     background: np.ndarray  # (3,) colour where nothing is drawn
     mode: int  # FLAT, GOURAUD or PHONG
     blinn: bool  # Blinn-Phong highlights
+    orthographic: bool  # the depth key is affine in depth (else 1/w)
+    near: float  # the camera's near and far distances (an orthographic key's depth)
+    far: float
 
 
 class Buffers(NamedTuple):
@@ -403,25 +406,14 @@ ORTHO_KEY_AT_NDC_0 = 1.5
 
 @njit(inline="always")
 def key_depth(key, orthographic, near, far):
-    """Return the view-axis depth of a depth key (``inf`` for 0: nothing drawn)."""
-    if not key > 0.0:
-        return np.inf
-    if orthographic:
-        z_ndc = 2.0 * (ORTHO_KEY_AT_NDC_0 - key)
-        return 0.5 * ((far - near) * z_ndc + (far + near))
-    return 1.0 / key
+    """Return the view-axis depth of a depth key (``inf`` for 0: nothing drawn).
 
-
-@njit
-def orthographic_depth(keys, near, far, depth):
-    """Write the view-axis depth (h, w) of an orthographic frame's depth keys (h, w).
-
-    The shading pass wrote 1/key there, the perspective depth; an orthographic frame's
-    depth is affine in its key instead, and is rewritten here from the float64 keys.
+    Conditional expressions on cheap values, not branches: the shading pass's row loop,
+    which turns every pixel's key into its depth, stays vectorizable.
     """
-    for j in range(keys.shape[0]):
-        for i in range(keys.shape[1]):
-            depth[j, i] = key_depth(keys[j, i], True, near, far)
+    affine = 0.5 * ((far - near) * (2.0 * (ORTHO_KEY_AT_NDC_0 - key)) + (far + near))
+    depth = affine if orthographic else 1.0 / key
+    return depth if key > 0.0 else np.inf
 
 
 @njit(inline="always")
@@ -834,7 +826,8 @@ def _shade_row(j, x0, y0, triangle_id, inv_depth, surfaces, out, batch):
     line_triangle = -1
     line = (0.0,) * 14
     y = j + 0.5
-    _fill_row(inv_depth[row], s.background, rgb, out.depth[row], out.object_id[row], normal)
+    _fill_row(inv_depth[row], s.background, rgb, out.depth[row], out.object_id[row], normal,
+              s.orthographic, s.near, s.far)
     ids = triangle_id[row]
     half = s.colors.shape[1] // 2  # Gouraud: the columns of the light from the front
     if s.uv.shape[0] > 0 or s.vertex_colors.shape[0] > 0:
@@ -1050,10 +1043,12 @@ def _scanline_surface(record, y, corners, positions, normals, sign):
 
 
 @njit(error_model="numpy")
-def _fill_row(inv_depth_row, background, rgb_row, depth_row, id_row, normal_row):
-    """Write a row as if nothing were drawn, but with every drawn pixel's depth 1/(1/w).
+def _fill_row(inv_depth_row, background, rgb_row, depth_row, id_row, normal_row, orthographic,
+              near, far):
+    """Write a row as if nothing were drawn, but with every drawn pixel's depth.
 
-    A pixel is drawn exactly where its 1/w is positive (the buffer starts at 0). One loop
+    A pixel is drawn exactly where its depth key is positive (the buffer starts at 0); its
+    depth is :func:`key_depth` of the key (1/(1/w) for a perspective camera). One loop
     without branches over the whole row, so LLVM vectorizes it; the drawn pixels' colour,
     object id and normal are written afterwards.
     """
@@ -1061,8 +1056,7 @@ def _fill_row(inv_depth_row, background, rgb_row, depth_row, id_row, normal_row)
     rgb_flat = rgb_row.reshape(-1)  # r g b r g b ...: indexed 3 i + c, which vectorizes
     normal_flat = normal_row.reshape(-1)
     for i in range(inv_depth_row.shape[0]):
-        inv_w = inv_depth_row[i]
-        depth_row[i] = 1.0 / inv_w if inv_w > 0.0 else np.inf
+        depth_row[i] = key_depth(inv_depth_row[i], orthographic, near, far)
         id_row[i] = -1
         rgb_flat[3 * i] = red
         rgb_flat[3 * i + 1] = green
@@ -1182,7 +1176,7 @@ def _tiny_shading_pass():
         setup, triangles, clip[:, :3].copy(), normals, np.zeros((3, 6)),
         np.zeros((1, 2), dtype=np.intp), np.ones((1, 3)), normals[:1].copy(), np.zeros((3, 2)),
         np.ones((3, 4)), tiny_tables(), np.ones(1, dtype=np.bool_), materials, lights, ambient,
-        np.array([0.0, 0.0, 5.0, 1.0]), np.zeros(3), PHONG, False,
+        np.array([0.0, 0.0, 5.0, 1.0]), np.zeros(3), PHONG, False, False, 0.1, 10.0,
     )
     out = Buffers(
         np.zeros((8, 8, 3), dtype=np.float32),
@@ -1212,7 +1206,6 @@ def warm_shade() -> None:
     shade_bands(bands, BAND_ROWS, 0, 0, inv_depth, triangle_id, surfaces, out)
     lookups = np.empty(triangle_id.shape, dtype=np.int32)
     texture_lookups(0, 0, triangle_id, surfaces, lookups, lookups.copy(), np.empty(inv_depth.shape))
-    orthographic_depth(inv_depth, 0.1, 10.0, out.depth)
 
 
 def warm_scan() -> None:
