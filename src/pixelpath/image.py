@@ -106,7 +106,7 @@ class Image:
         image = cls.__new__(cls)
         image._rgb, image._depth, image._object_id = (_frozen(a) for a in (rgb, depth, object_id))
         image._stats = types.MappingProxyType(dict(stats))
-        image._alpha = _frozen((object_id >= 0).astype(np.float32))
+        image._alpha = None  # coverage of one sample per pixel: made from object_id when asked
         if normal is None:
             normal = np.zeros((*depth.shape, 3), np.float32)
         image._normal = _frozen(normal)
@@ -135,6 +135,8 @@ class Image:
         Fractional on silhouette edges when rendered with ``ssaa``: the share of the pixel's
         samples that hit a surface.
         """
+        if self._alpha is None:
+            self._alpha = _frozen((self._object_id >= 0).astype(np.float32))
         return self._alpha
 
     @property
@@ -228,7 +230,7 @@ class Image:
         if not alpha:
             write_image(path, self._rgb, gamma=gamma)
             return
-        write_image(path, self.foreground(), gamma=gamma, alpha=self._alpha)
+        write_image(path, self.foreground(), gamma=gamma, alpha=self.alpha)
 
     def foreground(self) -> np.ndarray:
         """Return the (H, W, 3) colour of the surfaces alone, without the background.
@@ -245,7 +247,7 @@ class Image:
         >>> edge.foreground().round(6).tolist()
         [[[1.0, 1.0, 1.0]]]
         """
-        coverage = self._alpha[..., None].astype(np.float64)
+        coverage = self.alpha[..., None].astype(np.float64)
         behind = (1.0 - coverage) * self._background
         surface = np.divide(self._rgb - behind, coverage, out=np.zeros(self._rgb.shape),
                             where=coverage > 0.0)
