@@ -412,8 +412,7 @@ def key_depth(key, orthographic, near, far):
     which turns every pixel's key into its depth, stays vectorizable.
     """
     affine = 0.5 * ((far - near) * (2.0 * (ORTHO_KEY_AT_NDC_0 - key)) + (far + near))
-    depth = affine if orthographic else 1.0 / key
-    return depth if key > 0.0 else np.inf
+    return (affine if orthographic else 1.0 / key) if key > 0.0 else np.inf
 
 
 @njit(inline="always")
