@@ -116,7 +116,15 @@ from pixelpath.scene.mesh import Mesh
 from pixelpath.scene.scene import Scene
 from pixelpath.scene.texture import Texture, srgb_to_linear
 
-__all__ = ["MODEL_FORMATS", "framing_camera", "light_rig", "read_model", "read_model_objects"]
+__all__ = [
+    "MODEL_FORMATS",
+    "depth_range",
+    "framing_camera",
+    "framing_distance",
+    "light_rig",
+    "read_model",
+    "read_model_objects",
+]
 
 MODEL_FORMATS = (".glb", ".gltf", ".obj", ".ply", ".stl")
 DEFAULT_SIZE = (800, 600)
@@ -795,23 +803,56 @@ def framing_camera(bounds: Any, size: tuple[int, int] = DEFAULT_SIZE, fov: float
     radius = max(float(np.linalg.norm(bounds[1] - bounds[0])) / 2.0, 1e-9)
     elevation = math.radians(ELEVATION)
     back = np.array([0.0, math.sin(elevation), math.cos(elevation)])  # from the centre to the eye
-    right = np.array([1.0, 0.0, 0.0])
-    up = np.cross(back, right)
+    distance = framing_distance(bounds, back, size, fov)
+    near, far = depth_range(distance, radius)
+    return Camera(
+        eye=center + distance * back, target=center, fov=fov, width=size[0], height=size[1],
+        near=near, far=far,
+    )
+
+
+def framing_distance(
+    bounds: Any, back: Any, size: tuple[int, int], fov: float, up: Any = (0.0, 1.0, 0.0)
+) -> float:
+    """Return how far from the box's centre, along ``back``, a camera sees all of ``bounds``.
+
+    The smallest distance at which every corner of the box lies within the middle 90 % of a
+    ``size`` picture with vertical field of view ``fov`` (degrees), for a camera looking back
+    along the unit vector ``back`` with ``up`` as its up direction.
+
+    Examples
+    --------
+    >>> from pixelpath.io.models import framing_distance
+    >>> round(framing_distance([[-1, -1, -1], [1, 1, 1]], (0, 0, 1), (100, 100), 90.0), 4)
+    2.1111
+    """
+    bounds = np.asarray(bounds, dtype=np.float64)
+    back = np.asarray(back, dtype=np.float64)
+    right = np.cross(np.asarray(up, dtype=np.float64), back)
+    right /= np.linalg.norm(right)
+    camera_up = np.cross(back, right)
     width, height = size
     tan_v = math.tan(math.radians(fov) / 2.0) * FILL
     tan_h = tan_v * width / height
     corners = np.array(np.meshgrid(*bounds.T, indexing="ij")).reshape(3, -1).T
-    offset = corners - center
-    x, y, z = offset @ right, offset @ up, offset @ back
+    offset = corners - bounds.mean(axis=0)
+    x, y, z = offset @ right, offset @ camera_up, offset @ back
+    radius = max(float(np.linalg.norm(bounds[1] - bounds[0])) / 2.0, 1e-9)
     # a corner at (x, y, z) in the camera's frame is inside when |x| <= tan_h (d - z), ...
     distance = float(np.max(np.maximum(z + np.abs(x) / tan_h, z + np.abs(y) / tan_v)))
-    distance = max(distance, radius * 1.01)
-    near = max(distance - radius * 1.05, distance * 1e-3)
-    far = distance + radius * 1.05
-    return Camera(
-        eye=center + distance * back, target=center, fov=fov, width=width, height=height,
-        near=near, far=far,
-    )
+    return max(distance, radius * 1.01)
+
+
+def depth_range(distance: float, radius: float) -> tuple[float, float]:
+    """Return (near, far) enclosing a sphere of ``radius`` seen from ``distance`` away.
+
+    Examples
+    --------
+    >>> from pixelpath.io.models import depth_range
+    >>> depth_range(10.0, 1.0)
+    (8.95, 11.05)
+    """
+    return max(distance - radius * 1.05, distance * 1e-3), distance + radius * 1.05
 
 
 def light_rig(camera: Camera) -> list[DirectionalLight]:
