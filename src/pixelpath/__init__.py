@@ -35,6 +35,7 @@ _LAZY_NAMES = {
     "Image": "pixelpath.image",
     "render": "pixelpath.renderer",  # a module named "render" would shadow the function
     "render_frames": "pixelpath.frames",
+    "render_views": "pixelpath.frames",
 }
 
 __all__ = [
@@ -60,13 +61,14 @@ __all__ = [
     "raytrace",
     "render",
     "render_frames",
+    "render_views",
     "scene",
     "warmup",
 ]
 
 if TYPE_CHECKING:
     from pixelpath import clip, color, frames, hsr, io, lighting, raster, raytrace, scene
-    from pixelpath.frames import render_frames
+    from pixelpath.frames import render_frames, render_views
     from pixelpath.image import Image
     from pixelpath.renderer import render
     from pixelpath.scene import (

@@ -141,3 +141,45 @@ def test_a_frame_lost_with_workers_too_often_is_named():
     with pytest.raises(RuntimeError, match=r"frames \[7, 8\] were lost with a worker"):
         run._result(future, None, [(7, 0), (8, 0)])
     assert run._result(types.SimpleNamespace(status="finished"), [b"png"], [(7, 0)]) == [b"png"]
+
+
+DUCK = os.path.join(os.path.dirname(__file__), "..", "data", "models", "Duck.glb")
+
+
+def _dataset(folder):
+    return {
+        path.relative_to(folder).as_posix(): path.read_bytes()
+        for path in sorted(folder.rglob("*"))
+        if path.is_file()
+    }
+
+
+def test_views_written_by_workers_are_byte_identical_to_serial(client, tmp_path):
+    options = {"aovs": "depth,normal,mask", "size": (48, 40), "layout": "sphere"}
+    pp.render_views(DUCK, 7, tmp_path / "serial", **options)
+    seen = []
+    pp.render_views(DUCK, 7, tmp_path / "dask", client=client, progress=seen.append, **options)
+    assert _dataset(tmp_path / "dask") == _dataset(tmp_path / "serial")
+    assert sum(seen) == 7 and len(seen) < 7  # several views a task
+
+
+@pytest.mark.slow
+def test_a_worker_killed_mid_dataset_costs_no_view(tmp_path):
+    options = {"aovs": "depth", "size": (96, 72), "ssaa": 2}
+    pp.render_views(DUCK, 40, tmp_path / "serial", **options)  # 4 tasks of 10 views
+    killed = []
+    with local_client(2) as client:
+        pids = client.run(os.getpid)
+
+        def kill_a_busy_worker(steps):
+            busy = [worker for worker, keys in client.processing().items() if keys]
+            if killed or not busy:
+                return
+            killed.append(pids[busy[0]])
+            os.kill(pids[busy[0]], signal.SIGKILL)
+
+        pp.render_views(
+            DUCK, 40, tmp_path / "dask", client=client, progress=kill_a_busy_worker, **options
+        )
+        assert killed and killed[0] not in client.run(os.getpid).values()
+    assert _dataset(tmp_path / "dask") == _dataset(tmp_path / "serial")

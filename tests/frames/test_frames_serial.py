@@ -170,14 +170,21 @@ def _as_file(image, folder):
     return pp.io.read_image(folder / "reference.png")
 
 
-@given(count=st.integers(0, 500), workers=st.integers(1, 64))
-def test_cluster_batches_keep_every_task_once_in_order(count, workers):
-    from pixelpath.frames.run import MOST_TASKS_PER_BATCH, _batches
+@given(
+    count=st.integers(0, 500),
+    workers=st.integers(1, 64),
+    most=st.integers(1, 64),
+    least=st.integers(1, 64),
+)
+def test_cluster_batches_keep_every_task_once_in_order(count, workers, most, least):
+    from pixelpath.frames.run import _batches
 
+    least = min(least, most)
     tasks = list(range(count))
-    batches = _batches(tasks, workers)
+    batches = _batches(tasks, workers, most, least)
     sizes = [len(batch) for batch in batches]
     assert [task for batch in batches for task in batch] == tasks
-    assert all(1 <= size <= MOST_TASKS_PER_BATCH for size in sizes)
+    assert all(least <= size <= most for size in sizes[:-1])  # the last takes what is left
+    assert all(1 <= size <= most for size in sizes[-1:])
     assert sizes == sorted(sizes, reverse=True)  # large first, the short ones even out the end
-    assert not sizes or sizes[-1] == 1
+    assert not sizes or least > 1 or sizes[-1] == 1

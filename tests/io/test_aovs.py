@@ -1,4 +1,4 @@
-"""pixelpath.io.aovs: names, paths, and the files written for depth, normal, id and alpha."""
+"""pixelpath.io.aovs: names, paths, and the files written for depth, normal, id, alpha, mask."""
 
 from __future__ import annotations
 
@@ -11,15 +11,18 @@ from pixelpath.io.aovs import AOVS, aov_path, parse_aovs, write_aovs
 
 
 def test_parse_aovs():
-    assert AOVS == ("depth", "normal", "id", "alpha")
+    assert AOVS == ("depth", "normal", "id", "alpha", "mask")
     assert parse_aovs("depth") == ("depth",)
     assert parse_aovs(" Normal ,DEPTH,normal,id") == ("normal", "depth", "id")
     assert parse_aovs(["alpha", "id", "alpha"]) == ("alpha", "id")
     assert parse_aovs([]) == ()
-    for bad in ("depth,colour", "", "depth,", ["mask"]):
+    for bad in ("depth,colour", "", "depth,", ["masks"]):
         with pytest.raises(ValueError, match="unknown AOV") as info:
             parse_aovs(bad)
-        assert "depth, normal, id, alpha" in str(info.value)
+        assert "depth, normal, id, alpha, mask" in str(info.value)
+    assert parse_aovs("mask,depth", allowed=("depth", "mask")) == ("mask", "depth")
+    with pytest.raises(ValueError, match="unknown AOV 'id'; choose from depth, mask"):
+        parse_aovs("id", allowed=("depth", "mask"))
 
 
 def test_aov_paths():
@@ -50,9 +53,9 @@ def handmade_image() -> pp.Image:
 def test_write_every_aov(tmp_path):
     image = handmade_image()
     target = tmp_path / "shot.png"
-    written = write_aovs(image, target, "depth,normal,id,alpha")
+    written = write_aovs(image, target, "depth,normal,id,alpha,mask")
     assert [p.name for p in written] == [
-        "shot.depth.npy", "shot.normal.png", "shot.id.png", "shot.alpha.png",
+        "shot.depth.npy", "shot.normal.png", "shot.id.png", "shot.alpha.png", "shot.mask.png",
     ]
     assert not target.exists()  # only the AOVs are written here
 
@@ -77,6 +80,9 @@ def test_write_every_aov(tmp_path):
     assert mode == "L"
     assert alpha[0, 0] == 0 and alpha[0, 1] == 255 and alpha[1, 2] == 255
     assert abs(int(alpha[0, 2]) - 127.5) <= 0.5 and abs(int(alpha[1, 0]) - 63.75) <= 0.5
+
+    mask, mode = read(tmp_path / "shot.mask.png")
+    assert mode == "L" and mask.tolist() == [[0, 255, 255], [255, 0, 255]]  # where drawn
 
 
 def test_id_aov_limit(tmp_path):

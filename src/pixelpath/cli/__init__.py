@@ -18,7 +18,9 @@ from pixelpath import __version__
 from pixelpath.cli._common import CommandError, error_console
 
 # Order shown by ``pixelpath --help``.
-COMMANDS = ("demo", "render", "ray", "info", "color", "clip", "phong", "playground", "warmup")
+COMMANDS = (
+    "demo", "render", "views", "ray", "info", "color", "clip", "phong", "playground", "warmup"
+)
 
 
 def build_parser() -> argparse.ArgumentParser:

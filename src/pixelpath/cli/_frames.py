@@ -7,8 +7,10 @@ any frame is rendered; then one progress bar runs over all frames (tiles count a
 from __future__ import annotations
 
 import argparse
+import contextlib
 import importlib.util
 import time
+from collections.abc import Iterator
 from typing import Any
 
 from pixelpath.cli._common import CommandError, console, error_console, progress
@@ -90,26 +92,40 @@ def run_frames(args: argparse.Namespace, scene: Any) -> int:
         options=render_options(args),
     )
     start = time.perf_counter()
-    client = _client(args, plan.jobs)
-    try:
-        if client is not None:
-            from pixelpath.frames.cluster import warm_workers
-
-            warm_workers(client, plan.options)
-            _say(args, f"{_cluster_name(client)} ready, kernels warmed, in {_since(start)}")
+    with cluster_for(args, plan.jobs, plan.options, start) as client:
         rendering = time.perf_counter()
         label = f"rendering {len(plan.todo)} frame{'s' * (len(plan.todo) != 1)}"
         with progress(label, plan.jobs, quiet=args.quiet) as advance:
             run_plan(plan, client, advance)
         seconds = time.perf_counter() - rendering
-    finally:
-        if client is not None:
-            client.close()
-    _summary(args, plan, seconds, _since(start))
+    _summary(args, plan, seconds, since(start))
     return 0
 
 
-def _since(start: float) -> str:
+@contextlib.contextmanager
+def cluster_for(
+    args: argparse.Namespace, jobs: int, options: dict[str, Any], start: float
+) -> Iterator[Any]:
+    """Yield the Dask client for ``jobs`` tasks, its workers warmed for ``options``, or None.
+
+    None means "render in this process" (see :func:`_client`); a cluster started here is
+    closed on leaving, and the time since ``start`` it took to get ready is reported.
+    """
+    client = _client(args, jobs) if jobs else None
+    try:
+        if client is not None:
+            from pixelpath.frames.cluster import warm_workers
+
+            warm_workers(client, options)
+            _say(args, f"{_cluster_name(client)} ready, kernels warmed, in {since(start)}")
+        yield client
+    finally:
+        if client is not None:
+            client.close()
+
+
+def since(start: float) -> str:
+    """Return the seconds since ``start`` (a ``perf_counter`` reading), as ``'1.5 s'``."""
     return f"{time.perf_counter() - start:.1f} s"
 
 

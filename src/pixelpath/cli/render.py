@@ -100,7 +100,7 @@ def register(subparsers: Any) -> None:
         default=(),
         metavar="LIST",
         help=f"also write these buffers beside the image, comma-separated ({', '.join(AOVS)}): "
-        "depth as .npy, normal, id and alpha as PNG",
+        "depth as .npy, the others as PNG",
     )
     tracing = parser.add_argument_group("ray tracing (--method raytrace)")
     tracing.add_argument(

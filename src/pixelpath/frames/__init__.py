@@ -2,7 +2,9 @@
 
 :func:`render_frames` renders frames of an animated scene (see
 :mod:`pixelpath.scene.animation`) in this process, or on a ``dask.distributed`` cluster when
-given a client; :mod:`pixelpath.frames.work` holds the pure per-frame functions the tasks run,
+given a client, and :func:`render_views` a dataset of views of a model the same way
+(:mod:`pixelpath.frames.views`; :mod:`pixelpath.frames.poses` places the cameras).
+:mod:`pixelpath.frames.work` holds the pure per-frame functions the tasks run,
 :mod:`pixelpath.frames.plan` checks a request before any work starts, and
 :mod:`pixelpath.frames.cluster` (the ``dask`` extra) starts or reaches a cluster.
 
@@ -22,7 +24,8 @@ from pixelpath.frames.plan import (
     tile_regions,
 )
 from pixelpath.frames.run import render_frames, run_plan
-from pixelpath.frames.work import frame_file, render_frame
+from pixelpath.frames.views import plan_views, render_views, run_views
+from pixelpath.frames.work import frame_file, render_frame, view_files
 
 __all__ = [
     "FramePlan",
@@ -31,8 +34,12 @@ __all__ = [
     "parse_frames",
     "parse_tiles",
     "plan_frames",
+    "plan_views",
     "render_frame",
     "render_frames",
+    "render_views",
     "run_plan",
+    "run_views",
     "tile_regions",
+    "view_files",
 ]

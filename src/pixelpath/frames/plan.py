@@ -112,14 +112,14 @@ def plan_frames(
         raise TypeError(f"scene must be a pixelpath Scene, got {type(scene).__name__}")
     chosen = frame_numbers(frames, scene)
     options = render_options(options or {})
-    gamma = _gamma(gamma)
+    gamma = checked_gamma(gamma)
     paths = None if out is None else output_paths(out, chosen)
     if resume and paths is None:
         raise ValueError("resume=True needs out= (frames complete on disk are skipped)")
     camera = scene.camera
     regions = tile_regions(camera.width, camera.height, tiles)
     _check_render(scene, chosen[0], options)
-    _check_tile_size(regions, options.get("ssaa", 1))
+    check_tile_size(regions, options.get("ssaa", 1))
     todo = chosen
     if resume:
         todo = tuple(
@@ -323,7 +323,8 @@ def render_options(options: dict[str, Any]) -> dict[str, Any]:
     return dict(options)
 
 
-def _gamma(gamma: Any) -> float | str | None:
+def checked_gamma(gamma: Any) -> float | str | None:
+    """Return ``gamma`` (None, ``"srgb"``, ``"linear"`` or a positive float) or raise."""
     if gamma is None or gamma in ("srgb", "linear"):
         return gamma
     if isinstance(gamma, bool) or not isinstance(gamma, numbers.Real) or not gamma > 0:
@@ -331,16 +332,19 @@ def _gamma(gamma: Any) -> float | str | None:
     return float(gamma)
 
 
-def _check_tile_size(regions: tuple[Region, ...], ssaa: int) -> None:
-    """Refuse frames (or tiles) too large for one render, pointing at ``tiles``."""
+def check_tile_size(
+    regions: tuple[Region, ...], ssaa: int, what: str = "tile", advice: str = ""
+) -> None:
+    """Refuse frames (or tiles) too large for one render, pointing at ``tiles`` (or ``advice``)."""
     from pixelpath.renderer import MAX_SAMPLES
 
     x0, y0, x1, y1 = max(regions, key=lambda r: (r[2] - r[0]) * (r[3] - r[1]))
     samples = (x1 - x0) * (y1 - y0) * ssaa * ssaa
     if samples > MAX_SAMPLES:
         raise ValueError(
-            f"a {x1 - x0}x{y1 - y0} tile with ssaa={ssaa} is {samples:,} samples, more than "
-            f"the {MAX_SAMPLES:,} one render may hold; split the frame into more tiles"
+            f"a {x1 - x0}x{y1 - y0} {what} with ssaa={ssaa} is {samples:,} samples, more than "
+            f"the {MAX_SAMPLES:,} one render may hold; "
+            f"{advice or 'split the frame into more tiles'}"
         )
 
 

@@ -105,17 +105,38 @@ def render_frames(
 def run_plan(plan: FramePlan, client: Any = None, progress: Progress | None = None) -> list:
     """Carry out a :class:`~pixelpath.frames.plan.FramePlan`; see :func:`render_frames`."""
     frames = _Frames(plan)
-    advance = progress or (lambda steps: None)
-    tasks = _tasks(plan)
-    if client is None:
-        for function, frame, tile, args in tasks:
-            frames.add(frame, tile, function(plan.scene, frame, *args))
-            advance(1)
-    else:
-        _run_on(client, plan.scene, plan.options, tasks, frames, advance)
+    run_tasks(plan.scene, plan.options, _tasks(plan), frames.add, client, progress)
     if plan.paths is None:
         return [frames.images[frame] for frame in plan.frames]
     return [plan.paths[frame] for frame in plan.frames]
+
+
+def run_tasks(
+    scene: Scene,
+    options: dict[str, Any],
+    tasks: list[tuple[Callable, int, int, tuple]],
+    add: Callable[[int, int, Any], None],
+    client: Any = None,
+    progress: Progress | None = None,
+    *,
+    most_per_batch: int | None = None,
+    least_per_batch: int = 1,
+) -> None:
+    """Run ``tasks`` here or on ``client``'s cluster, handing each result to ``add``.
+
+    A task is ``(function, frame, part, args)``: its result is ``function(scene, frame,
+    *args)``, given to ``add(frame, part, result)`` in this process. On a cluster the tasks go
+    in batches of ``least_per_batch`` to ``most_per_batch`` (:func:`_batch_sizes`; default at
+    most :data:`MOST_TASKS_PER_BATCH`); ``options`` (render keywords) warm the workers.
+    """
+    advance = progress or (lambda steps: None)
+    if client is None:
+        for function, frame, part, args in tasks:
+            add(frame, part, function(scene, frame, *args))
+            advance(1)
+        return
+    limits = (most_per_batch or MOST_TASKS_PER_BATCH, least_per_batch)
+    _run_on(client, scene, options, tasks, add, advance, limits)
 
 
 def _tasks(plan: FramePlan) -> list[tuple[Callable, int, int, tuple]]:
@@ -178,8 +199,9 @@ def _run_on(
     scene: Scene,
     options: dict[str, Any],
     tasks: list,
-    frames: _Frames,
+    add: Callable[[int, int, Any], None],
     advance: Progress,
+    limits: tuple[int, int],
 ) -> None:
     """Run ``tasks`` on a Dask cluster; the scene goes to each worker once, before them.
 
@@ -197,7 +219,7 @@ def _run_on(
     futures = {}
     try:
         for function, group in _by_function(tasks):
-            batches = _batches(group, workers)
+            batches = _batches(group, workers, *limits)
             first = [batch[0] for batch in batches]
             keys = [f"pixelpath-{run}-frame-{frame}-tile-{tile}" for _, frame, tile, _ in first]
             calls = [[(frame, *args) for _, frame, _, args in batch] for batch in batches]
@@ -212,7 +234,7 @@ def _run_on(
             batch = futures[future]
             places = [(frame, tile) for _, frame, tile, _ in batch]
             for (frame, tile), result in zip(places, _result(future, results, places), strict=True):
-                frames.add(frame, tile, result)
+                add(frame, tile, result)
             future.release()
             advance(len(batch))
     finally:
@@ -227,21 +249,23 @@ def _by_function(tasks: list) -> list[tuple[Callable, list]]:
     return list(groups.items())
 
 
-def _batches(tasks: list, workers: int) -> list[list]:
+def _batches(tasks: list, workers: int, most: int, least: int) -> list[list]:
     """Split ``tasks`` into consecutive batches of :func:`_batch_sizes`."""
     batches, start = [], 0
-    for size in _batch_sizes(len(tasks), workers):
+    for size in _batch_sizes(len(tasks), workers, most, least):
         batches.append(tasks[start : start + size])
         start += size
     return batches
 
 
-def _batch_sizes(count: int, workers: int) -> list[int]:
-    """Return batch sizes for ``count`` tasks on ``workers``: large first, single ones last.
+def _batch_sizes(
+    count: int, workers: int, most: int = MOST_TASKS_PER_BATCH, least: int = 1
+) -> list[int]:
+    """Return batch sizes for ``count`` tasks on ``workers``: large first, small ones last.
 
-    Each batch takes a ``1 / (BATCHES_PER_WORKER * workers)`` share of the tasks left (at most
-    ``MOST_TASKS_PER_BATCH``), so the scheduler handles few tasks while the last, short ones
-    even out when the workers finish (guided self-scheduling).
+    Each batch takes a ``1 / (BATCHES_PER_WORKER * workers)`` share of the tasks left, kept
+    within ``least`` and ``most`` (and what is left), so the scheduler handles few tasks while
+    the last, short ones even out when the workers finish (guided self-scheduling).
 
     Examples
     --------
@@ -249,10 +273,12 @@ def _batch_sizes(count: int, workers: int) -> list[int]:
     [5, 4, 3, 3, 3, 2, 2, 2, 2, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1]
     >>> sum(_batch_sizes(120, 2)), max(_batch_sizes(120, 2)), _batch_sizes(3, 1)
     (120, 8, [1, 1, 1])
+    >>> _batch_sizes(100, 2, most=32, least=10)
+    [12, 11, 10, 10, 10, 10, 10, 10, 10, 7]
     """
     sizes = []
     while count:
-        size = min(MOST_TASKS_PER_BATCH, max(1, count // (BATCHES_PER_WORKER * workers)))
+        size = min(most, count, max(least, count // (BATCHES_PER_WORKER * workers)))
         sizes.append(size)
         count -= size
     return sizes

@@ -7,13 +7,17 @@ frame rendered on a worker is the frame rendered here, to the byte.
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Callable, Sequence
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from pixelpath.image import Image
-from pixelpath.scene import Scene
+from pixelpath.scene import Camera, Scene
+
+if TYPE_CHECKING:
+    from pixelpath.frames.views import ViewOutput
 
 
 def render_frame(
@@ -98,11 +102,36 @@ def warm_up(options: dict[str, Any]) -> None:
     render(scene, **options)
 
 
-def encode(image: Image, suffix: str, gamma: float | None) -> bytes:
-    """Return ``image`` encoded as ``Image.save`` would write it (its encoding by default)."""
+def view_files(
+    scene: Scene, index: int, camera: Camera, options: dict[str, Any], output: ViewOutput
+) -> None:
+    """Render view ``index`` of a dataset (``scene`` seen by ``camera``) and write its files.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> import pixelpath as pp
+    >>> from pixelpath.frames.views import ViewOutput
+    >>> from pixelpath.frames.work import view_files
+    >>> camera = pp.Camera(eye=(0, 0, 5), target=(0, 0, 0), width=8, height=6)
+    >>> output = ViewOutput(tempfile.mkdtemp(), 1, ("mask",))
+    >>> view_files(pp.Scene(camera), 0, camera, {}, output)
+    >>> sorted(os.listdir(output.folder))
+    ['images', 'masks']
+    """
+    from pixelpath.renderer import render
+
+    output.write(index, render(dataclasses.replace(scene, camera=camera), **options))
+
+
+def encode(image: Image, suffix: str, gamma: float | str | None, alpha: bool = False) -> bytes:
+    """Return ``image`` encoded as ``Image.save(path, gamma, alpha)`` would write it."""
     from pixelpath.io.images import encode_image
 
-    return encode_image(image.rgb, suffix, gamma=image.encoding if gamma is None else gamma)
+    gamma = image.encoding if gamma is None else gamma
+    if not alpha:
+        return encode_image(image.rgb, suffix, gamma=gamma)
+    return encode_image(image.foreground(), suffix, gamma=gamma, alpha=image.alpha)
 
 
 def stitch(tiles: Sequence[Image], regions: Sequence[tuple[int, int, int, int]]) -> Image:

@@ -12,6 +12,7 @@ normal    ``<stem>.normal.png``         8-bit RGB ``(n + 1) / 2`` of the unit wo
 id        ``<stem>.id.png``             16-bit greyscale: object index + 1, 0 for the
                                         background (the scene's object order)
 alpha     ``<stem>.alpha.png``          8-bit coverage, 255 where a surface covers the pixel
+mask      ``<stem>.mask.png``           8-bit, 255 where a surface was drawn, 0 elsewhere
 ========  ============================  ==================================================
 
 Depth goes to ``.npy`` rather than an image: it is unbounded and ``inf`` marks the background,
@@ -27,14 +28,16 @@ from pathlib import Path
 
 import numpy as np
 
-__all__ = ["AOVS", "aov_path", "parse_aovs", "write_aovs"]
+__all__ = ["AOVS", "aov_path", "encode_aov", "parse_aovs", "write_aovs"]
 
-AOVS = ("depth", "normal", "id", "alpha")
-_SUFFIXES = {"depth": ".npy", "normal": ".png", "id": ".png", "alpha": ".png"}
+AOVS = ("depth", "normal", "id", "alpha", "mask")
+_SUFFIXES = {"depth": ".npy", "normal": ".png", "id": ".png", "alpha": ".png", "mask": ".png"}
 
 
-def parse_aovs(text: str | Iterable[str]) -> tuple[str, ...]:
+def parse_aovs(text: str | Iterable[str], allowed: tuple[str, ...] = AOVS) -> tuple[str, ...]:
     """Return the AOV names of ``"depth,normal"`` (or a sequence), checked and deduplicated.
+
+    Names must be among ``allowed`` (default: every AOV of this module).
 
     Examples
     --------
@@ -46,8 +49,8 @@ def parse_aovs(text: str | Iterable[str]) -> tuple[str, ...]:
     chosen: list[str] = []
     for raw in names:
         name = str(raw).strip().lower()
-        if name not in AOVS:
-            raise ValueError(f"unknown AOV {raw!r}; choose from {', '.join(AOVS)}")
+        if name not in allowed:
+            raise ValueError(f"unknown AOV {raw!r}; choose from {', '.join(allowed)}")
         if name not in chosen:
             chosen.append(name)
     return tuple(chosen)
@@ -86,12 +89,22 @@ def write_aovs(image, image_path: str | os.PathLike, aovs: Iterable[str]) -> lis
     written = []
     for aov in parse_aovs(aovs):
         path = aov_path(image_path, aov)
-        write_bytes(path, _encoded(image, aov))
+        write_bytes(path, encode_aov(image, aov))
         written.append(path)
     return written
 
 
-def _encoded(image, aov: str) -> bytes:
+def encode_aov(image, aov: str) -> bytes:
+    """Return the file bytes of ``image``'s buffer ``aov``, as :func:`write_aovs` writes it.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from pixelpath import Image
+    >>> from pixelpath.io.aovs import encode_aov
+    >>> encode_aov(Image(np.zeros((2, 2, 3))), "mask")[1:4]
+    b'PNG'
+    """
     from PIL import Image as PILImage
 
     buffer = io.BytesIO()
@@ -107,6 +120,10 @@ def _encoded(image, aov: str) -> bytes:
         if ids.max(initial=0) > 65535:
             raise ValueError("the id AOV holds object indices up to 65534 (a 16-bit PNG)")
         PILImage.fromarray(ids.astype(np.uint16)).save(buffer, format="PNG")
+    elif aov == "mask":
+        PILImage.fromarray(np.where(image.object_id >= 0, 255, 0).astype(np.uint8)).save(
+            buffer, format="PNG"
+        )
     else:
         PILImage.fromarray(np.rint(image.alpha * 255.0).astype(np.uint8)).save(buffer, "PNG")
     return buffer.getvalue()

@@ -1,0 +1,214 @@
+"""Where the cameras of a dataset of views stand: orbit, Fibonacci sphere or seeded random.
+
+:func:`view_directions` gives unit vectors from the model's centre towards each camera;
+:func:`view_cameras` places a camera on each, all at one distance that frames the model in
+every view, and :func:`camera_to_world` gives each camera's pose in the NeRF convention.
+Everything here is a pure function of its arguments: the same request gives the same poses,
+to the bit, on every machine.
+"""
+
+from __future__ import annotations
+
+import math
+import numbers
+from typing import Any
+
+import numpy as np
+
+from pixelpath.scene import Camera, Mesh, Plane, Scene, Sphere
+
+__all__ = ["LAYOUTS", "camera_to_world", "view_cameras", "view_directions"]
+
+LAYOUTS = ("orbit", "sphere", "random")
+ELEVATION = 22.0  # degrees, the orbit's default: the height of pixelpath's framing camera
+_GOLDEN_ANGLE = math.pi * (3.0 - math.sqrt(5.0))
+
+
+def view_directions(
+    n: int,
+    layout: str = "orbit",
+    *,
+    seed: int = 0,
+    elevation: float | None = None,
+    hemisphere: bool = True,
+) -> np.ndarray:
+    """Return ``n`` unit vectors from the model's centre towards the cameras, (n, 3).
+
+    Parameters
+    ----------
+    n : int
+        Number of views, at least 1.
+    layout : {"orbit", "sphere", "random"}
+        ``orbit``: evenly spaced round the vertical (+Y) axis at one ``elevation``, the first
+        in front (+Z), going anticlockwise seen from above. ``sphere``: a Fibonacci sphere,
+        evenly spread over the upper hemisphere (or the whole sphere). ``random``: uniformly
+        distributed over the same, drawn with ``seed``.
+    seed : int
+        Seed of the ``random`` layout (NumPy's PCG64); the others ignore it.
+    elevation : float, optional
+        Degrees above the horizon, for ``orbit`` only (default 22, in -89..89).
+    hemisphere : bool
+        ``sphere`` and ``random``: only views from above the horizon (default), or from all
+        round.
+
+    Examples
+    --------
+    >>> from pixelpath.frames.poses import view_directions
+    >>> (view_directions(4, elevation=0).round(6) + 0.0).tolist()
+    [[0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [-1.0, 0.0, 0.0]]
+    >>> bool((view_directions(50, "sphere")[:, 1] > 0).all())
+    True
+    """
+    count = _count(n)
+    if layout not in LAYOUTS:
+        raise ValueError(f"unknown layout {layout!r}; choose from {', '.join(LAYOUTS)}")
+    if elevation is not None and layout != "orbit":
+        raise ValueError(f"elevation applies to the orbit layout, not to {layout!r}")
+    if layout == "orbit":
+        return _orbit(count, ELEVATION if elevation is None else elevation)
+    if layout == "sphere":
+        # heights at the middle of n equal bands: equal areas, so evenly spread points
+        low = 0.0 if hemisphere else -1.0
+        heights = 1.0 - (np.arange(count) + 0.5) / count * (1.0 - low)
+        return _on_sphere(heights, np.arange(count) * _GOLDEN_ANGLE)
+    if isinstance(seed, bool) or not isinstance(seed, numbers.Integral) or seed < 0:
+        raise ValueError(f"seed must be a whole number >= 0, got {seed!r}")
+    generator = np.random.default_rng(int(seed))
+    # Archimedes: the height of a uniform point on the sphere is uniform
+    heights = generator.uniform(0.0 if hemisphere else -1.0, 1.0, count)
+    return _on_sphere(heights, generator.uniform(0.0, 2.0 * math.pi, count))
+
+
+def view_cameras(
+    scene: Scene,
+    directions: np.ndarray,
+    size: tuple[int, int],
+    *,
+    fov: float = 45.0,
+    distance: float | None = None,
+) -> list[Camera]:
+    """Return a camera per direction, looking at the centre of the scene's bounded objects.
+
+    All cameras stand at one distance from the centre: ``distance``, or by default the
+    smallest at which every view shows the whole bounding box within the middle 90 % of the
+    picture (the largest of the views' framing distances). Near and far enclose the objects.
+
+    Parameters
+    ----------
+    scene : Scene
+        Its bounded objects (planes aside) are framed.
+    directions : (n, 3) array
+        Unit vectors from the centre towards the cameras (:func:`view_directions`).
+    size : (int, int)
+        Width and height of the pictures.
+    fov : float
+        Vertical field of view, degrees.
+    distance : float, optional
+        Distance from the centre, in scene units.
+
+    Raises
+    ------
+    ValueError
+        When the scene has nothing to frame (no bounded object, or non-finite bounds).
+
+    Examples
+    --------
+    >>> import pixelpath as pp
+    >>> from pixelpath.frames.poses import view_cameras, view_directions
+    >>> scene = pp.Scene(pp.Camera(eye=(0, 0, 5), target=(0, 0, 0)), [pp.Sphere((0, 1, 0), 1)])
+    >>> cameras = view_cameras(scene, view_directions(3), (64, 64), distance=4)
+    >>> [camera.target.tolist() for camera in cameras][0], round(cameras[1].near, 3)
+    ([0.0, 1.0, 0.0], 2.95)
+    """
+    from pixelpath.io.models import depth_range, framing_distance
+
+    bounds = _framed_bounds(scene)
+    center = bounds.mean(axis=0)
+    radius = _radius(scene, center)
+    if distance is None:
+        distance = max(
+            framing_distance(bounds, back, size, fov, up=_up(back)) for back in directions
+        )
+    elif isinstance(distance, bool) or not isinstance(distance, numbers.Real) or not (
+        math.isfinite(distance) and distance > 0
+    ):
+        raise ValueError(f"distance must be a positive number of scene units, got {distance!r}")
+    near, far = depth_range(float(distance), radius)
+    width, height = size
+    return [
+        Camera(eye=center + distance * back, target=center, up=_up(back), fov=fov,
+               width=width, height=height, near=near, far=far)
+        for back in directions
+    ]
+
+
+def camera_to_world(camera: Camera) -> np.ndarray:
+    """Return the camera's (4, 4) pose: camera-to-world, OpenGL axes (looking down −Z, +Y up).
+
+    The columns are the camera's right, up and backward unit vectors and its position: the
+    ``transform_matrix`` of NeRF's and nerfstudio's ``transforms.json``.
+
+    Examples
+    --------
+    >>> from pixelpath.scene import Camera
+    >>> from pixelpath.frames.poses import camera_to_world
+    >>> camera_to_world(Camera(eye=(0, 0, 5), target=(0, 0, 0)))[:3].tolist()
+    [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 5.0]]
+    """
+    right, up, back = camera.basis()
+    pose = np.eye(4)
+    pose[:3, 0], pose[:3, 1], pose[:3, 2], pose[:3, 3] = right, up, back, camera.eye
+    return pose
+
+
+def _count(n: Any) -> int:
+    if isinstance(n, bool) or not isinstance(n, numbers.Integral):
+        raise TypeError(f"n must be an int, got {n!r}")
+    if n < 1:
+        raise ValueError(f"n must be at least 1 view, got {n}")
+    return int(n)
+
+
+def _orbit(count: int, elevation: Any) -> np.ndarray:
+    if isinstance(elevation, bool) or not isinstance(elevation, numbers.Real) or not (
+        -89.0 <= elevation <= 89.0
+    ):
+        raise ValueError(f"elevation must be degrees in -89..89, got {elevation!r}")
+    heights = np.full(count, math.sin(math.radians(elevation)))
+    return _on_sphere(heights, np.arange(count) * (2.0 * math.pi / count))
+
+
+def _on_sphere(heights: np.ndarray, azimuths: np.ndarray) -> np.ndarray:
+    """Return unit vectors at ``heights`` (y) and ``azimuths`` (radians, +Z towards +X)."""
+    across = np.sqrt(np.maximum(1.0 - heights * heights, 0.0))
+    return np.stack([across * np.sin(azimuths), heights, across * np.cos(azimuths)], axis=1)
+
+
+def _up(back: np.ndarray) -> tuple[float, float, float]:
+    """World +Y, or +Z for a camera looking almost straight down or up (where +Y is no up)."""
+    return (0.0, 0.0, -float(np.sign(back[1]))) if abs(back[1]) > 0.9999 else (0.0, 1.0, 0.0)
+
+
+def _framed_bounds(scene: Scene) -> np.ndarray:
+    bounds = scene.bounds()
+    if not np.isfinite(bounds).all():
+        raise ValueError(f"the scene cannot be framed: its bounds are not finite {bounds.tolist()}")
+    return bounds
+
+
+def _radius(scene: Scene, center: np.ndarray) -> float:
+    """Distance from ``center`` to the farthest point of the bounded objects (at least 1e-9)."""
+    farthest = 1e-9
+    for obj in scene.objects:
+        if isinstance(obj, Plane):
+            continue  # infinite
+        if isinstance(obj, Sphere):
+            reach = float(np.linalg.norm(obj.center - center)) + obj.radius
+            farthest = max(farthest, reach)
+            continue
+        if isinstance(obj, Mesh):
+            points = obj.vertices
+        else:
+            points = np.array(np.meshgrid(*obj.bounds().T, indexing="ij")).reshape(3, -1).T
+        farthest = max(farthest, float(np.max(np.linalg.norm(points - center, axis=1))))
+    return farthest

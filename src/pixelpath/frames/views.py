@@ -1,0 +1,507 @@
+"""Datasets of views: a model in, a NeRF-style dataset out (images, depth, normals, masks, poses).
+
+:func:`render_views` places ``n`` cameras round a model (:mod:`pixelpath.frames.poses`), renders
+each view with the frames machinery (here, or on a Dask cluster whose workers write the files),
+and writes ``transforms.json`` last, in the layout NeRF, nerfstudio and instant-ngp read:
+
+====================  ==========================================================================
+file                  contents
+====================  ==========================================================================
+``images/view_0000.png``   the picture: RGB, or RGBA with ``transparent=True`` (NeRF-synthetic's
+                           choice: the background is alpha 0), in the scene's encoding (sRGB for
+                           model files)
+``depth/view_0000.npy``    float32 (H, W) distance along the viewing axis, in the model's units;
+                           0 where no surface was drawn (what nerfstudio reads as "no depth")
+``normals/view_0000.png``  8-bit RGB ``(n + 1) / 2`` of the unit world-space normal; 0 where none
+``masks/view_0000.png``    8-bit, 255 where a surface was drawn, 0 elsewhere
+``transforms.json``        intrinsics and one ``transform_matrix`` (camera-to-world) per view
+====================  ==========================================================================
+
+Depth is a float32 ``.npy`` rather than a 16-bit PNG: it keeps the renderer's depth exactly,
+with no scale to choose for the model's size (a millimetre step would flatten a small model,
+and a 16-bit range would clip a large one). ``transforms.json`` says so with
+``"depth_unit_scale_factor": 1.0``: nerfstudio multiplies ``.npy`` depths by its data parser's
+``depth_unit_scale_factor`` (default 0.001, meant for millimetre PNGs), so set it to 1.
+
+Poses and depths are in the model file's own world coordinates (its node transforms applied;
+nothing recentred or rescaled). Every file is written atomically, and ``transforms.json`` only
+once every view is on disk: a folder holding ``transforms.json`` holds a whole dataset.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import io
+import json
+import math
+import numbers
+import os
+import re
+from collections.abc import Callable, Iterable
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from pixelpath.frames import poses as _poses
+from pixelpath.frames.plan import check_tile_size, checked_gamma, render_options
+from pixelpath.image import Image
+from pixelpath.io.aovs import parse_aovs
+from pixelpath.scene import Camera, Scene
+
+__all__ = ["VIEW_AOVS", "ViewOutput", "ViewPlan", "plan_views", "render_views", "run_views"]
+
+VIEW_AOVS = ("depth", "normal", "mask")
+FOLDERS = {"image": "images", "depth": "depth", "normal": "normals", "mask": "masks"}
+SUFFIXES = {"image": ".png", "depth": ".npy", "normal": ".png", "mask": ".png"}
+JSON_KEYS = {"depth": "depth_file_path", "normal": "normal_file_path", "mask": "mask_path"}
+DEFAULT_SIZE = (800, 800)
+# Written first: the request that made the folder's views, so --resume can tell a folder of
+# this dataset's views from one of another's (transforms.json comes only at the end).
+REQUEST_FILE = ".pixelpath-views.json"
+# Views per task on a cluster: each task costs the client and scheduler about 3 ms of CPU, so
+# batches of at least 10 views keep that under 0.3 ms a view (fewer when the views are fewer
+# than 10 a worker, so that every worker gets some); at most 64 keep retries fine-grained.
+LEAST_VIEWS_PER_TASK = 10
+MOST_VIEWS_PER_TASK = 64
+_VIEW_FILE = re.compile(r"view_\d+\.(png|npy)")
+
+
+@dataclasses.dataclass(frozen=True)
+class ViewOutput:
+    """Where and how each view's files are written (what a worker needs to write them).
+
+    Attributes
+    ----------
+    folder : str
+        The dataset's folder.
+    count : int
+        Number of views (it sets the width of the numbers in the file names, 4 at least).
+    aovs : tuple of str
+        The buffers written beside the pictures, from :data:`VIEW_AOVS`.
+    transparent : bool
+        RGBA pictures whose alpha is the coverage.
+    gamma : float, "srgb", "linear" or None
+        Display encoding of the pictures (None: the scene's ``encoding``).
+    """
+
+    folder: str
+    count: int
+    aovs: tuple[str, ...] = ()
+    transparent: bool = False
+    gamma: float | str | None = None
+
+    def relative(self, index: int, kind: str) -> str:
+        """Return the path of view ``index``'s ``kind`` file, relative to the folder.
+
+        Examples
+        --------
+        >>> from pixelpath.frames.views import ViewOutput
+        >>> ViewOutput("out", 100, ("depth",)).relative(7, "depth")
+        'depth/view_0007.npy'
+        """
+        digits = max(4, len(str(self.count - 1)))
+        return f"{FOLDERS[kind]}/view_{index:0{digits}d}{SUFFIXES[kind]}"
+
+    def kinds(self) -> tuple[str, ...]:
+        """Return the kinds of file each view has: ``"image"`` then the AOVs."""
+        return ("image", *self.aovs)
+
+    def path(self, index: int, kind: str) -> Path:
+        """Return the file of view ``index``'s ``kind`` (``"image"`` or an AOV)."""
+        return Path(self.folder) / self.relative(index, kind)
+
+    def write(self, index: int, image: Image) -> None:
+        """Write view ``index``'s picture and AOVs, each file atomically."""
+        from pixelpath.io.images import write_bytes
+
+        for kind in self.kinds():
+            path = self.path(index, kind)
+            path.parent.mkdir(parents=True, exist_ok=True)
+            write_bytes(path, self.encode(image, kind))
+
+    def encode(self, image: Image, kind: str) -> bytes:
+        """Return the bytes of the ``kind`` file of ``image``."""
+        from pixelpath.frames.work import encode
+        from pixelpath.io.aovs import encode_aov
+
+        if kind == "image":
+            return encode(image, ".png", self.gamma, alpha=self.transparent)
+        if kind == "depth":
+            buffer = io.BytesIO()
+            depth = image.depth
+            np.save(buffer, np.where(np.isfinite(depth), depth, 0.0).astype(np.float32))
+            return buffer.getvalue()
+        return encode_aov(image, kind)
+
+    def is_complete(self, index: int, width: int, height: int) -> bool:
+        """Return True when every file of view ``index`` is on disk, whole and of the size."""
+        from pixelpath.frames.plan import frame_is_complete
+
+        for kind in self.kinds():
+            path = self.path(index, kind)
+            if kind != "depth":
+                if not frame_is_complete(path, width, height):
+                    return False
+                continue
+            try:
+                depth = np.load(path, allow_pickle=False)
+            except (OSError, ValueError, EOFError):
+                return False
+            if depth.shape != (height, width) or depth.dtype != np.float32:
+                return False
+        return True
+
+
+@dataclasses.dataclass(frozen=True)
+class ViewPlan:
+    """A checked dataset request: the cameras, the files, and the views still to render.
+
+    Attributes
+    ----------
+    scene : Scene
+        The scene (frame 0 of its animation); each view replaces its camera.
+    cameras : tuple of Camera
+        One per view, in order.
+    output : ViewOutput
+        The files' folder, names and formats.
+    todo : tuple of int
+        The views to render (all but those complete on disk, with ``resume``).
+    options : dict
+        Keywords of :func:`pixelpath.render`.
+    request : dict
+        What made the dataset (JSON-serializable); stored in the folder so that ``resume``
+        only ever completes the same dataset.
+    """
+
+    scene: Scene
+    cameras: tuple[Camera, ...]
+    output: ViewOutput
+    todo: tuple[int, ...]
+    options: dict[str, Any]
+    request: dict[str, Any]
+
+    def poses(self) -> np.ndarray:
+        """Return the (n, 4, 4) camera-to-world matrices of the views."""
+        return np.stack([_poses.camera_to_world(camera) for camera in self.cameras])
+
+    def transforms(self) -> dict[str, Any]:
+        """Return the ``transforms.json`` document (NeRF-synthetic / nerfstudio layout)."""
+        first = self.cameras[0]
+        width, height = first.width, first.height
+        focal = (height / 2.0) / math.tan(math.radians(first.fov) / 2.0)  # square pixels
+        frames = []
+        for index, pose in enumerate(self.poses()):
+            frame = {
+                "file_path": self.output.relative(index, "image"),
+                "transform_matrix": pose.tolist(),
+            }
+            for aov in self.output.aovs:
+                frame[JSON_KEYS[aov]] = self.output.relative(index, aov)
+            frames.append(frame)
+        document = {
+            "camera_model": "PINHOLE",
+            "camera_angle_x": 2.0 * math.atan(width / (2.0 * focal)),
+            "camera_angle_y": math.radians(first.fov),
+            "fl_x": focal,
+            "fl_y": focal,
+            "cx": width / 2.0,
+            "cy": height / 2.0,
+            "w": width,
+            "h": height,
+        }
+        if "depth" in self.output.aovs:
+            document["depth_unit_scale_factor"] = 1.0
+        document["frames"] = frames
+        document["pixelpath"] = self.request
+        return document
+
+
+def render_views(
+    scene_or_path: Scene | str | os.PathLike,
+    n: int,
+    out: str | os.PathLike,
+    aovs: Iterable[str] | str = (),
+    client: Any = None,
+    *,
+    layout: str = "orbit",
+    seed: int = 0,
+    elevation: float | None = None,
+    hemisphere: bool = True,
+    distance: float | None = None,
+    size: tuple[int, int] | None = None,
+    fov: float | None = None,
+    transparent: bool = False,
+    gamma: float | str | None = None,
+    resume: bool = False,
+    overwrite: bool = False,
+    progress: Callable[[int], None] | None = None,
+    **options: Any,
+) -> np.ndarray:
+    """Render ``n`` views of a model into a NeRF-style dataset; return the poses.
+
+    Parameters
+    ----------
+    scene_or_path : Scene, str or path-like
+        A Scene, or a model file (``.glb .gltf .obj .ply .stl``) or scene file to load.
+    n : int
+        Number of views.
+    out : str or path-like
+        The dataset's folder (created). A folder that already holds a dataset is refused
+        unless ``resume`` (complete this one) or ``overwrite`` (replace it).
+    aovs : iterable of str or str
+        Buffers written beside each picture: ``"depth"``, ``"normal"``, ``"mask"``.
+    client : dask.distributed.Client, optional
+        Render on this client's cluster; its workers write the files, so they must see
+        ``out`` at the same path (a local cluster always does).
+    layout : {"orbit", "sphere", "random"}
+        Where the cameras stand (:func:`pixelpath.frames.poses.view_directions`).
+    seed : int
+        Seed of the ``random`` layout.
+    elevation : float, optional
+        The orbit's height in degrees (default 22).
+    hemisphere : bool
+        ``sphere`` and ``random`` views from above the horizon only (default).
+    distance : float, optional
+        The cameras' distance from the model's centre (default: the model framed in every
+        view, all cameras at one distance).
+    size : (int, int), optional
+        Width and height (default: the Scene's camera size, or 800 x 800 for a file).
+    fov : float, optional
+        Vertical field of view in degrees (default: the scene camera's when perspective,
+        else 45).
+    transparent : bool
+        RGBA pictures, the background transparent.
+    gamma : float, "srgb" or "linear", optional
+        Display encoding of the pictures (default: the scene's).
+    resume : bool
+        Keep the views already complete on disk (each file read back) and render the rest.
+    overwrite : bool
+        Delete the folder's previous dataset (its ``view_*`` files and ``transforms.json``).
+    progress : callable, optional
+        Called with a count of views each time some are written.
+    **options
+        Keywords of :func:`pixelpath.render`: ``method``, ``shading``, ``ssaa``, ...
+
+    Returns
+    -------
+    ndarray
+        (n, 4, 4) camera-to-world matrices (OpenGL axes), as in ``transforms.json``.
+
+    Raises
+    ------
+    ValueError, TypeError
+        For bad requests, before anything is written.
+
+    Examples
+    --------
+    >>> import json, os, tempfile
+    >>> import pixelpath as pp
+    >>> scene = pp.Scene(pp.Camera(eye=(0, 0, 5), target=(0, 0, 0), width=32, height=32),
+    ...                  [pp.Sphere((0, 0, 0), 1.0)], [pp.PointLight((2, 3, 4))])
+    >>> folder = os.path.join(tempfile.mkdtemp(), "views")
+    >>> poses = pp.render_views(scene, 8, folder, aovs="depth,mask")
+    >>> poses.shape
+    (8, 4, 4)
+    >>> with open(os.path.join(folder, "transforms.json")) as f:
+    ...     document = json.load(f)
+    >>> document["w"], document["frames"][1]["depth_file_path"]
+    (32, 'depth/view_0001.npy')
+    """
+    plan = plan_views(
+        scene_or_path, n, out, aovs, layout=layout, seed=seed, elevation=elevation,
+        hemisphere=hemisphere, distance=distance, size=size, fov=fov, transparent=transparent,
+        gamma=gamma, resume=resume, overwrite=overwrite, options=options,
+    )
+    run_views(plan, client, progress)
+    return plan.poses()
+
+
+def plan_views(
+    scene_or_path: Scene | str | os.PathLike,
+    n: int,
+    out: str | os.PathLike,
+    aovs: Iterable[str] | str = (),
+    *,
+    layout: str = "orbit",
+    seed: int = 0,
+    elevation: float | None = None,
+    hemisphere: bool = True,
+    distance: float | None = None,
+    size: tuple[int, int] | None = None,
+    fov: float | None = None,
+    transparent: bool = False,
+    gamma: float | str | None = None,
+    resume: bool = False,
+    overwrite: bool = False,
+    options: dict[str, Any] | None = None,
+) -> ViewPlan:
+    """Check a dataset request and return its :class:`ViewPlan`; see :func:`render_views`.
+
+    Nothing is written: every error is raised here, before any view is rendered.
+    """
+    if resume and overwrite:
+        raise ValueError("resume and overwrite exclude each other: keep the views, or not")
+    source, scene = _scene(scene_or_path)
+    chosen = parse_aovs(aovs, VIEW_AOVS)
+    options = render_options(options or {})
+    size = _size(size, scene, source)
+    fov = _fov(fov, scene.camera)
+    directions = _poses.view_directions(
+        n, layout, seed=seed, elevation=elevation, hemisphere=hemisphere
+    )
+    cameras = tuple(_poses.view_cameras(scene, directions, size, fov=fov, distance=distance))
+    gamma = checked_gamma(gamma)
+    output = ViewOutput(os.fspath(out), len(cameras), chosen, bool(transparent), gamma)
+    check_tile_size(((0, 0, *size),), options.get("ssaa", 1), "view", "ask for smaller views")
+    _check_render(scene, cameras[0], options)
+    request = {
+        "source": source,
+        "views": len(cameras),
+        "layout": layout,
+        "seed": seed if layout == "random" else None,
+        "size": list(size),
+        "fov": fov,
+        "aovs": list(chosen),
+        "transparent": output.transparent,
+        "gamma": output.gamma,
+        "options": {key: options[key] for key in sorted(options)},
+        "eyes": [camera.eye.tolist() for camera in cameras],
+    }
+    folder = Path(output.folder)
+    _check_folder(folder, request, resume=resume, overwrite=overwrite)
+    todo = tuple(range(len(cameras)))
+    if resume:
+        todo = tuple(i for i in todo if not output.is_complete(i, *size))
+    return ViewPlan(scene, cameras, output, todo, options, request)
+
+
+def run_views(
+    plan: ViewPlan, client: Any = None, progress: Callable[[int], None] | None = None
+) -> Path:
+    """Render a :class:`ViewPlan`'s views, then write ``transforms.json``; return its path.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> import pixelpath as pp
+    >>> from pixelpath.frames.views import plan_views, run_views
+    >>> scene = pp.Scene(pp.Camera(eye=(0, 0, 5), target=(0, 0, 0), width=16, height=16),
+    ...                  [pp.Box((-1, -1, -1), (1, 1, 1))])
+    >>> plan = plan_views(scene, 2, os.path.join(tempfile.mkdtemp(), "boxes"))
+    >>> run_views(plan).name
+    'transforms.json'
+    """
+    from pixelpath.frames import work
+    from pixelpath.frames.run import run_tasks
+    from pixelpath.io.images import write_bytes
+
+    folder = Path(plan.output.folder)
+    _prepare(folder, plan)
+    tasks = [
+        (work.view_files, index, 0, (plan.cameras[index], plan.options, plan.output))
+        for index in plan.todo
+    ]
+    run_tasks(
+        plan.scene, plan.options, tasks, _ignore, client, progress,
+        most_per_batch=MOST_VIEWS_PER_TASK, least_per_batch=_least_per_task(client, len(tasks)),
+    )
+    path = folder / "transforms.json"
+    write_bytes(path, (json.dumps(plan.transforms(), indent=2) + "\n").encode())
+    return path
+
+
+def _ignore(index: int, part: int, result: Any) -> None:
+    """Take a view task's result: nothing, the workers wrote the files."""
+
+
+def _least_per_task(client: Any, views: int) -> int:
+    if client is None:
+        return 1
+    workers = max(1, len(client.scheduler_info()["workers"]))
+    return max(1, min(LEAST_VIEWS_PER_TASK, views // workers))
+
+
+def _scene(scene_or_path: Any) -> tuple[str | None, Scene]:
+    """Return (the file's name or None, the scene at frame 0)."""
+    if isinstance(scene_or_path, Scene):
+        return None, scene_or_path.at_frame(0)
+    if not isinstance(scene_or_path, str | os.PathLike):
+        raise TypeError(
+            f"scene_or_path must be a Scene or a path, got {type(scene_or_path).__name__}"
+        )
+    from pixelpath.scene import load_scene
+
+    path = Path(scene_or_path)
+    return path.name, load_scene(path).at_frame(0)
+
+
+def _size(size: Any, scene: Scene, source: str | None) -> tuple[int, int]:
+    if size is None:
+        return DEFAULT_SIZE if source is not None else (scene.camera.width, scene.camera.height)
+    try:
+        width, height = size
+    except (TypeError, ValueError):
+        raise TypeError(f"size must be (width, height), got {size!r}") from None
+    for name, side in (("width", width), ("height", height)):
+        if isinstance(side, bool) or not isinstance(side, numbers.Integral) or side < 1:
+            raise ValueError(f"size: the {name} must be a whole number >= 1, got {side!r}")
+    return int(width), int(height)
+
+
+def _fov(fov: Any, camera: Camera) -> float:
+    if fov is None:
+        return 45.0 if camera.orthographic else float(camera.fov)
+    if isinstance(fov, bool) or not isinstance(fov, numbers.Real) or not 0 < fov < 180:
+        raise ValueError(f"fov must be degrees strictly between 0 and 180, got {fov!r}")
+    return float(fov)
+
+
+def _check_render(scene: Scene, camera: Camera, options: dict[str, Any]) -> None:
+    """Render one pixel of the first view: every render option is checked by render."""
+    from pixelpath.renderer import render
+
+    render(dataclasses.replace(scene, camera=camera), region=(0, 0, 1, 1), **options)
+
+
+def _previous_files(folder: Path) -> list[Path]:
+    """Return the files a dataset of views left in ``folder``: views, JSON, request."""
+    found = [folder / name for name in ("transforms.json", REQUEST_FILE)]
+    found = [path for path in found if path.is_file()]
+    for sub in FOLDERS.values():
+        if (folder / sub).is_dir():
+            found.extend(p for p in (folder / sub).iterdir() if _VIEW_FILE.fullmatch(p.name))
+    return found
+
+
+def _check_folder(folder: Path, request: dict, *, resume: bool, overwrite: bool) -> None:
+    if folder.exists() and not folder.is_dir():
+        raise ValueError(f"out: {folder} exists and is not a folder")
+    if not folder.is_dir() or overwrite or not _previous_files(folder):
+        return
+    if not resume:
+        raise ValueError(
+            f"{folder} already holds a dataset of views; pass resume=True (--resume) to "
+            f"complete it or overwrite=True (--overwrite) to replace it"
+        )
+    stored = folder / REQUEST_FILE
+    try:
+        previous = json.loads(stored.read_text())
+    except (OSError, ValueError):
+        previous = None
+    if previous != json.loads(json.dumps(request)):
+        raise ValueError(
+            f"{folder} holds views made with other settings (or by something else), which "
+            f"resume cannot complete; pass overwrite=True (--overwrite) to replace them"
+        )
+
+
+def _prepare(folder: Path, plan: ViewPlan) -> None:
+    """Clear a previous dataset unless resuming; record the request."""
+    from pixelpath.io.images import write_bytes
+
+    folder.mkdir(parents=True, exist_ok=True)
+    if len(plan.todo) == len(plan.cameras):  # nothing kept: nothing of an older dataset stays
+        for path in _previous_files(folder):
+            path.unlink()
+    write_bytes(folder / REQUEST_FILE, json.dumps(plan.request).encode())
