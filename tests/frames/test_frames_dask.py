@@ -166,7 +166,7 @@ def test_views_written_by_workers_are_byte_identical_to_serial(client, tmp_path)
 @pytest.mark.slow
 def test_a_worker_killed_mid_dataset_costs_no_view(tmp_path):
     options = {"aovs": "depth", "size": (96, 72), "ssaa": 2}
-    pp.render_views(DUCK, 40, tmp_path / "serial", **options)  # 4 tasks of 10 views
+    pp.render_views(DUCK, 40, tmp_path / "serial", **options)
     killed = []
     with local_client(2) as client:
         pids = client.run(os.getpid)

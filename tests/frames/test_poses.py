@@ -10,7 +10,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import pixelpath as pp
-from pixelpath.frames.poses import camera_to_world, view_cameras, view_directions
+from pixelpath.frames.poses import place_cameras, view_directions
 
 
 def test_orbit_views_are_evenly_spaced_at_one_elevation():
@@ -78,7 +78,8 @@ def _scene(objects):
 def test_every_corner_of_the_model_is_inside_every_view(layout, n, seed, size):
     box = pp.Box((-2.0, 0.0, -0.5), (1.0, 0.7, 3.0))
     scene = _scene([box])
-    for camera in view_cameras(scene, view_directions(n, layout, seed=seed), size):
+    cameras = place_cameras(scene, view_directions(n, layout, seed=seed), size)
+    for camera in (cameras.camera(index) for index in range(n)):
         corners = np.array(np.meshgrid(*box.bounds().T, indexing="ij")).reshape(3, -1).T
         view = camera.view_matrix() @ np.c_[corners, np.ones(8)].T
         depth = -view[2]
@@ -91,16 +92,16 @@ def test_every_corner_of_the_model_is_inside_every_view(layout, n, seed, size):
 
 def test_all_views_stand_at_one_distance_unless_told():
     scene = _scene([pp.Box((-2, 0, -0.5), (1, 0.7, 3))])
-    cameras = view_cameras(scene, view_directions(7, "sphere"), (64, 48))
-    distances = [np.linalg.norm(c.eye - c.target) for c in cameras]
+    cameras = place_cameras(scene, view_directions(7, "sphere"), (64, 48))
+    distances = np.linalg.norm(cameras.eyes - cameras.target, axis=1)
     assert np.allclose(distances, distances[0])
-    told = view_cameras(scene, view_directions(3), (64, 48), distance=20.0)
-    assert np.allclose([np.linalg.norm(c.eye - c.target) for c in told], 20.0)
+    told = place_cameras(scene, view_directions(3), (64, 48), distance=20.0)
+    assert np.allclose(np.linalg.norm(told.eyes - told.target, axis=1), 20.0)
 
 
 def test_views_from_straight_above_have_a_valid_up():
     scene = _scene([pp.Sphere((0, 0, 0), 1.0)])
-    (camera,) = view_cameras(scene, np.array([[0.0, 1.0, 0.0]]), (32, 32), distance=5)
+    camera = place_cameras(scene, np.array([[0.0, 1.0, 0.0]]), (32, 32), distance=5).camera(0)
     right, up, back = camera.basis()
     assert np.allclose(back, (0, 1, 0)) and np.allclose(up, (0, 0, -1))
     assert np.allclose(right, (1, 0, 0))  # the model's front (+Z) at the bottom of the picture
@@ -108,13 +109,15 @@ def test_views_from_straight_above_have_a_valid_up():
 
 def test_a_scene_without_anything_bounded_cannot_be_framed():
     with pytest.raises(ValueError, match="no bounded objects"):
-        view_cameras(_scene([pp.Plane((0, 0, 0), (0, 1, 0))]), view_directions(2), (8, 8))
+        place_cameras(_scene([pp.Plane((0, 0, 0), (0, 1, 0))]), view_directions(2), (8, 8))
 
 
-def test_camera_to_world_inverts_the_view_matrix_in_opengl_axes():
-    camera = pp.Camera(eye=(3, 2, 5), target=(0.5, 0, -1), width=10, height=10)
-    pose = camera_to_world(camera)
-    assert np.allclose(pose @ camera.view_matrix(), np.eye(4))
-    distance = np.linalg.norm(camera.eye - camera.target)
-    assert np.allclose(pose @ [0, 0, -distance, 1], [*camera.target, 1])  # looks down -Z
-    assert pose[1, 1] > 0  # +Y of the camera is up in the world
+def test_poses_invert_each_camera_s_view_matrix_in_opengl_axes():
+    scene = _scene([pp.Box((-2, 0, -0.5), (1, 0.7, 3))])
+    cameras = place_cameras(scene, view_directions(40, "random", hemisphere=False), (20, 10))
+    for index, pose in enumerate(cameras.poses()):
+        camera = cameras.camera(index)
+        assert np.allclose(pose @ camera.view_matrix(), np.eye(4))
+        distance = np.linalg.norm(camera.eye - camera.target)
+        assert np.allclose(pose @ [0, 0, -distance, 1], [*camera.target, 1])  # looks down -Z
+        assert np.allclose(pose[:3, 1], camera.basis()[1])  # the camera's +Y is its up

@@ -137,16 +137,16 @@ def run(args: argparse.Namespace) -> int:
         options=render_options(args),
     )
     count = len(plan.todo)
-    with cluster_for(args, count, plan.options, start) as client:
+    with cluster_for(args, count, plan.job.options, start) as client:
         rendering = time.perf_counter()
         with progress(f"rendering {count} views", count, quiet=args.quiet) as advance:
             path = run_views(plan, client, advance)
         seconds = time.perf_counter() - rendering
     if not args.quiet:
-        skipped = len(plan.cameras) - count
+        skipped = len(plan.job.cameras) - count
         rate = f" ({count / seconds:.1f} views/s)" if count > 1 and seconds > 0 else ""
         kept = f"; kept {skipped} complete on disk" if skipped else ""
-        width, height = plan.cameras[0].width, plan.cameras[0].height
+        width, height = plan.job.cameras.size
         console().print(
             f"wrote {count} view{'s' * (count != 1)} and {path} ({width}x{height}, "
             f"{args.method}) in {since(start)}{rate}{kept}"

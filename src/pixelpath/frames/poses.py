@@ -1,14 +1,16 @@
 """Where the cameras of a dataset of views stand: orbit, Fibonacci sphere or seeded random.
 
 :func:`view_directions` gives unit vectors from the model's centre towards each camera;
-:func:`view_cameras` places a camera on each, all at one distance that frames the model in
-every view, and :func:`camera_to_world` gives each camera's pose in the NeRF convention.
+:func:`place_cameras` places a camera on each, all at one distance that frames the model in
+every view, as :class:`ViewCameras` (arrays: thousands of views cost little to place and to
+send to a cluster), whose ``poses()`` are the cameras' matrices in the NeRF convention.
 Everything here is a pure function of its arguments: the same request gives the same poses,
 to the bit, on every machine.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import numbers
 from typing import Any
@@ -17,7 +19,7 @@ import numpy as np
 
 from pixelpath.scene import Camera, Mesh, Plane, Scene, Sphere
 
-__all__ = ["LAYOUTS", "camera_to_world", "view_cameras", "view_directions"]
+__all__ = ["LAYOUTS", "ViewCameras", "place_cameras", "view_directions"]
 
 LAYOUTS = ("orbit", "sphere", "random")
 ELEVATION = 22.0  # degrees, the orbit's default: the height of pixelpath's framing camera
@@ -79,15 +81,78 @@ def view_directions(
     return _on_sphere(heights, generator.uniform(0.0, 2.0 * math.pi, count))
 
 
-def view_cameras(
+@dataclasses.dataclass(frozen=True, eq=False)
+class ViewCameras:
+    """The cameras of a dataset of views, as arrays: one eye and up per view, the rest shared.
+
+    Attributes
+    ----------
+    eyes, ups : (n, 3) ndarray
+        Each camera's position and up vector.
+    target : (3,) ndarray
+        The point every camera looks at.
+    fov : float
+        Vertical field of view, degrees.
+    size : (int, int)
+        Width and height of the pictures.
+    near, far : float
+        Clipping distances shared by all views.
+    """
+
+    eyes: np.ndarray
+    ups: np.ndarray
+    target: np.ndarray
+    fov: float
+    size: tuple[int, int]
+    near: float
+    far: float
+
+    def __len__(self) -> int:
+        return len(self.eyes)
+
+    def camera(self, index: int) -> Camera:
+        """Return view ``index``'s :class:`~pixelpath.scene.Camera`."""
+        width, height = self.size
+        return Camera(
+            eye=self.eyes[index], target=self.target, up=self.ups[index], fov=self.fov,
+            width=width, height=height, near=self.near, far=self.far,
+        )
+
+    def poses(self) -> np.ndarray:
+        """Return the (n, 4, 4) camera-to-world matrices, OpenGL axes (looking down −Z, +Y up).
+
+        The columns are each camera's right, up and backward unit vectors and its position:
+        the ``transform_matrix`` of NeRF's and nerfstudio's ``transforms.json``, the inverse
+        of each camera's ``view_matrix()``.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from pixelpath.frames.poses import ViewCameras
+        >>> cameras = ViewCameras(np.array([[0.0, 0.0, 5.0]]), np.array([[0.0, 1.0, 0.0]]),
+        ...                       np.zeros(3), 45.0, (8, 8), 1.0, 9.0)
+        >>> cameras.poses()[0, :3].tolist()
+        [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 5.0]]
+        """
+        back = self.eyes - self.target
+        back /= np.linalg.norm(back, axis=1, keepdims=True)
+        right = np.cross(self.ups, back)
+        right /= np.linalg.norm(right, axis=1, keepdims=True)
+        poses = np.zeros((len(self), 4, 4))
+        poses[:, :3, 0], poses[:, :3, 1], poses[:, :3, 2] = right, np.cross(back, right), back
+        poses[:, :3, 3], poses[:, 3, 3] = self.eyes, 1.0
+        return poses
+
+
+def place_cameras(
     scene: Scene,
     directions: np.ndarray,
     size: tuple[int, int],
     *,
     fov: float = 45.0,
     distance: float | None = None,
-) -> list[Camera]:
-    """Return a camera per direction, looking at the centre of the scene's bounded objects.
+) -> ViewCameras:
+    """Place a camera on each direction, looking at the centre of the scene's bounded objects.
 
     All cameras stand at one distance from the centre: ``distance``, or by default the
     smallest at which every view shows the whole bounding box within the middle 90 % of the
@@ -114,51 +179,28 @@ def view_cameras(
     Examples
     --------
     >>> import pixelpath as pp
-    >>> from pixelpath.frames.poses import view_cameras, view_directions
+    >>> from pixelpath.frames.poses import place_cameras, view_directions
     >>> scene = pp.Scene(pp.Camera(eye=(0, 0, 5), target=(0, 0, 0)), [pp.Sphere((0, 1, 0), 1)])
-    >>> cameras = view_cameras(scene, view_directions(3), (64, 64), distance=4)
-    >>> [camera.target.tolist() for camera in cameras][0], round(cameras[1].near, 3)
-    ([0.0, 1.0, 0.0], 2.95)
+    >>> cameras = place_cameras(scene, view_directions(3), (64, 64), distance=4)
+    >>> len(cameras), cameras.target.tolist(), round(cameras.near, 3)
+    (3, [0.0, 1.0, 0.0], 2.95)
     """
     from pixelpath.io.models import depth_range, framing_distance
 
     bounds = _framed_bounds(scene)
     center = bounds.mean(axis=0)
-    radius = _radius(scene, center)
+    ups = _ups(directions)
     if distance is None:
-        distance = max(
-            framing_distance(bounds, back, size, fov, up=_up(back)) for back in directions
-        )
-    elif isinstance(distance, bool) or not isinstance(distance, numbers.Real) or not (
-        math.isfinite(distance) and distance > 0
+        distance = float(np.max(framing_distance(bounds, directions, size, fov, up=ups)))
+    elif (
+        isinstance(distance, bool)
+        or not isinstance(distance, numbers.Real)
+        or not (math.isfinite(distance) and distance > 0)
     ):
         raise ValueError(f"distance must be a positive number of scene units, got {distance!r}")
-    near, far = depth_range(float(distance), radius)
-    width, height = size
-    return [
-        Camera(eye=center + distance * back, target=center, up=_up(back), fov=fov,
-               width=width, height=height, near=near, far=far)
-        for back in directions
-    ]
-
-
-def camera_to_world(camera: Camera) -> np.ndarray:
-    """Return the camera's (4, 4) pose: camera-to-world, OpenGL axes (looking down −Z, +Y up).
-
-    The columns are the camera's right, up and backward unit vectors and its position: the
-    ``transform_matrix`` of NeRF's and nerfstudio's ``transforms.json``.
-
-    Examples
-    --------
-    >>> from pixelpath.scene import Camera
-    >>> from pixelpath.frames.poses import camera_to_world
-    >>> camera_to_world(Camera(eye=(0, 0, 5), target=(0, 0, 0)))[:3].tolist()
-    [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 5.0]]
-    """
-    right, up, back = camera.basis()
-    pose = np.eye(4)
-    pose[:3, 0], pose[:3, 1], pose[:3, 2], pose[:3, 3] = right, up, back, camera.eye
-    return pose
+    near, far = depth_range(float(distance), _radius(scene, center))
+    return ViewCameras(center + distance * directions, ups, center, float(fov), tuple(size),
+                       near, far)
 
 
 def _count(n: Any) -> int:
@@ -184,9 +226,13 @@ def _on_sphere(heights: np.ndarray, azimuths: np.ndarray) -> np.ndarray:
     return np.stack([across * np.sin(azimuths), heights, across * np.cos(azimuths)], axis=1)
 
 
-def _up(back: np.ndarray) -> tuple[float, float, float]:
+def _ups(backs: np.ndarray) -> np.ndarray:
     """World +Y, or +Z for a camera looking almost straight down or up (where +Y is no up)."""
-    return (0.0, 0.0, -float(np.sign(back[1]))) if abs(back[1]) > 0.9999 else (0.0, 1.0, 0.0)
+    ups = np.zeros_like(backs)
+    vertical = np.abs(backs[:, 1]) > 0.9999
+    ups[~vertical, 1] = 1.0
+    ups[vertical, 2] = -np.sign(backs[vertical, 1])
+    return ups
 
 
 def _framed_bounds(scene: Scene) -> np.ndarray:

@@ -6,8 +6,9 @@ frame uses Numba's threads on every core). With a ``dask.distributed`` client th
 scattered to every worker once, before any task, and tasks name it by its key; consecutive
 pieces go to the cluster in batches, one task each (:func:`_batch_sizes`), and a task lost
 with a worker that died is run again on another, its whole batch (Dask retries it up to its
-``allowed-failures``). Files are written here, atomically, as batches complete: tasks return
-the encoded bytes, or tiles that are stitched here, so workers need no shared disk.
+``allowed-failures``). Frames' files are written here, atomically, as batches complete: tasks
+return the encoded bytes, or tiles that are stitched here, so workers need no shared disk
+(:func:`run_tasks` also serves datasets of views, whose workers write their own files).
 """
 
 from __future__ import annotations
@@ -24,6 +25,11 @@ from pixelpath.image import Image
 from pixelpath.scene import Scene
 
 Progress = Callable[[int], None]
+
+# A task's share of what is left: a few tasks a worker keep every worker busy to the end.
+BATCHES_PER_WORKER = 4
+# Batches stay short enough that progress and retries after a lost worker stay fine-grained.
+MOST_TASKS_PER_BATCH = 8
 
 
 def render_frames(
@@ -112,31 +118,31 @@ def run_plan(plan: FramePlan, client: Any = None, progress: Progress | None = No
 
 
 def run_tasks(
-    scene: Scene,
+    shared: Any,
     options: dict[str, Any],
     tasks: list[tuple[Callable, int, int, tuple]],
     add: Callable[[int, int, Any], None],
     client: Any = None,
     progress: Progress | None = None,
     *,
-    most_per_batch: int | None = None,
+    most_per_batch: int = MOST_TASKS_PER_BATCH,
     least_per_batch: int = 1,
 ) -> None:
     """Run ``tasks`` here or on ``client``'s cluster, handing each result to ``add``.
 
-    A task is ``(function, frame, part, args)``: its result is ``function(scene, frame,
-    *args)``, given to ``add(frame, part, result)`` in this process. On a cluster the tasks go
-    in batches of ``least_per_batch`` to ``most_per_batch`` (:func:`_batch_sizes`; default at
-    most :data:`MOST_TASKS_PER_BATCH`); ``options`` (render keywords) warm the workers.
+    A task is ``(function, frame, part, args)``: its result is ``function(shared, frame,
+    *args)``, given to ``add(frame, part, result)`` in this process; ``shared`` (a scene, or
+    anything the functions take) goes to each worker once. On a cluster the tasks go
+    in batches of ``least_per_batch`` to ``most_per_batch`` (:func:`_batch_sizes`);
+    ``options`` (render keywords) warm the workers.
     """
     advance = progress or (lambda steps: None)
     if client is None:
         for function, frame, part, args in tasks:
-            add(frame, part, function(scene, frame, *args))
+            add(frame, part, function(shared, frame, *args))
             advance(1)
         return
-    limits = (most_per_batch or MOST_TASKS_PER_BATCH, least_per_batch)
-    _run_on(client, scene, options, tasks, add, advance, limits)
+    _run_on(client, shared, options, tasks, add, advance, (most_per_batch, least_per_batch))
 
 
 def _tasks(plan: FramePlan) -> list[tuple[Callable, int, int, tuple]]:
@@ -188,22 +194,16 @@ class _Frames:
         write_bytes(self.plan.paths[frame], data)
 
 
-# A task's share of what is left: a few tasks a worker keep every worker busy to the end.
-BATCHES_PER_WORKER = 4
-# Batches stay short enough that progress and retries after a lost worker stay fine-grained.
-MOST_TASKS_PER_BATCH = 8
-
-
 def _run_on(
     client: Any,
-    scene: Scene,
+    shared: Any,
     options: dict[str, Any],
     tasks: list,
     add: Callable[[int, int, Any], None],
     advance: Progress,
     limits: tuple[int, int],
 ) -> None:
-    """Run ``tasks`` on a Dask cluster; the scene goes to each worker once, before them.
+    """Run ``tasks`` on a Dask cluster; ``shared`` goes to each worker once, before them.
 
     Tasks go to the cluster in batches (:func:`_batch_sizes`), each run in turn on one worker:
     the scheduler's cost is per batch, not per frame.
@@ -215,7 +215,7 @@ def _run_on(
     warm_workers(client, options)
     run = uuid.uuid4().hex[:8]
     workers = max(1, len(client.scheduler_info()["workers"]))
-    shared = client.scatter(scene, broadcast=True, hash=False)
+    scattered = client.scatter(shared, broadcast=True, hash=False)
     futures = {}
     try:
         for function, group in _by_function(tasks):
@@ -224,7 +224,7 @@ def _run_on(
             keys = [f"pixelpath-{run}-frame-{frame}-tile-{tile}" for _, frame, tile, _ in first]
             calls = [[(frame, *args) for _, frame, _, args in batch] for batch in batches]
             submitted = client.map(
-                work.in_turn, [function] * len(batches), [shared] * len(batches), calls,
+                work.in_turn, [function] * len(batches), [scattered] * len(batches), calls,
                 key=keys, pure=False,
             )
             futures.update(zip(submitted, batches, strict=True))
@@ -238,7 +238,7 @@ def _run_on(
             future.release()
             advance(len(batch))
     finally:
-        client.cancel([*futures, shared])
+        client.cancel([*futures, scattered])
 
 
 def _by_function(tasks: list) -> list[tuple[Callable, list]]:
@@ -249,7 +249,7 @@ def _by_function(tasks: list) -> list[tuple[Callable, list]]:
     return list(groups.items())
 
 
-def _batches(tasks: list, workers: int, most: int, least: int) -> list[list]:
+def _batches(tasks: list, workers: int, most: int, least: int = 1) -> list[list]:
     """Split ``tasks`` into consecutive batches of :func:`_batch_sizes`."""
     batches, start = [], 0
     for size in _batch_sizes(len(tasks), workers, most, least):
@@ -263,9 +263,9 @@ def _batch_sizes(
 ) -> list[int]:
     """Return batch sizes for ``count`` tasks on ``workers``: large first, small ones last.
 
-    Each batch takes a ``1 / (BATCHES_PER_WORKER * workers)`` share of the tasks left, kept
-    within ``least`` and ``most`` (and what is left), so the scheduler handles few tasks while
-    the last, short ones even out when the workers finish (guided self-scheduling).
+    Each batch takes a ``1 / (BATCHES_PER_WORKER * workers)`` share of the tasks left, from
+    ``least`` to ``most`` (the last takes what is left), so the scheduler handles few tasks
+    while the last, short ones even out when the workers finish (guided self-scheduling).
 
     Examples
     --------
@@ -273,8 +273,8 @@ def _batch_sizes(
     [5, 4, 3, 3, 3, 2, 2, 2, 2, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1]
     >>> sum(_batch_sizes(120, 2)), max(_batch_sizes(120, 2)), _batch_sizes(3, 1)
     (120, 8, [1, 1, 1])
-    >>> _batch_sizes(100, 2, most=32, least=10)
-    [12, 11, 10, 10, 10, 10, 10, 10, 10, 7]
+    >>> len(_batch_sizes(2000, 2, most=64)), len(_batch_sizes(2000, 2, most=64, least=50))
+    (66, 34)
     """
     sizes = []
     while count:

@@ -45,11 +45,20 @@ import numpy as np
 
 from pixelpath.frames import poses as _poses
 from pixelpath.frames.plan import check_tile_size, checked_gamma, render_options
+from pixelpath.frames.poses import ViewCameras
 from pixelpath.image import Image
 from pixelpath.io.aovs import parse_aovs
 from pixelpath.scene import Camera, Scene
 
-__all__ = ["VIEW_AOVS", "ViewOutput", "ViewPlan", "plan_views", "render_views", "run_views"]
+__all__ = [
+    "VIEW_AOVS",
+    "ViewJob",
+    "ViewOutput",
+    "ViewPlan",
+    "plan_views",
+    "render_views",
+    "run_views",
+]
 
 VIEW_AOVS = ("depth", "normal", "mask")
 FOLDERS = {"image": "images", "depth": "depth", "normal": "normals", "mask": "masks"}
@@ -59,11 +68,13 @@ DEFAULT_SIZE = (800, 800)
 # Written first: the request that made the folder's views, so --resume can tell a folder of
 # this dataset's views from one of another's (transforms.json comes only at the end).
 REQUEST_FILE = ".pixelpath-views.json"
-# Views per task on a cluster: each task costs the client and scheduler about 3 ms of CPU, so
-# batches of at least 10 views keep that under 0.3 ms a view (fewer when the views are fewer
-# than 10 a worker, so that every worker gets some); at most 64 keep retries fine-grained.
-LEAST_VIEWS_PER_TASK = 10
+# Views per task on a cluster. Each task costs the client and the scheduler about 2 ms of CPU
+# (workers write the views' files, so nothing comes back but the task's end); the frames'
+# guided self-scheduling takes batches of up to MOST_VIEWS_PER_TASK views, and none smaller
+# than 1/SHARES_PER_WORKER of a worker's share of the views: the last tasks even out the end
+# (to within 5 % of a worker's time) without thousands of single-view tasks on a big cluster.
 MOST_VIEWS_PER_TASK = 64
+SHARES_PER_WORKER = 20
 _VIEW_FILE = re.compile(r"view_\d+\.(png|npy)")
 
 
@@ -153,56 +164,69 @@ class ViewOutput:
         return True
 
 
-@dataclasses.dataclass(frozen=True)
-class ViewPlan:
-    """A checked dataset request: the cameras, the files, and the views still to render.
+@dataclasses.dataclass(frozen=True, eq=False)
+class ViewJob:
+    """Everything a worker needs for any view of a dataset; sent to each worker once.
 
     Attributes
     ----------
     scene : Scene
         The scene (frame 0 of its animation); each view replaces its camera.
-    cameras : tuple of Camera
-        One per view, in order.
-    output : ViewOutput
-        The files' folder, names and formats.
-    todo : tuple of int
-        The views to render (all but those complete on disk, with ``resume``).
+    cameras : ViewCameras
+        The views' cameras.
     options : dict
         Keywords of :func:`pixelpath.render`.
-    request : dict
-        What made the dataset (JSON-serializable); stored in the folder so that ``resume``
-        only ever completes the same dataset.
+    output : ViewOutput
+        The files' folder, names and formats.
     """
 
     scene: Scene
-    cameras: tuple[Camera, ...]
-    output: ViewOutput
-    todo: tuple[int, ...]
+    cameras: ViewCameras
     options: dict[str, Any]
-    request: dict[str, Any]
+    output: ViewOutput
 
-    def poses(self) -> np.ndarray:
-        """Return the (n, 4, 4) camera-to-world matrices of the views."""
-        return np.stack([_poses.camera_to_world(camera) for camera in self.cameras])
+    def render(self, index: int) -> Image:
+        """Return view ``index``, rendered."""
+        from pixelpath.renderer import render
+
+        camera = self.cameras.camera(index)
+        return render(dataclasses.replace(self.scene, camera=camera), **self.options)
+
+
+@dataclasses.dataclass(frozen=True, eq=False)
+class ViewPlan:
+    """A checked dataset request: the job, the views still to render, and what made it.
+
+    Attributes
+    ----------
+    job : ViewJob
+        The scene, cameras, render options and files.
+    todo : tuple of int
+        The views to render (all but those complete on disk, with ``resume``).
+    request : dict
+        What made the dataset (JSON-serializable); stored in the folder so that ``resume``
+        only ever completes the same dataset, and in ``transforms.json``.
+    """
+
+    job: ViewJob
+    todo: tuple[int, ...]
+    request: dict[str, Any]
 
     def transforms(self) -> dict[str, Any]:
         """Return the ``transforms.json`` document (NeRF-synthetic / nerfstudio layout)."""
-        first = self.cameras[0]
-        width, height = first.width, first.height
-        focal = (height / 2.0) / math.tan(math.radians(first.fov) / 2.0)  # square pixels
+        cameras, output = self.job.cameras, self.job.output
+        width, height = cameras.size
+        focal = (height / 2.0) / math.tan(math.radians(cameras.fov) / 2.0)  # square pixels
         frames = []
-        for index, pose in enumerate(self.poses()):
-            frame = {
-                "file_path": self.output.relative(index, "image"),
-                "transform_matrix": pose.tolist(),
-            }
-            for aov in self.output.aovs:
-                frame[JSON_KEYS[aov]] = self.output.relative(index, aov)
+        for index, pose in enumerate(cameras.poses().tolist()):
+            frame = {"file_path": output.relative(index, "image"), "transform_matrix": pose}
+            for aov in output.aovs:
+                frame[JSON_KEYS[aov]] = output.relative(index, aov)
             frames.append(frame)
         document = {
             "camera_model": "PINHOLE",
             "camera_angle_x": 2.0 * math.atan(width / (2.0 * focal)),
-            "camera_angle_y": math.radians(first.fov),
+            "camera_angle_y": math.radians(cameras.fov),
             "fl_x": focal,
             "fl_y": focal,
             "cx": width / 2.0,
@@ -210,7 +234,7 @@ class ViewPlan:
             "w": width,
             "h": height,
         }
-        if "depth" in self.output.aovs:
+        if "depth" in output.aovs:
             document["depth_unit_scale_factor"] = 1.0
         document["frames"] = frames
         document["pixelpath"] = self.request
@@ -314,7 +338,7 @@ def render_views(
         gamma=gamma, resume=resume, overwrite=overwrite, options=options,
     )
     run_views(plan, client, progress)
-    return plan.poses()
+    return plan.job.cameras.poses()
 
 
 def plan_views(
@@ -350,30 +374,35 @@ def plan_views(
     directions = _poses.view_directions(
         n, layout, seed=seed, elevation=elevation, hemisphere=hemisphere
     )
-    cameras = tuple(_poses.view_cameras(scene, directions, size, fov=fov, distance=distance))
+    cameras = _poses.place_cameras(scene, directions, size, fov=fov, distance=distance)
     gamma = checked_gamma(gamma)
     output = ViewOutput(os.fspath(out), len(cameras), chosen, bool(transparent), gamma)
     check_tile_size(((0, 0, *size),), options.get("ssaa", 1), "view", "ask for smaller views")
-    _check_render(scene, cameras[0], options)
+    job = ViewJob(scene, cameras, options, output)
+    _check_render(job)
     request = {
         "source": source,
         "views": len(cameras),
         "layout": layout,
         "seed": seed if layout == "random" else None,
+        "elevation": elevation if layout == "orbit" else None,
+        "hemisphere": hemisphere if layout != "orbit" else None,
+        "distance": float(np.linalg.norm(cameras.eyes[0] - cameras.target)),
+        "near": cameras.near,
+        "far": cameras.far,
         "size": list(size),
         "fov": fov,
         "aovs": list(chosen),
         "transparent": output.transparent,
         "gamma": output.gamma,
         "options": {key: options[key] for key in sorted(options)},
-        "eyes": [camera.eye.tolist() for camera in cameras],
     }
     folder = Path(output.folder)
     _check_folder(folder, request, resume=resume, overwrite=overwrite)
     todo = tuple(range(len(cameras)))
     if resume:
         todo = tuple(i for i in todo if not output.is_complete(i, *size))
-    return ViewPlan(scene, cameras, output, todo, options, request)
+    return ViewPlan(job, todo, request)
 
 
 def run_views(
@@ -396,14 +425,11 @@ def run_views(
     from pixelpath.frames.run import run_tasks
     from pixelpath.io.images import write_bytes
 
-    folder = Path(plan.output.folder)
+    folder = Path(plan.job.output.folder)
     _prepare(folder, plan)
-    tasks = [
-        (work.view_files, index, 0, (plan.cameras[index], plan.options, plan.output))
-        for index in plan.todo
-    ]
+    tasks = [(work.view_files, index, 0, ()) for index in plan.todo]
     run_tasks(
-        plan.scene, plan.options, tasks, _ignore, client, progress,
+        plan.job, plan.job.options, tasks, _ignore, client, progress,
         most_per_batch=MOST_VIEWS_PER_TASK, least_per_batch=_least_per_task(client, len(tasks)),
     )
     path = folder / "transforms.json"
@@ -419,7 +445,7 @@ def _least_per_task(client: Any, views: int) -> int:
     if client is None:
         return 1
     workers = max(1, len(client.scheduler_info()["workers"]))
-    return max(1, min(LEAST_VIEWS_PER_TASK, views // workers))
+    return max(1, min(MOST_VIEWS_PER_TASK, views // (SHARES_PER_WORKER * workers)))
 
 
 def _scene(scene_or_path: Any) -> tuple[str | None, Scene]:
@@ -457,11 +483,12 @@ def _fov(fov: Any, camera: Camera) -> float:
     return float(fov)
 
 
-def _check_render(scene: Scene, camera: Camera, options: dict[str, Any]) -> None:
+def _check_render(job: ViewJob) -> None:
     """Render one pixel of the first view: every render option is checked by render."""
     from pixelpath.renderer import render
 
-    render(dataclasses.replace(scene, camera=camera), region=(0, 0, 1, 1), **options)
+    scene = dataclasses.replace(job.scene, camera=job.cameras.camera(0))
+    render(scene, region=(0, 0, 1, 1), **job.options)
 
 
 def _previous_files(folder: Path) -> list[Path]:
@@ -501,7 +528,7 @@ def _prepare(folder: Path, plan: ViewPlan) -> None:
     from pixelpath.io.images import write_bytes
 
     folder.mkdir(parents=True, exist_ok=True)
-    if len(plan.todo) == len(plan.cameras):  # nothing kept: nothing of an older dataset stays
+    if len(plan.todo) == len(plan.job.cameras):  # nothing kept: nothing of an older dataset stays
         for path in _previous_files(folder):
             path.unlink()
     write_bytes(folder / REQUEST_FILE, json.dumps(plan.request).encode())

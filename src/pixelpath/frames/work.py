@@ -7,17 +7,16 @@ frame rendered on a worker is the frame rendered here, to the byte.
 
 from __future__ import annotations
 
-import dataclasses
 from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from pixelpath.image import Image
-from pixelpath.scene import Camera, Scene
+from pixelpath.scene import Scene
 
 if TYPE_CHECKING:
-    from pixelpath.frames.views import ViewOutput
+    from pixelpath.frames.views import ViewJob
 
 
 def render_frame(
@@ -102,26 +101,23 @@ def warm_up(options: dict[str, Any]) -> None:
     render(scene, **options)
 
 
-def view_files(
-    scene: Scene, index: int, camera: Camera, options: dict[str, Any], output: ViewOutput
-) -> None:
-    """Render view ``index`` of a dataset (``scene`` seen by ``camera``) and write its files.
+def view_files(job: ViewJob, index: int) -> None:
+    """Render view ``index`` of a dataset of views and write its files.
 
     Examples
     --------
     >>> import os, tempfile
     >>> import pixelpath as pp
-    >>> from pixelpath.frames.views import ViewOutput
+    >>> from pixelpath.frames.views import plan_views
     >>> from pixelpath.frames.work import view_files
-    >>> camera = pp.Camera(eye=(0, 0, 5), target=(0, 0, 0), width=8, height=6)
-    >>> output = ViewOutput(tempfile.mkdtemp(), 1, ("mask",))
-    >>> view_files(pp.Scene(camera), 0, camera, {}, output)
-    >>> sorted(os.listdir(output.folder))
-    ['images', 'masks']
+    >>> scene = pp.Scene(pp.Camera(eye=(0, 0, 5), target=(0, 0, 0), width=8, height=6),
+    ...                  [pp.Sphere((0, 0, 0), 1.0)])
+    >>> plan = plan_views(scene, 3, tempfile.mkdtemp(), "mask")
+    >>> view_files(plan.job, 2)
+    >>> sorted(os.listdir(os.path.join(plan.job.output.folder, "masks")))
+    ['view_0002.png']
     """
-    from pixelpath.renderer import render
-
-    output.write(index, render(dataclasses.replace(scene, camera=camera), **options))
+    job.output.write(index, job.render(index))
 
 
 def encode(image: Image, suffix: str, gamma: float | str | None, alpha: bool = False) -> bytes:

@@ -813,12 +813,13 @@ def framing_camera(bounds: Any, size: tuple[int, int] = DEFAULT_SIZE, fov: float
 
 def framing_distance(
     bounds: Any, back: Any, size: tuple[int, int], fov: float, up: Any = (0.0, 1.0, 0.0)
-) -> float:
+) -> Any:
     """Return how far from the box's centre, along ``back``, a camera sees all of ``bounds``.
 
     The smallest distance at which every corner of the box lies within the middle 90 % of a
     ``size`` picture with vertical field of view ``fov`` (degrees), for a camera looking back
-    along the unit vector ``back`` with ``up`` as its up direction.
+    along the unit vector ``back`` with ``up`` as its up direction. ``back`` and ``up`` may be
+    (n, 3) arrays of n cameras: the result is then an (n,) array.
 
     Examples
     --------
@@ -829,18 +830,19 @@ def framing_distance(
     bounds = np.asarray(bounds, dtype=np.float64)
     back = np.asarray(back, dtype=np.float64)
     right = np.cross(np.asarray(up, dtype=np.float64), back)
-    right /= np.linalg.norm(right)
+    right /= np.linalg.norm(right, axis=-1, keepdims=True)
     camera_up = np.cross(back, right)
     width, height = size
     tan_v = math.tan(math.radians(fov) / 2.0) * FILL
     tan_h = tan_v * width / height
     corners = np.array(np.meshgrid(*bounds.T, indexing="ij")).reshape(3, -1).T
-    offset = corners - bounds.mean(axis=0)
-    x, y, z = offset @ right, offset @ camera_up, offset @ back
+    offset = corners - bounds.mean(axis=0)  # (8, 3), against axes (3,) or (n, 3)
+    x, y, z = (np.moveaxis(offset @ axis.T, 0, -1) for axis in (right, camera_up, back))
     radius = max(float(np.linalg.norm(bounds[1] - bounds[0])) / 2.0, 1e-9)
     # a corner at (x, y, z) in the camera's frame is inside when |x| <= tan_h (d - z), ...
-    distance = float(np.max(np.maximum(z + np.abs(x) / tan_h, z + np.abs(y) / tan_v)))
-    return max(distance, radius * 1.01)
+    distance = np.max(np.maximum(z + np.abs(x) / tan_h, z + np.abs(y) / tan_v), axis=-1)
+    distance = np.maximum(distance, radius * 1.01)
+    return float(distance) if distance.ndim == 0 else distance
 
 
 def depth_range(distance: float, radius: float) -> tuple[float, float]:

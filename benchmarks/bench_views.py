@@ -1,0 +1,255 @@
+"""Datasets of views: views/s of the Duck dataset beside pyrender, and Dask's cost per view.
+
+1. ``pixelpath views``' work, 100 views of the glTF Duck (tests/data/models/Duck.glb) at
+   800×800 with depth, normals and masks (PNG pictures, float32 ``.npy`` depths, PNG normals
+   and masks, ``transforms.json``), each run in a fresh folder, in ``--rounds`` rounds whose
+   order rotates (the machine's speed drifts):
+
+   - serially in this process, Numba's threads on every core, and on one thread;
+   - on local Dask clusters of 1 and of 2 worker processes (one Numba thread each; started and
+     warmed before the clock), whose workers write the files.
+
+2. The anchor: pyrender (OpenGL through EGL, Mesa's llvmpipe on a machine without a GPU)
+   rendering the same 100 poses, read from the dataset's ``transforms.json``, with colour and
+   depth read back and the same files written (PNG picture, ``.npy`` depth, PNG mask; pyrender
+   has no normal output), in a child process per thread setting (``LP_NUM_THREADS``: one, and
+   every core), beside pixelpath writing the same three files. Skipped, with a message, when
+   pyrender or EGL is missing (``pip install pyrender``; EGL comes with Mesa: ``libegl1``).
+
+3. Scaling past one machine: the CPU time the client and the scheduler spend per view (the
+   process running both, a local cluster's scheduler being in the client's process), for
+   2,000 tiny views (16×16, nothing else written) on 2 workers, beside the same number of tiny
+   frames through ``render_frames`` (at most 8 frames a task, each file written here).
+
+Usage::
+
+    python benchmarks/bench_views.py [--views 100] [--size 800] [--rounds 3] [--tiny 2000]
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+DUCK = Path(__file__).resolve().parents[1] / "tests" / "data" / "models" / "Duck.glb"
+AOVS = ("depth", "normal", "mask")
+
+
+def serial(folder: Path, views: int, size: int, aovs=AOVS, threads: int | None = None) -> float:
+    import numba
+
+    import pixelpath as pp
+
+    before = numba.get_num_threads()
+    if threads is not None:
+        numba.set_num_threads(threads)
+    try:
+        pp.render_views(DUCK, 1, folder / "warm", aovs, size=(size, size))  # kernels loaded
+        start = time.perf_counter()
+        pp.render_views(DUCK, views, folder / "views", aovs, size=(size, size))
+        return time.perf_counter() - start
+    finally:
+        numba.set_num_threads(before)
+
+
+def on_cluster(folder: Path, views: int, size: int, workers: int) -> float:
+    import pixelpath as pp
+    from pixelpath.frames.cluster import local_client, warm_workers
+
+    with local_client(workers, numba_threads=1) as client:
+        warm_workers(client, {})
+        pp.render_views(DUCK, 1, folder / "warm", AOVS, client=client, size=(size, size))
+        start = time.perf_counter()
+        pp.render_views(DUCK, views, folder / "views", AOVS, client=client, size=(size, size))
+        return time.perf_counter() - start
+
+
+def dataset_bytes(folder: Path) -> dict[str, bytes]:
+    return {
+        path.relative_to(folder).as_posix(): path.read_bytes()
+        for path in sorted(folder.rglob("*"))
+        if path.is_file()
+    }
+
+
+def timed(views: int, size: int, rounds: int) -> tuple[dict, bool]:
+    """Return ({run: [seconds per round]}, whether the 2-worker files equal the serial ones)."""
+    names = ("serial", 1, 2)
+    seconds: dict = {name: [] for name in names}
+    same = True
+    for turn in range(rounds):
+        order = names[turn % 3 :] + names[: turn % 3]
+        with tempfile.TemporaryDirectory() as root:
+            for name in order:
+                folder = Path(root) / str(name)
+                if name == "serial":
+                    seconds[name].append(serial(folder, views, size))
+                else:
+                    seconds[name].append(on_cluster(folder, views, size, name))
+            same &= dataset_bytes(Path(root) / "serial" / "views") == dataset_bytes(
+                Path(root) / "2" / "views"
+            )
+        line = "  ".join(f"{name}: {views / seconds[name][-1]:5.1f}" for name in order)
+        print(f"round {turn + 1}, views/s in the order run: {line}")
+    return seconds, same
+
+
+# --- pyrender, in a child process: llvmpipe reads LP_NUM_THREADS when it starts ----------------
+
+
+def pyrender_views(dataset: Path, out: Path) -> float:
+    """Render the dataset's poses with pyrender and write picture, depth and mask; seconds."""
+    import numpy as np
+    import pyrender
+    import trimesh
+    from PIL import Image as PILImage
+
+    document = json.loads((dataset / "transforms.json").read_text())
+    width, height = document["w"], document["h"]
+    scene = pyrender.Scene.from_trimesh_scene(trimesh.load(DUCK), ambient_light=(0.2,) * 3)
+    for direction, intensity in (((-0.6, 0.7, 0.8), 2.3), ((0.8, -0.1, 0.6), 0.9)):
+        pose = np.eye(4)
+        back = np.array(direction) / np.linalg.norm(direction)
+        right = np.cross((0, 1, 0), back)
+        right /= np.linalg.norm(right)
+        pose[:3, :3] = np.stack([right, np.cross(back, right), back], axis=1)
+        scene.add(pyrender.DirectionalLight(intensity=intensity), pose=pose)
+    request = document["pixelpath"]
+    camera = pyrender.PerspectiveCamera(
+        yfov=document["camera_angle_y"], aspectRatio=width / height, znear=request["near"],
+        zfar=request["far"],
+    )
+    node = scene.add(camera, pose=np.eye(4))
+    renderer = pyrender.OffscreenRenderer(width, height)
+    renderer.render(scene)  # the context and shaders, before the clock
+    out.mkdir(parents=True, exist_ok=True)
+    start = time.perf_counter()
+    for index, frame in enumerate(document["frames"]):
+        scene.set_pose(node, np.array(frame["transform_matrix"]))
+        color, depth = renderer.render(scene)
+        PILImage.fromarray(color).save(out / f"image_{index:04d}.png")
+        np.save(out / f"depth_{index:04d}.npy", depth.astype(np.float32))
+        PILImage.fromarray(np.where(depth > 0, 255, 0).astype(np.uint8)).save(
+            out / f"mask_{index:04d}.png"
+        )
+    seconds = time.perf_counter() - start
+    renderer.delete()
+    return seconds
+
+
+def pyrender_in_child(dataset: Path, threads: int | None) -> float | str:
+    """Seconds pyrender took in a child process with ``threads`` llvmpipe threads, or why not."""
+    env = dict(os.environ, PYOPENGL_PLATFORM="egl")
+    if threads is not None:
+        env["LP_NUM_THREADS"] = str(threads)
+    with tempfile.TemporaryDirectory() as out:
+        done = subprocess.run(
+            [sys.executable, __file__, "--pyrender-child", str(dataset), out],
+            env=env, capture_output=True, text=True, check=False,
+        )
+    if done.returncode != 0:
+        last = (done.stderr.strip().splitlines() or ["no output"])[-1]
+        return f"pyrender did not run: {last}"
+    return float(done.stdout.strip().splitlines()[-1])
+
+
+def like_for_like(views: int, size: int) -> None:
+    """pixelpath and pyrender writing the same files for the same poses, per core and all."""
+    import importlib.util
+
+    import numba
+
+    if importlib.util.find_spec("pyrender") is None:
+        print("pyrender: skipped, not installed (pip install pyrender; needs EGL: libegl1)")
+        return
+    cores = numba.get_num_threads()
+    with tempfile.TemporaryDirectory() as root:
+        ours = {
+            1: serial(Path(root) / "one", views, size, ("depth", "mask"), threads=1),
+            cores: serial(Path(root) / "all", views, size, ("depth", "mask")),
+        }
+        dataset = Path(root) / "all" / "views"
+        theirs = {1: pyrender_in_child(dataset, 1), cores: pyrender_in_child(dataset, None)}
+    print(f"{views} views {size}x{size}, picture + depth + mask files, the same poses:")
+    for threads in (1, cores):
+        label = "1 thread each" if threads == 1 else f"all {cores} cores each"
+        anchor = theirs[threads]
+        if isinstance(anchor, str):
+            print(f"  {label}: pixelpath {views / ours[threads]:5.1f} views/s; {anchor}")
+            continue
+        print(
+            f"  {label}: pixelpath {views / ours[threads]:5.1f} views/s, pyrender (llvmpipe) "
+            f"{views / anchor:5.1f} views/s: pixelpath takes {ours[threads] / anchor:.2f}x "
+            f"pyrender's time"
+        )
+
+
+# --- the client's and scheduler's CPU per view ---------------------------------------------
+
+
+def scheduler_cost(tiny: int) -> tuple[float, float]:
+    """Return (ms of client+scheduler CPU per view, per frame) for ``tiny`` 16×16 renders."""
+    import pixelpath as pp
+    from pixelpath.frames.cluster import local_client, warm_workers
+    from pixelpath.scene import Animation, Turntable
+
+    scene = pp.Scene(
+        pp.Camera(eye=(0, 1, 5), target=(0, 0, 0), width=16, height=16),
+        [pp.Box((-1, -1, -1), (1, 1, 1))],
+        [pp.PointLight((2, 3, 4))],
+    )
+    with local_client(2, numba_threads=1) as client, tempfile.TemporaryDirectory() as root:
+        warm_workers(client, {})
+        pp.render_views(scene, 4, Path(root) / "warm", client=client)
+        cpu = time.process_time()
+        pp.render_views(scene, tiny, Path(root) / "views", client=client)
+        per_view = (time.process_time() - cpu) / tiny * 1e3
+        animated = pp.Scene(scene.camera, scene.objects, scene.lights,
+                            animation=Animation(tiny, turntable=Turntable()))
+        cpu = time.process_time()
+        pp.render_frames(animated, range(tiny), client, out=Path(root) / "f_{frame:05d}.png")
+        per_frame = (time.process_time() - cpu) / tiny * 1e3
+    return per_view, per_frame
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--views", type=int, default=100)
+    parser.add_argument("--size", type=int, default=800)
+    parser.add_argument("--rounds", type=int, default=3)
+    parser.add_argument("--tiny", type=int, default=2000)
+    parser.add_argument("--pyrender-child", nargs=2, metavar=("DATASET", "OUT"),
+                        help=argparse.SUPPRESS)
+    args = parser.parse_args()
+    if args.pyrender_child:
+        print(pyrender_views(Path(args.pyrender_child[0]), Path(args.pyrender_child[1])))
+        return
+    cores = len(os.sched_getaffinity(0))
+    print(f"the Duck, {args.views} views {args.size}x{args.size} with depth, normals and masks, "
+          f"{cores} cores")
+    seconds, same = timed(args.views, args.size, args.rounds)
+    medians = {name: statistics.median(times) for name, times in seconds.items()}
+    labels = {"serial": "serial, Numba threads on all cores", 1: "Dask, 1 worker, 1 thread",
+              2: "Dask, 2 workers, 1 thread each"}
+    for name, label in labels.items():
+        print(f"  {label:38} {args.views / medians[name]:6.1f} views/s "
+              f"({medians[name]:5.1f} s for {args.views})")
+    ratios = sorted(one / two for one, two in zip(seconds[1], seconds[2], strict=True))
+    print(f"  2 workers / 1 worker: {statistics.median(ratios):.2f}x median "
+          f"({', '.join(f'{r:.2f}' for r in ratios)}); 2-worker files byte-identical to the "
+          f"serial ones: {same}")
+    like_for_like(args.views, args.size)
+    per_view, per_frame = scheduler_cost(args.tiny)
+    print(f"client + scheduler CPU, {args.tiny} tiny renders on 2 workers: {per_view:.3f} ms a "
+          f"view (views, workers writing), {per_frame:.3f} ms a frame (render_frames)")
+
+
+if __name__ == "__main__":  # worker processes re-import this file: keep the work behind main
+    main()
