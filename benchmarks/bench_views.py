@@ -13,7 +13,9 @@
    rendering the same 100 poses, read from the dataset's ``transforms.json``, with colour and
    depth read back and the same files written (PNG picture, ``.npy`` depth, PNG mask; pyrender
    has no normal output), in a child process per thread setting (``LP_NUM_THREADS``: one, and
-   every core), beside pixelpath writing the same three files. Skipped, with a message, when
+   every core), beside pixelpath writing the same three files: in this process on one thread,
+   and on every core as ``pixelpath views`` runs that many views (a local cluster, a worker a
+   core). Skipped, with a message, when
    pyrender or EGL is missing (``pip install pyrender``; EGL comes with Mesa: ``libegl1``).
 
 3. Scaling past one machine: the CPU time the client and the scheduler spend per view (the
@@ -59,15 +61,15 @@ def serial(folder: Path, views: int, size: int, aovs=AOVS, threads: int | None =
         numba.set_num_threads(before)
 
 
-def on_cluster(folder: Path, views: int, size: int, workers: int) -> float:
+def on_cluster(folder: Path, views: int, size: int, workers: int, aovs=AOVS) -> float:
     import pixelpath as pp
     from pixelpath.frames.cluster import local_client, warm_workers
 
     with local_client(workers, numba_threads=1) as client:
         warm_workers(client, {})
-        pp.render_views(DUCK, 1, folder / "warm", AOVS, client=client, size=(size, size))
+        pp.render_views(DUCK, 1, folder / "warm", aovs, client=client, size=(size, size))
         start = time.perf_counter()
-        pp.render_views(DUCK, views, folder / "views", AOVS, client=client, size=(size, size))
+        pp.render_views(DUCK, views, folder / "views", aovs, client=client, size=(size, size))
         return time.perf_counter() - start
 
 
@@ -170,10 +172,11 @@ def like_for_like(views: int, size: int) -> None:
         print("pyrender: skipped, not installed (pip install pyrender; needs EGL: libegl1)")
         return
     cores = numba.get_num_threads()
+    aovs = ("depth", "mask")
     with tempfile.TemporaryDirectory() as root:
-        ours = {
-            1: serial(Path(root) / "one", views, size, ("depth", "mask"), threads=1),
-            cores: serial(Path(root) / "all", views, size, ("depth", "mask")),
+        ours = {  # on all cores, as `pixelpath views` runs 100 views: a worker per core
+            1: serial(Path(root) / "one", views, size, aovs, threads=1),
+            cores: on_cluster(Path(root) / "all", views, size, cores, aovs),
         }
         dataset = Path(root) / "all" / "views"
         theirs = {1: pyrender_in_child(dataset, 1), cores: pyrender_in_child(dataset, None)}
