@@ -18,7 +18,14 @@
    core). Skipped, with a message, when
    pyrender or EGL is missing (``pip install pyrender``; EGL comes with Mesa: ``libegl1``).
 
-3. Scaling past one machine: the CPU time the client and the scheduler spend per view (the
+3. Blender, where a Python with ``bpy`` is at hand (``--blender-python``; ``pip install bpy``
+   wants the Python version of its Blender release, 3.11 for 4.2): the first
+   ``--blender-views`` poses rendered one after another in a child process, pictures only
+   (PNG), with Cycles at its cheapest (one sample a pixel on the CPU, no denoising) and with
+   the Workbench engine, beside pixelpath writing the whole dataset in one process.
+   EEVEE is left out: without a GPU it took a minute a picture here.
+
+4. Scaling past one machine: the CPU time the client and the scheduler spend per view (the
    process running both, a local cluster's scheduler being in the client's process), for
    2,000 tiny views (16×16, nothing else written) on 2 workers, beside the same number of tiny
    frames through ``render_frames`` (at most 8 frames a task, each file written here).
@@ -26,6 +33,7 @@
 Usage::
 
     python benchmarks/bench_views.py [--views 100] [--size 800] [--rounds 3] [--tiny 2000]
+        [--blender-python /path/to/python-with-bpy] [--blender-views 20]
 """
 
 from __future__ import annotations
@@ -194,6 +202,85 @@ def like_for_like(views: int, size: int) -> None:
         )
 
 
+# --- Blender (bpy), in a child process of an interpreter that has it -------------------------
+
+BLENDER_ENGINES = ("CYCLES", "BLENDER_WORKBENCH")
+
+
+def blender_views(dataset: Path, out: Path, engine: str, views: int) -> float:
+    """Render the first ``views`` poses with Blender's ``engine``, pictures only; seconds."""
+    import bpy
+    import mathutils
+
+    document = json.loads((dataset / "transforms.json").read_text())
+    request = document["pixelpath"]
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    bpy.ops.import_scene.gltf(filepath=str(DUCK))
+    scene = bpy.context.scene
+    camera = bpy.data.objects.new("camera", bpy.data.cameras.new("camera"))
+    camera.data.sensor_fit = "VERTICAL"
+    camera.data.angle_y = document["camera_angle_y"]
+    camera.data.clip_start, camera.data.clip_end = request["near"], request["far"]
+    scene.collection.objects.link(camera)
+    scene.camera = camera
+    sun = bpy.data.objects.new("sun", bpy.data.lights.new("sun", "SUN"))
+    scene.collection.objects.link(sun)
+    scene.render.resolution_x, scene.render.resolution_y = document["w"], document["h"]
+    scene.render.engine = engine
+    if engine == "CYCLES":  # its cheapest picture: one sample a pixel, no denoising
+        scene.cycles.device, scene.cycles.samples, scene.cycles.use_denoising = "CPU", 1, False
+    # glTF's +Y up is Blender's +Z up: (x, y, z) -> (x, -z, y); camera axes are the same
+    y_up_to_z_up = mathutils.Matrix(((1, 0, 0, 0), (0, 0, -1, 0), (0, 1, 0, 0), (0, 0, 0, 1)))
+    out.mkdir(parents=True, exist_ok=True)
+    frames = document["frames"][:views]
+    camera.matrix_world = y_up_to_z_up @ mathutils.Matrix(frames[0]["transform_matrix"])
+    scene.render.filepath = str(out / "warm.png")
+    bpy.ops.render.render(write_still=True)  # shaders and the scene's BVH, before the clock
+    start = time.perf_counter()
+    for index, frame in enumerate(frames):
+        camera.matrix_world = y_up_to_z_up @ mathutils.Matrix(frame["transform_matrix"])
+        scene.render.filepath = str(out / f"view_{index:04d}.png")
+        bpy.ops.render.render(write_still=True)
+    return time.perf_counter() - start
+
+
+def blender_in_child(python: str, dataset: Path, engine: str, views: int) -> float | str:
+    """Seconds Blender took in a child process of ``python``, or why it did not run."""
+    with tempfile.TemporaryDirectory() as out:
+        done = subprocess.run(
+            [python, __file__, "--blender-child", str(dataset), out, engine, str(views)],
+            capture_output=True, text=True, check=False,
+        )
+    if done.returncode != 0:
+        last = (done.stderr.strip().splitlines() or ["no output"])[-1]
+        return f"Blender did not run: {last}"
+    return float(done.stdout.strip().splitlines()[-1])
+
+
+def against_blender(python: str | None, views: int, size: int) -> None:
+    """pixelpath's whole dataset beside Blender's pictures alone, one view after another."""
+    import importlib.util
+
+    if python is None:
+        if importlib.util.find_spec("bpy") is None:
+            print("Blender: skipped, no bpy here (pip install bpy in a Python it supports, "
+                  "then --blender-python PATH)")
+            return
+        python = sys.executable
+    with tempfile.TemporaryDirectory() as root:
+        seconds = serial(Path(root), views, size) / views
+        dataset = Path(root) / "views"
+        print(f"{views} views {size}x{size}, one process each: pixelpath {seconds * 1e3:.0f} ms "
+              f"a view (picture, depth, normals, mask)")
+        for engine in BLENDER_ENGINES:
+            theirs = blender_in_child(python, dataset, engine, views)
+            if isinstance(theirs, str):
+                print(f"  {engine}: {theirs}")
+                continue
+            print(f"  Blender {engine} (the picture alone): {theirs / views * 1e3:.0f} ms a view: "
+                  f"pixelpath takes {seconds * views / theirs:.2f}x Blender's time")
+
+
 # --- the client's and scheduler's CPU per view ---------------------------------------------
 
 
@@ -228,11 +315,18 @@ def main() -> None:
     parser.add_argument("--size", type=int, default=800)
     parser.add_argument("--rounds", type=int, default=3)
     parser.add_argument("--tiny", type=int, default=2000)
+    parser.add_argument("--blender-views", type=int, default=20)
+    parser.add_argument("--blender-python", help="a Python interpreter that has bpy")
     parser.add_argument("--pyrender-child", nargs=2, metavar=("DATASET", "OUT"),
                         help=argparse.SUPPRESS)
+    parser.add_argument("--blender-child", nargs=4, help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.pyrender_child:
         print(pyrender_views(Path(args.pyrender_child[0]), Path(args.pyrender_child[1])))
+        return
+    if args.blender_child:
+        dataset, out, engine, views = args.blender_child
+        print(blender_views(Path(dataset), Path(out), engine, int(views)))
         return
     cores = len(os.sched_getaffinity(0))
     print(f"the Duck, {args.views} views {args.size}x{args.size} with depth, normals and masks, "
@@ -249,6 +343,7 @@ def main() -> None:
           f"({', '.join(f'{r:.2f}' for r in ratios)}); 2-worker files byte-identical to the "
           f"serial ones: {same}")
     like_for_like(args.views, args.size)
+    against_blender(args.blender_python, args.blender_views, args.size)
     per_view, per_frame = scheduler_cost(args.tiny)
     print(f"client + scheduler CPU, {args.tiny} tiny renders on 2 workers: {per_view:.3f} ms a "
           f"view (views, workers writing), {per_frame:.3f} ms a frame (render_frames)")
