@@ -296,6 +296,7 @@ materials = st.builds(
     Material, color=colours, ka=unit, kd=unit, ks=unit, shininess=st.floats(0, 200),
     reflectivity=unit, transparency=unit, ior=st.floats(0.5, 3),
     name=st.none() | st.sampled_from(["red", "glass"]),
+    alpha=unit, alpha_cutoff=st.none() | st.floats(0, 2),
 )  # fmt: skip
 
 

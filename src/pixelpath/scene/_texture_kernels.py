@@ -9,12 +9,20 @@ A scene's textures are packed by :func:`pixelpath.scene.texture.surface_tables` 
 * ``textures`` (M, 4) intp: first level, number of levels, filter and wrap of each texture;
 * ``objects`` (O, 2) intp: per scene object, its texture (-1 for none, or when it has no
   texture coordinates) and whether it has vertex colours;
-* ``decode`` (256,) float64: the linear value of each 8-bit sRGB code.
+* ``decode`` (256,) float64: the linear value of each 8-bit sRGB code;
+* ``alpha`` (O, 2) float64: per scene object, the material's ``alpha`` and the cutoff of its
+  alpha test, 0 for none (an opaque material, or one whose alpha never falls below its
+  cutoff: :func:`pixelpath.scene.texture.surface_tables` leaves those untested).
 
 Texel (col, row) of a level w × h has its centre at ``u = (col + 0.5) / w``,
 ``v = 1 - (row + 0.5) / h`` (v up, row 0 at the top of the picture). ``footprint`` is the
 length, in base-level texels, that one pixel covers; trilinear filtering picks the two levels
 around ``log2(footprint)`` and blends them (the classic mip-map level of detail).
+
+The alpha test (:func:`cut_away`) reads the texture at the base level whatever the footprint
+(:func:`surface_alpha`): a hole's outline stays where the texels put it at any distance,
+rather than closing up as coarser levels average alpha away, and the rasterizer and the ray
+tracer, which measure footprints differently, cut the same holes.
 """
 
 from __future__ import annotations
@@ -30,6 +38,8 @@ NEAREST, BILINEAR, TRILINEAR = 0, 1, 2
 REPEAT, CLAMP, MIRROR = 0, 1, 2
 # Columns of SurfaceTables.objects.
 TEXTURE, HAS_COLORS = 0, 1
+# Columns of SurfaceTables.alpha.
+BASE_ALPHA, CUTOFF = 0, 1
 
 
 class SurfaceTables(NamedTuple):
@@ -40,6 +50,7 @@ class SurfaceTables(NamedTuple):
     textures: np.ndarray
     objects: np.ndarray
     decode: np.ndarray
+    alpha: np.ndarray
 
 
 @njit(inline="always")
@@ -175,11 +186,12 @@ def surface_color(tables, materials, obj, uv, colors, a, b, c, w0, w1, w2, dudx,
     """Surface colour (r, g, b, alpha) at barycentric weights (w0, w1, w2) of vertices a, b, c.
 
     The colour of ``materials[obj]`` × the interpolated vertex colour × the texture at the
-    interpolated texture coordinates. (dudx, dvdx) and (dudy, dvdy) are how far (u, v) moves
-    over one pixel across and down the image: the longer, in texels, is the footprint that
-    sets the mip level.
+    interpolated texture coordinates (the alpha likewise, from the material's ``alpha``).
+    (dudx, dvdx) and (dudy, dvdy) are how far (u, v) moves over one pixel across and down the
+    image: the longer, in texels, is the footprint that sets the mip level.
     """
-    r, g, bl, alpha = materials[obj, 0], materials[obj, 1], materials[obj, 2], 1.0
+    r, g, bl = materials[obj, 0], materials[obj, 1], materials[obj, 2]
+    alpha = tables.alpha[obj, BASE_ALPHA]
     if tables.objects[obj, HAS_COLORS]:
         r *= w0 * colors[a, 0] + w1 * colors[b, 0] + w2 * colors[c, 0]
         g *= w0 * colors[a, 1] + w1 * colors[b, 1] + w2 * colors[c, 1]
@@ -198,8 +210,40 @@ def surface_color(tables, materials, obj, uv, colors, a, b, c, w0, w1, w2, dudx,
     return r, g, bl, alpha
 
 
+@njit(inline="always")
+def surface_alpha(tables, obj, uv, colors, a, b, c, w0, w1, w2):
+    """Alpha of object ``obj``'s surface at barycentric weights (w0, w1, w2) of vertices a, b, c.
+
+    The material's ``alpha`` × the interpolated vertex colours' alpha × the texture's alpha
+    at the interpolated texture coordinates, read on the base level (a footprint of 0: the
+    nearest texel, or a bilinear blend of four), as the alpha test reads it.
+    """
+    alpha = tables.alpha[obj, BASE_ALPHA]
+    if tables.objects[obj, HAS_COLORS]:
+        alpha *= w0 * colors[a, 3] + w1 * colors[b, 3] + w2 * colors[c, 3]
+    texture = tables.objects[obj, TEXTURE]
+    if texture >= 0:
+        u = w0 * uv[a, 0] + w1 * uv[b, 0] + w2 * uv[c, 0]
+        v = w0 * uv[a, 1] + w1 * uv[b, 1] + w2 * uv[c, 1]
+        alpha *= sample(tables, texture, u, v, 0.0)[3]
+    return alpha
+
+
+@njit(inline="always")
+def cut_away(tables, obj, uv, colors, a, b, c, w0, w1, w2):
+    """Whether the alpha test cuts object ``obj``'s surface away at weights (w0, w1, w2).
+
+    True where :func:`surface_alpha` is below the object's cutoff (never for an object
+    that is not alpha-tested: its cutoff is 0).
+    """
+    return surface_alpha(tables, obj, uv, colors, a, b, c, w0, w1, w2) < tables.alpha[obj, CUTOFF]
+
+
 def tiny_tables() -> SurfaceTables:
-    """Return a 2 x 2 texture with two levels on object 0, for the kernels' warm-ups."""
+    """Return a 2 x 2 texture with two levels on object 0, for the kernels' warm-ups.
+
+    Object 0 is alpha-tested (cutoff 0.5), so warm-ups that draw it compile the alpha test.
+    """
     from pixelpath.scene.texture import decode_table
 
     texels = np.full((5, 4), 255, dtype=np.uint8)
@@ -209,4 +253,5 @@ def tiny_tables() -> SurfaceTables:
         np.array([[0, 2, TRILINEAR, REPEAT]], dtype=np.intp),
         np.array([[0, 1]], dtype=np.intp),
         decode_table(),  # the real (read-only) table: Numba types read-only arrays apart
+        np.array([[1.0, 0.5]]),
     )

@@ -545,10 +545,8 @@ def scene_to_dict(scene: Scene, base_dir: str | Path | None = None) -> dict[str,
         "lights": [_light_dict(light) for light in scene.lights],
     }
     if materials:
-        data["materials"] = {
-            name: {key: _plain(getattr(material, key)) for key in MATERIAL}
-            for name, material in materials.items()
-        }
+        data["materials"] = {name: _set_fields(material, MATERIAL)
+                             for name, material in materials.items()}
     data["objects"] = objects
     if scene.animation is not None:
         data["animation"] = _animation_dict(scene.animation)

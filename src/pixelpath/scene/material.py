@@ -3,6 +3,13 @@
 ``I = ka·Ia·C + Σ_lights [kd·IL·C·max(0, N·L) + ks·IL·max(0, R·V)^n]`` per colour channel, where C
 is the material's ``color``: the object colour tints ambient and diffuse light, while highlights
 take the light's colour. ``reflectivity``, ``transparency`` and ``ior`` are used by the ray tracer.
+
+``alpha_cutoff`` makes a material *alpha-tested* (glTF's ``alphaMode`` MASK): the surface's
+alpha, ``alpha`` × the vertex colours' alpha × the texture's alpha, is compared with the cutoff
+at every point drawn, and where it is below the surface is cut away, as if it were not there:
+every raster method shows what lies behind, and the ray tracer's eye, shadow, reflected and
+refracted rays pass through. There is no partial coverage (no blending): a point is kept
+whole or cut.
 """
 
 from __future__ import annotations
@@ -48,12 +55,30 @@ class Material(Record):
     double_sided : bool
         Draw the faces seen from behind too (lit with the normal turned to the viewer), even
         when back faces are culled (glTF's ``doubleSided``).
+    alpha : float
+        Alpha of the material colour in [0, 1] (glTF's ``baseColorFactor[3]``): multiplies
+        the texture's and the vertex colours' alpha. Only the alpha test reads it.
+    alpha_cutoff : float, optional
+        None (the default): the surface is opaque and every alpha is ignored (glTF's OPAQUE).
+        A number >= 0: points whose alpha is below it are cut away (glTF's MASK with its
+        ``alphaCutoff``, 0.5 by default there); 0 cuts nothing, above 1 everything. The
+        test reads the texture's base level with the material's filter (trilinear filtering
+        reads it bilinearly), so a cut-out's outline does not move with distance, and it is
+        the same in every method and in the ray tracer.
 
     Examples
     --------
     >>> from pixelpath.scene import Material
     >>> Material(color=(1, 0, 0), kd=0.5).packed().tolist()
     [1.0, 0.0, 0.0, 0.1, 0.5, 0.3, 32.0, 0.0]
+
+    A leaf cut out of a square by its texture's alpha (transparent texels drawn as holes):
+
+    >>> import numpy as np
+    >>> leaf = np.zeros((2, 2, 4))
+    >>> leaf[0, 0] = (0.2, 0.6, 0.1, 1.0)  # one opaque green texel, three transparent ones
+    >>> Material(texture=leaf, alpha_cutoff=0.5).alpha_cutoff
+    0.5
     """
 
     color: Any = (1.0, 1.0, 1.0)
@@ -69,6 +94,8 @@ class Material(Record):
     texture_filter: str = "trilinear"
     texture_wrap: str = "repeat"
     double_sided: bool = False
+    alpha: float = 1.0
+    alpha_cutoff: float | None = None
 
     def __post_init__(self) -> None:
         self._set(
@@ -85,6 +112,8 @@ class Material(Record):
             texture_filter=_choice(self.texture_filter, "texture_filter", FILTERS),
             texture_wrap=_choice(self.texture_wrap, "texture_wrap", WRAPS),
             double_sided=_flag(self.double_sided, "double_sided"),
+            alpha=_fraction(self.alpha, "alpha"),
+            alpha_cutoff=_cutoff(self.alpha_cutoff),
         )
 
     def packed(self) -> np.ndarray:
@@ -111,6 +140,12 @@ def _fraction(value: Any, name: str) -> float:
     if result > 1.0:
         raise ValueError(f"{name} must lie in [0, 1], got {result}")
     return result
+
+
+def _cutoff(value: Any) -> float | None:
+    if value is None:
+        return None
+    return v.real(value, "alpha_cutoff", minimum=0.0)
 
 
 def _texture(value: Any) -> Texture | None:

@@ -158,6 +158,12 @@ MATERIAL = {
     "reflectivity": Key("number", "mirror reflection fraction in [0, 1] (ray tracer)"),
     "transparency": Key("number", "transmitted fraction in [0, 1] (ray tracer)"),
     "ior": Key("number", "index of refraction, > 0 (ray tracer)"),
+    "alpha": Key("number", "alpha of the colour in [0, 1], for the alpha test (alpha_cutoff)"),
+    "alpha_cutoff": Key(
+        "number",
+        "alpha test: where alpha x vertex-colour alpha x texture alpha is below it, the "
+        "surface is cut away (glTF alphaMode MASK); absent: opaque",
+    ),
 }
 
 TRANSFORM = {

@@ -149,6 +149,22 @@ class Texture:
         """
         return _decoded(self.levels[level])
 
+    @functools.cached_property
+    def lowest_alpha(self) -> float:
+        """The smallest alpha of the base level's texels, in [0, 1] (1 for an opaque picture).
+
+        No filtered lookup can go below it: the alpha test skips a material whose alpha
+        never falls under its cutoff.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from pixelpath.scene import Texture
+        >>> Texture(np.array([[[0, 0, 0, 255], [0, 0, 0, 51]]], dtype=np.uint8)).lowest_alpha
+        0.2
+        """
+        return int(self._base[..., 3].min()) / 255.0
+
     def __eq__(self, other: object) -> bool:
         if not isinstance(other, Texture):
             return NotImplemented
@@ -290,7 +306,10 @@ def surface_tables(objects: Any):
     -------
     SurfaceTables
         See :mod:`pixelpath.scene._texture_kernels`; a texture's levels are packed once
-        however many objects use it.
+        however many objects use it. An object's alpha cutoff is kept only where its alpha
+        can fall below it (the material's ``alpha`` × the lowest vertex-colour alpha × the
+        texture's :attr:`Texture.lowest_alpha`): an alpha-tested material whose texture and
+        colours are opaque costs no test.
 
     Examples
     --------
@@ -299,8 +318,8 @@ def surface_tables(objects: Any):
     >>> quad = Mesh([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], [[0, 1, 2, 3]],
     ...             Material(texture=np.ones((4, 4, 3))), uv=[[0, 0], [1, 0], [1, 1], [0, 1]])
     >>> tables = surface_tables([quad])
-    >>> tables.levels.tolist(), tables.objects.tolist()
-    ([[0, 4, 4], [16, 2, 2], [20, 1, 1]], [[0, 0]])
+    >>> tables.levels.tolist(), tables.objects.tolist(), tables.alpha.tolist()
+    ([[0, 4, 4], [16, 2, 2], [20, 1, 1]], [[0, 0]], [[1.0, 0.0]])
     """
     from pixelpath.scene import _texture_kernels as tk
 
@@ -310,6 +329,7 @@ def surface_tables(objects: Any):
     level_rows: list[list[int]] = []
     pixels: list[np.ndarray] = []
     object_rows = []
+    alpha_rows = []
     texel_count = 0
     for obj in objects:
         material = obj.material
@@ -330,11 +350,28 @@ def surface_tables(objects: Any):
                     WRAPS.index(material.texture_wrap),
                 ])
             index = samplers[key]
-        object_rows.append([index, getattr(obj, "colors", None) is not None])
+        colors = getattr(obj, "colors", None)
+        object_rows.append([index, colors is not None])
+        alpha_rows.append([material.alpha, _cutoff(material, texture if index >= 0 else None,
+                                                   colors)])
     return tk.SurfaceTables(
         np.concatenate(pixels) if pixels else np.zeros((0, 4), dtype=np.uint8),
         np.array(level_rows, dtype=np.intp).reshape(-1, 3),
         np.array(sampler_rows, dtype=np.intp).reshape(-1, 4),
         np.array(object_rows, dtype=np.intp).reshape(-1, 2),
         decode_table(),
+        np.array(alpha_rows, dtype=np.float64).reshape(-1, 2),
     )
+
+
+def _cutoff(material: Any, texture: Texture | None, colors: np.ndarray | None) -> float:
+    """Return the cutoff the kernels test an object's alpha against: 0 where it cannot cut."""
+    cutoff = material.alpha_cutoff
+    if cutoff is None:
+        return 0.0
+    lowest = material.alpha
+    if texture is not None:
+        lowest *= texture.lowest_alpha
+    if colors is not None and len(colors):
+        lowest *= float(colors[:, 3].min())
+    return cutoff if lowest < cutoff else 0.0
