@@ -35,15 +35,24 @@ Rays are ``R(t) = o + t d`` with t in units of ``|d|``; a hit counts when ``t_mi
   walk of the tree for all four; the box tests of the four rays run side by side, compiled to
   vector instructions (``njit(simd=True)``), and each ray ends with what the one-ray search
   finds.
+* Alpha-tested triangles (``Cutouts``: a material with an ``alpha_cutoff``): the one-ray
+  searches given a ``cutouts`` record ask :func:`cut_away_hit` about a hit on one of them
+  before it counts, and a hit whose surface is cut away there is no hit (the ray goes on
+  through the hole). Without the record (the default) they are compiled as they were, with
+  no test at all, and so are the packet searches, which never test: the tracer traces a
+  packet's ray again alone, with the record, when its nearest hit is cut away
+  (:mod:`pixelpath.raytrace._whitted_kernels`).
 """
 
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 
 from pixelpath._jit import njit
+from pixelpath.scene._texture_kernels import cut_away
 
 EPS = float(np.finfo(np.float64).eps)
 # An origin whose |o − C|² − r² is within this fraction of |o − C|² + r² lies on the sphere.
@@ -56,6 +65,27 @@ NODE_COST = 1.0  # SAH: cost of visiting a node, relative to one triangle test
 MISS = -1
 LANES = 4  # rays of a packet: one 256-bit vector of float64
 ROOT = np.intp(0)  # the root node: not the literal 0, which _enter_lanes was compiled for again
+
+
+class Cutouts(NamedTuple):
+    """The alpha-tested triangles of a BVH, and what their alpha test reads, in leaf order."""
+
+    masked: np.ndarray  # (T,) bool: the triangle's surface may be cut away; no rows: none is
+    objects: np.ndarray  # (T,) intp: its object (row of the tables)
+    uv: np.ndarray  # (3T, 2) texture coordinates at the corners; (0, 2) when unused
+    colors: np.ndarray  # (3T, 4) vertex colours at the corners; (0, 4) when unused
+    tables: object  # SurfaceTables: textures, alpha and cutoff of each object
+
+
+@njit(refcount=False)
+def cut_away_hit(cutouts, i, w1, w2):
+    """Whether triangle i's surface is cut away by its alpha test at barycentric (w1, w2).
+
+    Ask only for triangles with ``cutouts.masked`` set.
+    """
+    first = 3 * i
+    return cut_away(cutouts.tables, cutouts.objects[i], cutouts.uv, cutouts.colors, first,
+                    first + 1, first + 2, 1.0 - w1 - w2, w1, w2)
 
 
 @njit(inline="always")
@@ -243,13 +273,14 @@ def enters_box(bounds, k, ox, oy, oz, dx, dy, dz, t_min, t_max):
 
 @njit(refcount=False)
 def closest_triangle(bounds, links, tris, source, skip, cull, ox, oy, oz, dx, dy, dz, t_min,
-                     t_max, stack, stack_t):
+                     t_max, stack, stack_t, cutouts=None):
     """Return the nearest triangle hit in (t_min, t_max): (t, i, w1, w2, nodes, tests).
 
     i is the triangle's position in the leaf order (MISS and t = t_max when nothing is hit);
-    with ``cull``, triangles with ``skip[i]`` set are ignored; nodes and
-    tests count the boxes and triangles visited. ``stack`` (intp) and ``stack_t`` (float64)
-    need room for the tree's depth.
+    with ``cull``, triangles with ``skip[i]`` set are ignored; given ``cutouts``, hits the
+    alpha test cuts away do not count (left out, the test is not even compiled in); nodes
+    and tests count the boxes and triangles visited. ``stack`` (intp) and ``stack_t``
+    (float64) need room for the tree's depth.
     """
     best_t = t_max
     best = MISS
@@ -285,6 +316,9 @@ def closest_triangle(bounds, links, tris, source, skip, cull, ox, oy, oz, dx, dy
                     if t_min < t and (
                         t < best_t or (t == best_t and best != MISS and source[i] < source[best])
                     ):
+                        if cutouts is not None:  # a branch Numba prunes when there is none
+                            if cutouts.masked[i] and cut_away_hit(cutouts, i, w1, w2):
+                                continue
                         best_t, best, best_w1, best_w2 = t, i, w1, w2
             else:
                 near_t = box_entry(bounds, first, ox, oy, oz, ix, iy, iz, columns, t_min, limit)
@@ -311,13 +345,14 @@ def closest_triangle(bounds, links, tris, source, skip, cull, ox, oy, oz, dx, dy
 
 @njit(refcount=False)
 def any_triangle(bounds, links, tris, pass_through, ox, oy, oz, dx, dy, dz, t_min, t_max,
-                 stack):
+                 stack, cutouts=None):
     """Return (light let through, blocker, nodes, tests) for the segment (t_min, t_max).
 
     Each triangle hit in the segment multiplies the light let through by its
     ``pass_through`` fraction; the first opaque one (fraction 0) ends the search at once and is
-    returned as the blocker (MISS when none). This is the any-hit query of shadow rays: no
-    ordering, no nearest hit.
+    returned as the blocker (MISS when none); given ``cutouts``, a hit the alpha test cuts
+    away lets all the light through. This is the any-hit query of shadow rays: no ordering,
+    no nearest hit.
     """
     let_through = 1.0
     nodes = 0
@@ -357,8 +392,11 @@ def any_triangle(bounds, links, tris, pass_through, ox, oy, oz, dx, dy, dz, t_mi
         else:
             for i in range(first, first + count):
                 tests += 1
-                t, _, _ = triangle_t(tris, i, kx, ky, kz, okx, oky, okz, sx, sy, sz)
+                t, w1, w2 = triangle_t(tris, i, kx, ky, kz, okx, oky, okz, sx, sy, sz)
                 if t_min < t < t_max:
+                    if cutouts is not None:  # a branch Numba prunes when there is none
+                        if cutouts.masked[i] and cut_away_hit(cutouts, i, w1, w2):
+                            continue
                     if pass_through[i] == 0.0:
                         return 0.0, i, nodes, tests
                     let_through *= pass_through[i]

@@ -23,6 +23,14 @@ weight, and every ray adds its share as it is traced: no recursion, no values pa
   Fresnel term F the transmitted share is split into F reflected and 1 − F transmitted.
 * Shadow rays are any-hit queries: an opaque object blocks the light, a transparent one lets
   its ``transparency`` through (no bending of the light: no caustics).
+* Alpha-tested materials (``Material.alpha_cutoff``) are holes where their alpha test cuts
+  them, for every ray: eye, shadow, reflected and refracted rays go on through to what lies
+  behind (``TraceScene.cutouts``). A scene with such triangles has its secondary rays and
+  shadow rays searched with the test (one by one: the packet searches make none), and an eye
+  ray whose packet found a cut-away hit is traced again alone, with it. Other scenes are
+  searched exactly as without alpha tests. Spheres and planes have no texture coordinates:
+  their alpha is their material's, and one it cuts away is left out of the scene
+  (:mod:`pixelpath.raytrace.tracer`).
 * A ray is traced only when its depth is at most ``max_depth`` and its weight at least
   ``MIN_WEIGHT``.
 
@@ -42,11 +50,13 @@ from pixelpath.lighting._kernels import light_direction, shade_point
 from pixelpath.raytrace._kernels import (
     LANES,
     MISS,
+    Cutouts,
     any_triangle,
     any_triangles4,
     box_limit,
     closest_triangle,
     closest_triangles4,
+    cut_away_hit,
     enters_box,
     plane_t,
     reflect_direction,
@@ -119,6 +129,7 @@ class TraceScene(NamedTuple):
     tri_colors: np.ndarray  # (3T, 4) vertex colours at the corners; (0, 4) when unused
     tri_texel_scale: np.ndarray  # (T,) uv units per world unit on each triangle
     pixel_cone: np.ndarray  # (2,) a pixel's footprint width at the eye, growth per distance
+    cutouts: Cutouts  # the alpha-tested triangles (``masked`` has no rows when there are none)
 
 
 class Settings(NamedTuple):
@@ -267,13 +278,17 @@ def primary_hits(y, x0, width, scene, settings, work):
     against the spheres and planes, then the triangles are searched up to the nearest of
     those: neighbouring rays of a row run through the same boxes of the tree, so
     ``closest_triangles4`` walks it once for ``LANES`` of them (the row's last few rays go one
-    by one). Writes ``work.primary`` (t, w1, w2) and ``work.primary_hit`` (kind, index; index
-    MISS when nothing is hit) and adds the nodes and triangle tests to ``work.counts``.
-    Arrays are taken out of their tuples once, as in :func:`trace_row`.
+    by one). A ray whose nearest triangle is alpha-tested and cut away there is traced again
+    alone, with the alpha test (the packet search makes none). Writes ``work.primary`` (t, w1,
+    w2) and ``work.primary_hit`` (kind, index; index MISS when nothing is hit) and adds the
+    nodes and triangle tests to ``work.counts``. Arrays are taken out of their tuples once, as
+    in :func:`trace_row`.
     """
     spheres, planes, plane_back = scene.spheres, scene.planes, scene.plane_back
     bounds, links, tris = scene.bounds, scene.links, scene.tris
     tri_source, tri_back, camera = scene.tri_source, scene.tri_back, scene.camera
+    cutouts = scene.cutouts
+    holes = cutouts.masked.shape[0] > 0
     packet, kinds, lane_hit = work.packet, work.packet_kind, work.lane_hit
     found, found_hit, counts = work.primary, work.primary_hit, work.counts
     stack, stack_t, lane_t = work.stack, work.stack_t, work.lane_t
@@ -299,6 +314,7 @@ def primary_hits(y, x0, width, scene, settings, work):
             packet[r, 0], packet[r, 1], packet[r, 2] = ox, oy, oz
             packet[r, 3], packet[r, 4], packet[r, 5], packet[r, 6] = dx, dy, dz, t
             packet[r, 7] = packet[r, 8] = 0.0
+            found[start + r, 0] = t  # the ray's limit, kept for a search through a hole
         if links.shape[0] > 0:
             nodes, tests = closest_triangles4(
                 bounds, links, tris, tri_source, tri_back, cull, packet, lanes, near, lane_hit,
@@ -307,6 +323,18 @@ def primary_hits(y, x0, width, scene, settings, work):
             counts[COUNT_NODES] += nodes
             counts[COUNT_TESTS] += tests
             for r in range(lanes):
+                hit = lane_hit[r]
+                if holes and hit != MISS and cutouts.masked[hit] and cut_away_hit(
+                    cutouts, hit, packet[r, 7], packet[r, 8]
+                ):
+                    t, hit, w1, w2, nodes, tests = closest_triangle(
+                        bounds, links, tris, tri_source, tri_back, cull, packet[r, 0],
+                        packet[r, 1], packet[r, 2], packet[r, 3], packet[r, 4], packet[r, 5],
+                        near, found[start + r, 0], stack, stack_t, cutouts,
+                    )
+                    packet[r, 6], packet[r, 7], packet[r, 8], lane_hit[r] = t, w1, w2, hit
+                    counts[COUNT_NODES] += nodes
+                    counts[COUNT_TESTS] += tests
                 if lane_hit[r] != MISS:
                     kinds[r], found_hit[start + r, 1] = TRIANGLE, lane_hit[r]
         for r in range(lanes):
@@ -328,13 +356,15 @@ def primary_shadows(count, scene, settings, work):
     blocks are gathered four at a time and tested against the triangles together
     (``any_triangles4``): neighbouring pixels' rays towards one light run through the same
     boxes. Writes the light let through and the blocker (MISS when none) into
-    ``work.primary_shadow`` and adds nodes and triangle tests to ``work.counts``.
+    ``work.primary_shadow`` and adds nodes and triangle tests to ``work.counts``. In a scene
+    with alpha-tested triangles each ray is tested alone, with the alpha test.
     """
     spheres, planes, materials = scene.spheres, scene.planes, scene.materials
     sphere_object, plane_object = scene.sphere_object, scene.plane_object
     bounds, links, tris, tri_pass = scene.bounds, scene.links, scene.tris, scene.tri_pass
     tri_normals, tri_flat, tri_object = scene.tri_normals, scene.tri_flat, scene.tri_object
-    lights = scene.lights
+    lights, cutouts = scene.lights, scene.cutouts
+    holes = cutouts.masked.shape[0] > 0
     found, found_hit, result = work.primary, work.primary_hit, work.primary_shadow
     geometry = work.primary_geometry
     shadows, shadow_of, hit = work.shadows, work.shadow_of, work.lane_hit
@@ -372,6 +402,18 @@ def primary_shadows(count, scene, settings, work):
                 bounds, 0, sx, sy, sz, lx, ly, lz, 0.0, box_limit(t_light)
             ):
                 result[ray, light, 0], result[ray, light, 1] = through, blocker
+                continue
+            if holes:  # alone, with the alpha test
+                fraction, blocking, nodes, tests = any_triangle(
+                    bounds, links, tris, tri_pass, sx, sy, sz, lx, ly, lz, 0.0, t_light, stack,
+                    cutouts,
+                )
+                counts[COUNT_NODES] += nodes
+                counts[COUNT_TESTS] += tests
+                if blocking != MISS:
+                    result[ray, light, 0], result[ray, light, 1] = 0.0, tri_object[blocking]
+                else:
+                    result[ray, light, 0], result[ray, light, 1] = through * fraction, MISS
                 continue
             shadows[queued, 0], shadows[queued, 1], shadows[queued, 2] = sx, sy, sz
             shadows[queued, 3], shadows[queued, 4], shadows[queued, 5] = lx, ly, lz
@@ -759,6 +801,8 @@ def trace_row(y, x0, width, scene, settings, work, out):
     ambient = scene.ambient
     background = scene.background
     tri_pass = scene.tri_pass
+    cutouts = scene.cutouts
+    holes = cutouts.masked.shape[0] > 0  # alpha-tested triangles: search with the test
     rays = work.rays
     counts = work.counts
     stack = work.stack
@@ -820,10 +864,16 @@ def trace_row(y, x0, width, scene, settings, work, out):
                     )
                     w1 = w2 = 0.0
                     if has_triangles and enters_box(bounds, 0, ox, oy, oz, dx, dy, dz, 0.0, t):
-                        t_tri, tri, b1, b2, nodes, tests = closest_triangle(
-                            bounds, links, tris, tri_source, tri_back, cull_none, ox, oy, oz, dx,
-                            dy, dz, 0.0, t, stack, stack_t,
-                        )
+                        if holes:
+                            t_tri, tri, b1, b2, nodes, tests = closest_triangle(
+                                bounds, links, tris, tri_source, tri_back, cull_none, ox, oy, oz,
+                                dx, dy, dz, 0.0, t, stack, stack_t, cutouts,
+                            )
+                        else:
+                            t_tri, tri, b1, b2, nodes, tests = closest_triangle(
+                                bounds, links, tris, tri_source, tri_back, cull_none, ox, oy, oz,
+                                dx, dy, dz, 0.0, t, stack, stack_t,
+                            )
                         counts[COUNT_NODES] += nodes
                         counts[COUNT_TESTS] += tests
                         if tri != MISS:
@@ -871,10 +921,16 @@ def trace_row(y, x0, width, scene, settings, work, out):
                                 has_analytic,
                             )
                             if blocker == MISS and has_triangles:  # the any-hit query
-                                fraction, hit, nodes, tests = any_triangle(
-                                    bounds, links, tris, tri_pass, sx, sy, sz, lx, ly, lz, 0.0,
-                                    t_light, stack,
-                                )
+                                if holes:
+                                    fraction, hit, nodes, tests = any_triangle(
+                                        bounds, links, tris, tri_pass, sx, sy, sz, lx, ly, lz,
+                                        0.0, t_light, stack, cutouts,
+                                    )
+                                else:
+                                    fraction, hit, nodes, tests = any_triangle(
+                                        bounds, links, tris, tri_pass, sx, sy, sz, lx, ly, lz,
+                                        0.0, t_light, stack,
+                                    )
                                 counts[COUNT_NODES] += nodes
                                 counts[COUNT_TESTS] += tests
                                 if hit != MISS:

@@ -23,6 +23,11 @@ a mesh; ``"flat"`` with the normal of the polygon hit (spheres and planes have o
 either way). Gouraud shading interpolates vertex intensities, which a ray tracer has no use for:
 ``shading="gouraud"`` is refused.
 
+**Alpha-tested materials** (``Material.alpha_cutoff``) are holes where their alpha test cuts
+them, for every ray (eye, shadow, reflected, refracted): the searches skip such a hit and go on
+through (:mod:`pixelpath.raytrace._whitted_kernels`). The test is the rasterizer's, at the hit's
+barycentric coordinates, so both cut the same holes; scenes without it are traced as before.
+
 **Epsilon.** Secondary rays start ``epsilon = EPSILON_SCALE × extent`` off the surface along its
 geometric normal, extent being the largest coordinate (in absolute value) of the eye, the
 target distance and the bounded objects: far above the rounding error of a hit point
@@ -215,8 +220,11 @@ def pack(scene: Scene, camera: Camera, options: RenderOptions):
             f"(interpolated normals) or 'flat' (polygon normals), got {options.shading!r}"
         )
     triangles = scene_triangles(scene)
-    spheres = [(k, o) for k, o in enumerate(scene.objects) if isinstance(o, Sphere)]
-    planes = [(k, o) for k, o in enumerate(scene.objects) if isinstance(o, Plane)]
+    cut = _alpha_tested(triangles.tables)
+    # A sphere's or plane's alpha is its material's (no texture coordinates): an alpha-tested
+    # one is cut away everywhere, and left out.
+    spheres = [(k, o) for k, o in enumerate(scene.objects) if isinstance(o, Sphere) and not cut[k]]
+    planes = [(k, o) for k, o in enumerate(scene.objects) if isinstance(o, Plane) and not cut[k]]
     plane_normals = np.array([p.normal for _, p in planes]).reshape(-1, 3)
     plane_points = np.array([p.point for _, p in planes]).reshape(-1, 3)
     viewpoint = camera.viewpoint()
@@ -252,6 +260,8 @@ def pack(scene: Scene, camera: Camera, options: RenderOptions):
         tri_colors=triangles.colors,
         tri_texel_scale=triangles.texel_scale,
         pixel_cone=_pixel_cone(camera),
+        cutouts=wk.Cutouts(_masked(cut, triangles.objects), triangles.objects, triangles.uv,
+                           triangles.colors, triangles.tables),
     )
     settings = wk.Settings(
         max_depth=options.max_depth,
@@ -267,6 +277,22 @@ def pack(scene: Scene, camera: Camera, options: RenderOptions):
         image_height=camera.height,
     )
     return world, settings, max(triangles.bvh.depth, 1), triangles
+
+
+def _alpha_tested(tables) -> np.ndarray:
+    """(O,) bool: the objects whose surface the alpha test may cut (a cutoff above 0)."""
+    from pixelpath.scene._texture_kernels import CUTOFF
+
+    return tables.alpha[:, CUTOFF] > 0.0
+
+
+def _masked(cut: np.ndarray, objects: np.ndarray) -> np.ndarray:
+    """(T,) bool: the triangles of alpha-tested objects (``cut``), in the leaf order.
+
+    No rows when no triangle is alpha-tested: the kernels then search without the test.
+    """
+    masked = cut[objects] if cut.any() else cut[:0]
+    return np.ascontiguousarray(masked if masked.any() else masked[:0])
 
 
 def _primary_rays(camera: Camera) -> np.ndarray:
