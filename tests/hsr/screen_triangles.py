@@ -14,7 +14,8 @@ import numpy as np
 from pixelpath.hsr import pipeline
 from pixelpath.raster import _kernels
 from pixelpath.renderer import View
-from pixelpath.scene import Camera
+from pixelpath.scene import Camera, Sphere
+from pixelpath.scene.texture import surface_tables
 
 
 def view_of(size=(16, 16), region=None) -> View:
@@ -30,14 +31,19 @@ def set_up(triangles, view: View):
     """Set up screen triangles [[(x, y, 1/w)] * 3, ...] for the view's region.
 
     Returns an object with ``setup`` and ``rows`` (clipped to the region's rows), as
-    :class:`pixelpath.hsr.pipeline.Prepared` has them.
+    :class:`pixelpath.hsr.pipeline.Prepared` has them, and what the alpha test reads (all the
+    triangles belong to one opaque object: none is alpha-tested).
     """
     screen = np.asarray(triangles, dtype=np.float64).reshape(-1, 3)
     indices = np.arange(len(screen), dtype=np.intp).reshape(-1, 3)
     setup = np.zeros((len(indices), _kernels.SETUP_FIELDS))
     rows = np.zeros((len(indices), 2), dtype=np.intp)
     _kernels.setup_triangles(screen, indices, False, view.y0, view.y0 + view.height, setup, rows)
-    return types.SimpleNamespace(setup=setup, rows=rows)
+    return types.SimpleNamespace(
+        setup=setup, rows=rows, triangles=indices, info=np.zeros((len(indices), 2), np.intp),
+        uv=np.empty((0, 2)), vertex_colors=np.empty((0, 4)),
+        geometry=types.SimpleNamespace(surfaces=surface_tables([Sphere((0, 0, 0), 1.0)])),
+    )
 
 
 def zbuffer(prepared, view: View) -> pipeline.Visibility:
@@ -46,5 +52,6 @@ def zbuffer(prepared, view: View) -> pipeline.Visibility:
     inv_depth = np.empty((view.height, view.width))
     triangle_id = np.empty((view.height, view.width), dtype=np.int32)
     _kernels.rasterize_bands(np.arange(len(offsets) - 1), prepared.setup, prepared.rows, offsets,
-                             items, _kernels.BAND_ROWS, view.x0, view.y0, inv_depth, triangle_id)
+                             items, _kernels.BAND_ROWS, view.x0, view.y0, inv_depth, triangle_id,
+                             pipeline.cutouts(prepared))
     return pipeline.Visibility(inv_depth, triangle_id)

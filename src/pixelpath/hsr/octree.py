@@ -11,7 +11,8 @@ how many of the node's three splitting planes lie between them and the child hol
 (none, one, two, three). A ray from the eye crosses each plane once at most, so every ray
 meets the cells in this order. Each leaf's triangles are scan-converted (the shared top-left
 fill rule) inside the leaf's screen footprint with a depth test on 1/w, ties going to the lower
-triangle index as in the z-buffer. Then **early termination**:
+triangle index as in the z-buffer (a sample of an alpha-tested material that its alpha test cuts
+away is no hit: it replaces nothing). Then **early termination**:
 
 * a pixel is *decided* once its nearest hit so far lies inside the leaf just drawn: every cell
   the pixel's ray meets later lies farther along it, so nothing can come in front any more;
@@ -285,7 +286,8 @@ def _traverse(octree: Octree, prepared: pipeline.Prepared, view: View,
     count, order = pipeline.bands(view)
     stats = np.zeros((count, octree.depth + 1, kernels.STAT_COLUMNS), dtype=np.int64)
     shape = (view.height, view.width)
-    scan = kernels.Scan(prepared.setup, prepared.rows, prepared.triangles, prepared.positions)
+    scan = kernels.Scan(prepared.setup, prepared.rows, prepared.triangles, prepared.positions,
+                        pipeline.cutouts(prepared))
     work = (np.empty(shape, dtype=np.uint8), np.empty(shape, dtype=np.int32))
     eye = camera.viewpoint()
     outcomes = np.zeros((count, octree.nodes if record else 0), dtype=np.int8)

@@ -22,6 +22,11 @@ the index of its triangle (-1 where none). :func:`shade` (the back end) then eva
 illumination once per visible pixel, in the chosen shading mode (:mod:`pixelpath.raster.shading`).
 :func:`paint` is the drawing step of the methods that produce a back-to-front order (painter's
 and BSP): each triangle over the ones before it, with no depth test.
+
+Alpha-tested materials (``Material.alpha_cutoff``) are honoured where visibility is decided:
+each method asks about the samples of the triangles :func:`cutouts` marks, and one whose
+surface is cut away there hides nothing, so the visibility buffers already hold what shows
+through the holes and the shading pass has nothing to add.
 """
 
 from __future__ import annotations
@@ -43,6 +48,7 @@ __all__ = [
     "Lighting",
     "Prepared",
     "Visibility",
+    "cutouts",
     "paint",
     "prepare",
     "shade",
@@ -307,14 +313,53 @@ def paint(prepared: Prepared, view: View, order: np.ndarray) -> Visibility:
     order = np.ascontiguousarray(order, dtype=np.intp)
     offsets, items = binned(prepared, view, order)
     _, band_list = bands(view)
+    alpha = cutouts(prepared)
     in_runs(
         lambda run: _kernels.paint_bands(
             run, prepared.setup, prepared.rows, offsets, items, order, _kernels.BAND_ROWS,
-            view.x0, view.y0, *visibility,
+            view.x0, view.y0, *visibility, alpha,
         ),
         band_list,
     )
     return visibility
+
+
+def cutouts(prepared: Prepared):
+    """Return what the alpha test reads, as the raster kernels' ``Cutouts`` record.
+
+    Its ``masked`` flags the drawable triangles whose object is alpha-tested (a material
+    with an ``alpha_cutoff`` its alpha can fall below, see
+    :func:`pixelpath.scene.texture.surface_tables`); every method tests the samples of those
+    triangles, and only those, before letting them hide anything.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import pixelpath as pp
+    >>> from pixelpath.renderer import RenderOptions, View
+    >>> from pixelpath.hsr.pipeline import cutouts, prepare
+    >>> texture = np.ones((2, 2, 4))
+    >>> texture[0, 0, 3] = 0.0  # one transparent texel
+    >>> square = pp.Mesh([[-1, -1, 0], [1, -1, 0], [1, 1, 0], [-1, 1, 0]], [[0, 1, 2, 3]],
+    ...                  pp.Material(texture=texture, alpha_cutoff=0.5),
+    ...                  uv=[[0, 0], [1, 0], [1, 1], [0, 1]])
+    >>> scene = pp.Scene(pp.Camera(eye=(0, 0, 3), target=(0, 0, 0), width=16, height=16),
+    ...                  [square, pp.Box((-2, -2, -1), (2, 2, -0.5))])
+    >>> prepared = prepare(scene, View.whole(scene.camera), RenderOptions())
+    >>> masked = cutouts(prepared).masked
+    >>> bool(masked[prepared.info[:, 0] == 0].all()), bool(masked[prepared.info[:, 0] == 1].any())
+    (True, False)
+    """
+    from pixelpath.raster import _kernels
+    from pixelpath.scene._texture_kernels import CUTOFF
+
+    tables = prepared.geometry.surfaces
+    if np.any(tables.alpha[:, CUTOFF] > 0.0):
+        masked = np.ascontiguousarray(tables.alpha[prepared.info[:, 0], CUTOFF] > 0.0)
+    else:  # the common case: nothing to gather per triangle
+        masked = np.zeros(len(prepared.info), dtype=np.bool_)
+    return _kernels.Cutouts(masked, prepared.setup, prepared.triangles, prepared.info,
+                            prepared.uv, prepared.vertex_colors, tables)
 
 
 _SCRATCH = threading.local()

@@ -14,7 +14,9 @@ structures:
   polygon is drawn with no depth computed. Over a span covered by several, 1/w of each is
   linear, so the polygon nearest at both ends of the span is nearest all along it; when the
   ends disagree the polygons interpenetrate there, and the span is split where the two planes
-  cross and each part is decided the same way.
+  cross and each part is decided the same way. A span covered by an alpha-tested polygon
+  (``Material.alpha_cutoff``) is decided pixel by pixel, since its holes are where its
+  texture says, not where its edges are.
 
 Crossings follow the same top-left fill rule as the z-buffer's scan converter, and depth ties
 go to the lower triangle like the z-buffer's, so the two methods agree pixel for pixel (also on
@@ -125,11 +127,12 @@ def _scan(prepared: pipeline.Prepared, view: View) -> tuple[pipeline.Visibility,
     offsets, items = pipeline.binned(prepared, view)
     _, order = pipeline.bands(view)
     counts = np.zeros((view.height, len(LINE_COUNTS)), dtype=np.intp)
+    cutouts = pipeline.cutouts(prepared)
 
     def scan(run: np.ndarray) -> None:
         kernels.scan_bands(
             run, prepared.setup, prepared.rows, offsets, items, _kernels.BAND_ROWS, view.x0,
-            view.y0, *visibility, counts,
+            view.y0, *visibility, counts, cutouts,
         )
 
     in_runs(scan, order)
@@ -176,6 +179,9 @@ def _report(prepared: pipeline.Prepared, view: View, visibility: pipeline.Visibi
             "tests = one-pixel pieces decided by the z-buffer's test",
             "edges entering counts each band's edge table: an edge crossing a band border "
             "enters again at the band's first line (bands of 32 lines run in parallel)",
+            *(("alpha-tested polygons (alpha_cutoff) have holes their edges do not show: "
+               "a span one of them covers is decided pixel by pixel (counted in pixel tests)",)
+              if pipeline.cutouts(prepared).masked.any() else ()),
         ),
         arrays=arrays,
     )

@@ -19,6 +19,10 @@ Then decide the area at once if one of the rules applies:
 otherwise cut the area into four and repeat, down to single pixels, where the polygon nearest
 at the pixel centre wins. Each area is only handed the polygons that reached its parent.
 
+A polygon of an alpha-tested material (``Material.alpha_cutoff``) has holes its outline does
+not show: it never counts as the surrounding polygon in front (rule 3), and rules 2 and 4 draw
+it only where its alpha test keeps it.
+
 "Covers" means exactly what the scan converter draws (the top-left fill rule on pixel centres),
 and depth ties go to the lower triangle, as in the z-buffer, so the two agree pixel for pixel;
 rule 3 only fires when the surrounding polygon is nearer by more than rounding could explain,
@@ -133,12 +137,13 @@ def _subdivide(prepared: pipeline.Prepared, view: View, explain: bool):
     shape = (view.height, view.width)
     maps = (np.full(shape, -1, np.int8), np.full(shape, -1, np.int8)) if explain else None
     counts, sizes, examined = [], [], []
+    cutouts = pipeline.cutouts(prepared)
     while len(areas):
         kept = np.empty(len(candidates), dtype=np.bool_)
         decisions = np.empty(len(areas), dtype=np.int8)
         decide = functools.partial(
             kernels.decide_level, areas, offsets, candidates, prepared.setup, boxes, view.x0,
-            view.y0, *visibility, kept, decisions,
+            view.y0, *visibility, cutouts, kept, decisions,
         )
         in_threads(decide, len(areas))
         tally = np.bincount(decisions, minlength=len(DECISIONS))
@@ -203,6 +208,10 @@ def _report(prepared: pipeline.Prepared, visibility: pipeline.Visibility, levels
             "otherwise it is cut in four, down to pixels",
             "per level: areas examined; decided empty, by a single polygon, by a surrounding "
             "polygon in front, subdivided, or at pixel level; polygons classified (tested)",
+            *(("alpha-tested polygons (alpha_cutoff) have holes their outline does not show: "
+               "they are never the surrounding polygon in front, and are drawn only where "
+               "their alpha test keeps each pixel",)
+              if pipeline.cutouts(prepared).masked.any() else ()),
         ),
         arrays={"levels": counts, "level": maps[0], "decision": maps[1], "areas": maps[2]},
     )

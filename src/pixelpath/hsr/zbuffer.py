@@ -1,10 +1,11 @@
 """The depth-buffer (z-buffer) method, an image-space method (SPEC §9 errata).
 
 For every pixel keep the nearest surface seen so far: a new sample replaces the stored one when
-it is nearer (the notes' "Z_new < Z_buffer → update"). Here the buffer holds 1/w, w being the
-distance along the viewing axis, because 1/w is affine in screen space (exactly interpolated)
-and larger means nearer; ``Image.depth`` reports w itself. Ties keep the earlier triangle, so
-the picture does not depend on the order of threads.
+it is nearer (the notes' "Z_new < Z_buffer → update") and, for an alpha-tested material, when
+its alpha test keeps it (a sample cut away replaces nothing). Here the buffer holds 1/w, w
+being the distance along the viewing axis, because 1/w is affine in screen space (exactly
+interpolated) and larger means nearer; ``Image.depth`` reports w itself. Ties keep the earlier
+triangle, so the picture does not depend on the order of threads.
 
 The front end and the shading pass are the shared ones of :mod:`pixelpath.hsr.pipeline`. The
 z-buffer runs them band by band: each band of 32 rows is scan-converted with the depth test
@@ -65,12 +66,13 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     offsets, items = pipeline.binned(prepared, view)
     out = pipeline.output_buffers(view)
     surfaces = pipeline.surfaces(prepared, scene, view)
+    cutouts = pipeline.cutouts(prepared)
     _, order = pipeline.bands(view)
     runs = pipeline.slices(view)
     def render_run(run: np.ndarray) -> None:
         _kernels.render_bands(
             run, prepared.setup, prepared.rows, offsets, items, _kernels.BAND_ROWS, view.x0,
-            view.y0, *visibility, surfaces, out,
+            view.y0, *visibility, cutouts, surfaces, out,
         )
 
     for start, stop in runs:

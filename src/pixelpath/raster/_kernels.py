@@ -29,6 +29,13 @@ The pipeline these kernels implement (driven by :mod:`pixelpath.hsr.zbuffer`):
    screen weights ``s_i``. Phong shading gathers a row's interpolated points and normals into
    planar batches (one object's pixels each) and shades a batch at once with the lighting
    stage's vectorized ``shade_planar``.
+
+Alpha-tested materials (``Material.alpha_cutoff``) cut holes where visibility is decided: a
+method asks :func:`cut_away_at` about each sample of an alpha-tested triangle (``Cutouts``)
+before it lets the sample hide what lies behind, so the sample behind shows through, and the
+shading pass never sees the cut one. The question is asked per triangle first
+(``Cutouts.masked``): the loops over the samples of other triangles are the ones they were
+without alpha tests.
 """
 
 from __future__ import annotations
@@ -43,6 +50,7 @@ from pixelpath.clip._kernels import PLANE, clip_stage
 from pixelpath.lighting._kernels import shade_planar, shade_point
 from pixelpath.scene._texture_kernels import (
     TEXTURE,
+    cut_away,
     mip_level,
     surface_color,
     texel_footprint,
@@ -139,6 +147,23 @@ class Surfaces(NamedTuple):
     orthographic: bool  # the depth key is affine in depth (else 1/w)
     near: float  # the camera's near and far distances (an orthographic key's depth)
     far: float
+
+
+class Cutouts(NamedTuple):
+    """What the alpha test of the visibility pass reads about the drawn triangles.
+
+    Only triangles with ``masked`` set are tested (their object's material has an alpha
+    cutoff its alpha can fall below: ``SurfaceTables.alpha``); the other arrays are the
+    shading pass's own (see :class:`Surfaces`).
+    """
+
+    masked: np.ndarray  # (T,) bool: the triangle's surface may be cut away
+    setup: np.ndarray  # (T, SETUP_FIELDS) set-up records
+    triangles: np.ndarray  # (T, 3) vertex indices
+    info: np.ndarray  # (T, 2) object index, flip flag
+    uv: np.ndarray  # (V, 2) texture coordinates; (0, 2) when nothing is textured
+    vertex_colors: np.ndarray  # (V, 4) vertex colours; (0, 4) when no object has them
+    tables: object  # SurfaceTables: textures, alpha and cutoff of each object
 
 
 class Buffers(NamedTuple):
@@ -595,17 +620,24 @@ def _clear_band(first, stop, y0, inv_depth, triangle_id):
 
 
 @njit
-def _rasterize_band(setup, rows, offsets, items, band, band_rows, x0, y0, inv_depth, triangle_id):
+def _rasterize_band(setup, rows, offsets, items, band, band_rows, x0, y0, inv_depth, triangle_id,
+                    cutouts):
     """Clear one band of rows, then depth-test its triangles' pixels (nearest 1/w wins).
 
     The buffers (h, w) cover image columns [x0, x0 + w) and rows [y0, y0 + h); pixel centres
     are computed in image coordinates, so a region gets exactly the pixels of the whole image.
+    Alpha-tested triangles (``cutouts.masked``) go through :func:`_depth_test_masked`.
     """
     height, width = inv_depth.shape
     band_first, band_stop = _band_rows(band, band_rows, y0, height)
     _clear_band(band_first, band_stop, y0, inv_depth, triangle_id)
+    masked = cutouts.masked
     for k in range(offsets[band], offsets[band + 1]):
         t = items[k]
+        if masked[t]:
+            _depth_test_masked(t, max(rows[t, 0], band_first), min(rows[t, 1], band_stop), x0,
+                               y0, inv_depth, triangle_id, cutouts)
+            continue
         record = setup[t]
         pa, pb, pc = record[KEY_PLANE], record[KEY_PLANE + 1], record[KEY_PLANE + 2]
         for j in range(max(rows[t, 0], band_first), min(rows[t, 1], band_stop)):
@@ -620,33 +652,62 @@ def _rasterize_band(setup, rows, offsets, items, band, band_rows, x0, y0, inv_de
 
 
 @njit
+def _depth_test_masked(t, row_first, row_stop, x0, y0, inv_depth, triangle_id, cutouts):
+    """Depth-test alpha-tested triangle t's pixels on image rows [row_first, row_stop).
+
+    As the z-buffer's loop, but a sample that wins the depth test is kept only where the
+    alpha test does not cut it away (:func:`cut_away_at`): what lies behind shows through.
+    """
+    width = inv_depth.shape[1]
+    record = cutouts.setup[t]
+    pa, pb, pc = record[KEY_PLANE], record[KEY_PLANE + 1], record[KEY_PLANE + 2]
+    for j in range(row_first, row_stop):
+        y = j + 0.5
+        first, stop = scanline_span(record, y, x0, x0 + width)
+        row_value = pb * y + pc
+        for i in range(first, stop):
+            inv_w = pa * (i + 0.5) + row_value
+            if inv_w > inv_depth[j - y0, i - x0] and not cut_away_at(cutouts, t, i + 0.5, y):
+                inv_depth[j - y0, i - x0] = inv_w
+                triangle_id[j - y0, i - x0] = t
+
+
+@njit
 def rasterize_bands(bands, setup, rows, offsets, items, band_rows, x0, y0, inv_depth,
-                    triangle_id):
+                    triangle_id, cutouts):
     """Depth-test the triangles' pixels in the listed bands, keeping the nearest (largest 1/w).
 
     Each band first clears its rows of ``inv_depth`` (h, w) to 0 (infinitely far) and of
     ``triangle_id`` (h, w) to -1 (nothing), so the buffers may hold anything on entry.
+    ``cutouts`` (:class:`Cutouts`) says which triangles are alpha-tested, and how.
     """
     for k in range(bands.shape[0]):
         band = bands[k]
         _rasterize_band(
-            setup, rows, offsets, items, band, band_rows, x0, y0, inv_depth, triangle_id
+            setup, rows, offsets, items, band, band_rows, x0, y0, inv_depth, triangle_id,
+            cutouts,
         )
 
 
 @njit
 def _paint_band(setup, rows, offsets, items, order, band, band_rows, x0, y0, inv_depth,
-                triangle_id):
+                triangle_id, cutouts):
     """Clear one band, then draw ``order``'s triangles over each other, later ones on top.
 
     No depth test: the painter's and BSP methods list the triangles back to front. The 1/w of
-    the triangle drawn last is kept, so the visible surface's depth is known.
+    the triangle drawn last is kept, so the visible surface's depth is known. An alpha-tested
+    triangle paints only the pixels its alpha test keeps (:func:`_paint_masked`).
     """
     height, width = inv_depth.shape
     band_first, band_stop = _band_rows(band, band_rows, y0, height)
     _clear_band(band_first, band_stop, y0, inv_depth, triangle_id)
+    masked = cutouts.masked
     for k in range(offsets[band], offsets[band + 1]):
         t = order[items[k]]
+        if masked[t]:
+            _paint_masked(t, max(rows[t, 0], band_first), min(rows[t, 1], band_stop), x0, y0,
+                          inv_depth, triangle_id, cutouts)
+            continue
         record = setup[t]
         pa, pb, pc = record[KEY_PLANE], record[KEY_PLANE + 1], record[KEY_PLANE + 2]
         for j in range(max(rows[t, 0], band_first), min(rows[t, 1], band_stop)):
@@ -659,16 +720,34 @@ def _paint_band(setup, rows, offsets, items, order, band, band_rows, x0, y0, inv
 
 
 @njit
+def _paint_masked(t, row_first, row_stop, x0, y0, inv_depth, triangle_id, cutouts):
+    """Paint alpha-tested triangle t over image rows [row_first, row_stop), skipping its holes."""
+    width = inv_depth.shape[1]
+    record = cutouts.setup[t]
+    pa, pb, pc = record[KEY_PLANE], record[KEY_PLANE + 1], record[KEY_PLANE + 2]
+    for j in range(row_first, row_stop):
+        y = j + 0.5
+        first, stop = scanline_span(record, y, x0, x0 + width)
+        row_value = pb * y + pc
+        for i in range(first, stop):
+            if not cut_away_at(cutouts, t, i + 0.5, y):
+                inv_depth[j - y0, i - x0] = pa * (i + 0.5) + row_value
+                triangle_id[j - y0, i - x0] = t
+
+
+@njit
 def paint_bands(bands, setup, rows, offsets, items, order, band_rows, x0, y0, inv_depth,
-                triangle_id):
+                triangle_id, cutouts):
     """Draw the triangles ``order[items[...]]`` of each listed band in list order (painter's).
 
-    ``offsets``/``items`` bin the positions of ``order`` (not triangle indices) per band.
+    ``offsets``/``items`` bin the positions of ``order`` (not triangle indices) per band;
+    ``cutouts`` (:class:`Cutouts`) says which triangles are alpha-tested.
     """
     for k in range(bands.shape[0]):
         band = bands[k]
         _paint_band(
-            setup, rows, offsets, items, order, band, band_rows, x0, y0, inv_depth, triangle_id
+            setup, rows, offsets, items, order, band, band_rows, x0, y0, inv_depth, triangle_id,
+            cutouts,
         )
 
 
@@ -693,6 +772,21 @@ def perspective_weights(record, x, y):
     t2 = s2 * record[VERTEX_INVW + 2]
     scale = 1.0 / (t0 + t1 + t2)
     return t0 * scale, t1 * scale, t2 * scale
+
+
+@njit(refcount=False)
+def cut_away_at(cutouts, t, x, y):
+    """Whether triangle t's surface is cut away by its alpha test at pixel centre (x, y).
+
+    The alpha is taken at the perspective-correct weights the shading pass uses there
+    (:func:`pixelpath.scene._texture_kernels.cut_away`). Ask only for triangles with
+    ``cutouts.masked`` set; compiled without reference counting, like the lookups.
+    """
+    terms = _perspective_terms(cutouts.setup, t, x, y)
+    triangles = cutouts.triangles
+    return cut_away(cutouts.tables, cutouts.info[t, 0], cutouts.uv, cutouts.vertex_colors,
+                    triangles[t, 0], triangles[t, 1], triangles[t, 2], terms[0], terms[1],
+                    terms[2])
 
 
 @njit
@@ -768,7 +862,7 @@ def _new_batch(width):
 
 @njit
 def render_bands(bands, setup, rows, offsets, items, band_rows, x0, y0, inv_depth, triangle_id,
-                 surfaces, out):
+                 cutouts, surfaces, out):
     """Rasterize the listed bands of rows with the depth test, then shade them (the z-buffer).
 
     One pass per band: its depth and triangle buffers are still in cache when it is shaded.
@@ -779,7 +873,8 @@ def render_bands(bands, setup, rows, offsets, items, band_rows, x0, y0, inv_dept
     for k in range(bands.shape[0]):
         band = bands[k]
         _rasterize_band(
-            setup, rows, offsets, items, band, band_rows, x0, y0, inv_depth, triangle_id
+            setup, rows, offsets, items, band, band_rows, x0, y0, inv_depth, triangle_id,
+            cutouts,
         )
         batch = _new_batch(inv_depth.shape[1])
         first, stop = _band_rows(band, band_rows, y0, height)
@@ -1113,6 +1208,32 @@ def _tiny_triangle():
     return clip, triangles, setup, rows, offsets, items, inv_depth, triangle_id
 
 
+def opaque_cutouts(setup, triangles):
+    """Return a :class:`Cutouts` that tests no triangle: for triangles with no material.
+
+    Typed as a render's, so the kernels are compiled once for both.
+    """
+    from pixelpath.scene.texture import surface_tables
+
+    count = triangles.shape[0]
+    return Cutouts(
+        np.zeros(count, dtype=np.bool_), setup, triangles, np.zeros((count, 2), dtype=np.intp),
+        np.empty((0, 2)), np.empty((0, 4)), surface_tables([]),
+    )
+
+
+def tiny_cutouts(setup, triangles):
+    """Return a :class:`Cutouts` for warm-ups: every triangle alpha-tested, typed as in renders.
+
+    ``triangles`` are indices into three vertices with texture coordinates and colours.
+    """
+    return Cutouts(
+        np.ones(triangles.shape[0], dtype=np.bool_), setup, triangles,
+        np.zeros((triangles.shape[0], 2), dtype=np.intp), np.zeros((3, 2)), np.ones((3, 4)),
+        tiny_tables(),
+    )
+
+
 def overlapping_pair():
     """Return the set-up records and rows of two triangles crossing each other on an 8x8 image.
 
@@ -1193,7 +1314,7 @@ def warm_back() -> None:
         _tiny_shading_pass()
     )
     render_bands(bands, setup, rows, offsets, items, BAND_ROWS, 0, 0, inv_depth, triangle_id,
-                 surfaces, out)
+                 tiny_cutouts(setup, surfaces.triangles), surfaces, out)
 
 
 def warm_shade() -> None:
@@ -1211,8 +1332,10 @@ def warm_scan() -> None:
     """Compile the other scan conversions: depth test only, painting in order, coverage."""
     _, triangles, setup, rows, offsets, items, inv_depth, triangle_id = _tiny_triangle()
     bands = np.zeros(1, dtype=np.intp)
-    rasterize_bands(bands, setup, rows, offsets, items, BAND_ROWS, 0, 0, inv_depth, triangle_id)
+    cutouts = tiny_cutouts(setup, triangles)
+    rasterize_bands(bands, setup, rows, offsets, items, BAND_ROWS, 0, 0, inv_depth, triangle_id,
+                    cutouts)
     paint_bands(bands, setup, rows, offsets, items, np.zeros(1, dtype=np.intp), BAND_ROWS, 0, 0,
-                inv_depth, triangle_id)
+                inv_depth, triangle_id, cutouts)
     count_coverage(setup, rows, 0, 0, np.zeros((8, 8), dtype=np.int32))
     interpolate_values(0, 8, setup, triangles, np.ones((3, 1)), triangle_id, np.zeros((8, 8, 1)))

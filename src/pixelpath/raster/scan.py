@@ -87,11 +87,12 @@ def scan_convert(
     >>> scan_convert([[0, 0], [3, 0], [3, 2], [0, 2]], [[0, 1, 2], [0, 2, 3]], 3, 2).tolist()
     [[1, 0, 0], [1, 1, 0]]
     """
-    width, height, _, setup, rows = _setup(points, triangles, width, height)
-    return _nearest(setup, rows, width, height)
+    width, height, triangles, setup, rows = _setup(points, triangles, width, height)
+    return _nearest(setup, rows, triangles, width, height)
 
 
-def _nearest(setup: np.ndarray, rows: np.ndarray, width: int, height: int) -> np.ndarray:
+def _nearest(setup: np.ndarray, rows: np.ndarray, triangles: np.ndarray, width: int,
+             height: int) -> np.ndarray:
     """Run the depth-tested scan conversion; return the triangle seen at each pixel."""
     from pixelpath.raster import _kernels
 
@@ -99,9 +100,11 @@ def _nearest(setup: np.ndarray, rows: np.ndarray, width: int, height: int) -> np
     triangle_id = np.empty((height, width), dtype=np.int32)
     n_bands = -(-height // _kernels.BAND_ROWS)
     offsets, items = _kernels.bin_triangles(rows, n_bands, _kernels.BAND_ROWS, 0)
+    cutouts = _kernels.opaque_cutouts(setup, triangles)
     in_runs(
         lambda bands: _kernels.rasterize_bands(
-            bands, setup, rows, offsets, items, _kernels.BAND_ROWS, 0, 0, inv_depth, triangle_id
+            bands, setup, rows, offsets, items, _kernels.BAND_ROWS, 0, 0, inv_depth, triangle_id,
+            cutouts,
         ),
         np.arange(n_bands),
     )
@@ -181,7 +184,7 @@ def interpolate(
             f"values must have shape (N,) or (N, C) with N = {len(np.asarray(points))} points, "
             f"got {values.shape}"
         )
-    triangle_id = _nearest(setup, rows, width, height)
+    triangle_id = _nearest(setup, rows, triangles, width, height)
     out = np.full((height, width, table.shape[1]), np.nan)
     table = kernel_array(table)
     in_threads(

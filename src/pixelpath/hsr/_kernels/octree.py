@@ -27,8 +27,10 @@ from pixelpath.raster._kernels import (
     _grown,
     _grown_rows,
     _outcode,
+    cut_away_at,
     perspective_weights,
     scanline_span,
+    tiny_cutouts,
 )
 
 # The children of a node, front to back, as the planes crossed from the eye's own child:
@@ -348,6 +350,7 @@ class Scan(NamedTuple):
     rows: np.ndarray  # (T, 2) intp image rows [first, stop) each triangle covers
     triangles: np.ndarray  # (T, 3) intp vertex indices
     positions: np.ndarray  # (V, 3) world positions of the vertices
+    cutouts: object  # the raster kernels' Cutouts: which triangles are alpha-tested, and how
 
 
 @njit
@@ -464,20 +467,27 @@ def _any_undecided(undecided, c0, c1, r0, r1):
     return False
 
 
-@njit
+@njit(refcount=False)
 def _draw_leaf(tree, node, scan, c0, c1, r0, r1, x0, y0, inv_depth, triangle_id, decided,
                stamp, visit, touched, level):
     """Scan-convert a leaf's triangles inside its footprint, with the depth test on 1/w.
 
     Decided pixels are left alone. A sample replaces the stored one when it is nearer, or as
-    near with a lower triangle index (the z-buffer's tie rule, whatever the order of cells).
-    Returns how many pixels were tested, each listed once in ``touched``.
+    near with a lower triangle index (the z-buffer's tie rule, whatever the order of cells),
+    unless the alpha test of an alpha-tested triangle cuts it away there.
+    Returns how many pixels were tested, each listed once in ``touched``. Called per leaf, as
+    :func:`_decide` is, with the records ``tree`` and ``scan``: both count no references
+    (``njit(refcount=False)``), which would update each of their arrays' counts atomically at
+    every call.
     """
     width = inv_depth.shape[1]
     n_touched = 0
     tested = 0
+    cutouts = scan.cutouts
+    masked = cutouts.masked
     for r in range(tree.links[node, START], tree.links[node, STOP]):
         t = tree.items[r]
+        holes = masked[t]
         record = scan.setup[t]
         row_first = max(scan.rows[t, 0], r0)
         row_stop = min(scan.rows[t, 1], r1)
@@ -497,7 +507,9 @@ def _draw_leaf(tree, node, scan, c0, c1, r0, r1, x0, y0, inv_depth, triangle_id,
                 tested += 1
                 inv_w = pa * (i + 0.5) + row_value
                 stored = inv_depth[row, col]
-                if inv_w > stored or (inv_w == stored and t < triangle_id[row, col]):
+                if (inv_w > stored or (inv_w == stored and t < triangle_id[row, col])) and not (
+                    holes and cut_away_at(cutouts, t, i + 0.5, y)
+                ):
                     inv_depth[row, col] = inv_w
                     triangle_id[row, col] = t
                 if stamp[row, col] != visit:
@@ -508,7 +520,7 @@ def _draw_leaf(tree, node, scan, c0, c1, r0, r1, x0, y0, inv_depth, triangle_id,
     return n_touched
 
 
-@njit
+@njit(refcount=False)
 def _decide(tree, node, scan, touched, n_touched, x0, y0, band_first, triangle_id, decided,
             undecided):
     """Mark decided the touched pixels whose nearest hit lies inside this leaf's cell.
@@ -556,7 +568,8 @@ def warmup() -> None:
     rects = np.empty((tree.cells.shape[0], 4))
     outside = np.empty(tree.cells.shape[0], dtype=np.bool_)
     cell_footprints(tree, triangle_rects, matrix, 8, 8, rects, outside)
-    scan = Scan(np.zeros((2, SETUP_FIELDS)), rows, triangles, positions)
+    setup = np.zeros((2, SETUP_FIELDS))
+    scan = Scan(setup, rows, triangles, positions, tiny_cutouts(setup, triangles))
     shape = (8, 8)
     stats = np.zeros((1, 3, STAT_COLUMNS), dtype=np.int64)
     traverse(tree, rects, outside, eye, scan, np.zeros(1, dtype=np.intp), 0, 0,

@@ -25,6 +25,10 @@ kernels release the GIL); each band runs the whole algorithm:
    split where the two nearest planes cross, and each part is resolved the same way; a part
    one pixel wide is decided by the z-buffer's test at that pixel, which is also where near
    ties (nearly coplanar overlaps) end up. The result is the z-buffer's, pixel for pixel.
+5. **Holes.** An alpha-tested triangle (``Cutouts.masked``) covers its span only where its
+   alpha test keeps it, which no end of the span can tell: a span it takes part in is
+   decided pixel by pixel, each pixel by the z-buffer's test among the triangles in the
+   list whose surface is not cut away there (:func:`_by_pixel`).
 """
 
 from __future__ import annotations
@@ -40,6 +44,7 @@ from pixelpath.raster._kernels import (
     SLOPES,
     SORTED_XY,
     clearly_nearer,
+    cut_away_at,
     wins_depth_test,
 )
 
@@ -55,13 +60,14 @@ EDGE_OWNER, EDGE_FIRST, EDGE_STOP = 0, 1, 2
 
 @njit
 def scan_bands(bands, setup, rows, offsets, items, band_rows, x0, y0, inv_depth, triangle_id,
-               counts):
+               counts, cutouts):
     """Decide the visible triangle of every pixel of the listed bands with the scan-line method.
 
     ``offsets``/``items`` bin the triangles per band (ascending); the buffers (h, w) cover image
     columns [x0, x0 + w) and rows [y0, y0 + h); every pixel of the bands is written (1/w 0 and
     triangle -1 where nothing is seen). ``counts`` (h, len(LINE_COUNTS)) receives what
-    happened on each scan line. Bands are independent: callers run lists of them in parallel
+    happened on each scan line. ``cutouts`` (the raster kernels' ``Cutouts``) marks the
+    alpha-tested triangles. Bands are independent: callers run lists of them in parallel
     threads (the kernel releases the GIL).
     """
     height = inv_depth.shape[0]
@@ -69,12 +75,12 @@ def scan_bands(bands, setup, rows, offsets, items, band_rows, x0, y0, inv_depth,
         first = y0 + band * band_rows
         stop = min(first + band_rows, y0 + height)
         _scan_band(setup, rows, items[offsets[band] : offsets[band + 1]], first, stop, x0, y0,
-                   inv_depth, triangle_id, counts)
+                   inv_depth, triangle_id, counts, cutouts)
 
 
 @njit
 def _scan_band(setup, rows, band_items, first_row, stop_row, x0, y0, inv_depth, triangle_id,
-               counts):
+               counts, cutouts):
     """Scan rows [first_row, stop_row) with the band's triangles ``band_items``.
 
     Work arrays are plain arrays, allocated once per band and passed down as such (arrays
@@ -97,12 +103,14 @@ def _scan_band(setup, rows, band_items, first_row, stop_row, x0, y0, inv_depth, 
         where[k] = -1
     stack = np.empty((width + 1, 2), dtype=np.intp)  # spans [first, stop) still to resolve
     active = np.intp(0)  # not the literal 0: Numba compiled its callees again for it
+    masked = cutouts.masked
     for j in range(first_row, stop_row):
         line = counts[j - y0]
         start, stop = entering[j - first_row], entering[j - first_row + 1]
         active = _next_line(floats, ints, start, stop, edges, xs, active, j, line)
         _walk(setup, band_items, ints, edges[0], xs[0], active, j + 0.5, x0, x0 + width,
-              inv_depth[j - y0], triangle_id[j - y0], line, held, planes, where, stack)
+              inv_depth[j - y0], triangle_id[j - y0], line, held, planes, where, stack, masked,
+              cutouts)
 
 
 @njit
@@ -247,15 +255,19 @@ def _merge_sort(edges, xs, n, scratch, scratch_x):
             edges[q], xs[q] = scratch[q], scratch_x[q]
 
 
-@njit
+@njit(refcount=False)
 def _walk(setup, band_items, ints, ael, ael_x, active, y, col_first, col_stop, depth_row, id_row,
-          line, held, planes, where, stack):
+          line, held, planes, where, stack, masked, cutouts):
     """Walk one scan line's crossings left to right, filling the span before each.
 
     Each crossing puts its triangle into the in-list (with its 1/w along the line) or takes
-    it out (the last place moves into its place).
+    it out (the last place moves into its place). While an alpha-tested triangle is in the
+    list, spans are decided pixel by pixel (:func:`_by_pixel`). Called per scan line with a
+    score of arrays (the alpha test's record among them): compiled without reference
+    counting, which would update each array's count atomically at every call.
     """
     inside = np.intp(0)  # not the literal 0: Numba compiled its callees again for it
+    holes = 0  # alpha-tested triangles in the list
     current = col_first
     crossings = 0
     for q in range(active + 1):
@@ -268,6 +280,11 @@ def _walk(setup, band_items, ints, ael, ael_x, active, y, col_first, col_stop, d
         if column > current:
             if inside == 0:
                 _fill(current, column, 0.0, 0.0, -1, col_first, depth_row, id_row)
+            elif holes > 0:
+                line[ONE_POLYGON if inside == 1 else BY_DEPTH] += 1
+                line[PIXELS] += column - current
+                _by_pixel(current, column, y, inside, col_first, depth_row, id_row, held, planes,
+                          masked, cutouts)
             elif inside == 1:
                 line[ONE_POLYGON] += 1
                 _fill(current, column, planes[0, 0], planes[0, 1], held[0, 1], col_first,
@@ -288,8 +305,10 @@ def _walk(setup, band_items, ints, ael, ael_x, active, y, col_first, col_stop, d
             planes[inside, 0] = setup[t, KEY_PLANE]
             planes[inside, 1] = setup[t, KEY_PLANE + 1] * y + setup[t, KEY_PLANE + 2]
             inside += 1
+            holes += 1 if masked[t] else 0
         else:
             inside -= 1
+            holes -= 1 if masked[held[place, 1]] else 0
             where[owner] = -1
             if place != inside:
                 where[held[inside, 0]] = place
@@ -329,6 +348,27 @@ def _by_depth(first, stop, inside, col_first, depth_row, id_row, line, held, pla
         stack[pending, 0], stack[pending, 1] = middle, right
         stack[pending + 1, 0], stack[pending + 1, 1] = left, middle
         pending += 2
+
+
+@njit(refcount=False)
+def _by_pixel(first, stop, y, inside, col_first, depth_row, id_row, held, planes, masked,
+              cutouts):
+    """Fill columns [first, stop) pixel by pixel: the z-buffer's test among the kept surfaces.
+
+    At each pixel centre, the triangle of the in-list that the z-buffer keeps, leaving out
+    the alpha-tested ones whose surface is cut away there; the background where none is left.
+    """
+    for i in range(first, stop):
+        x = i + 0.5
+        best, best_value, best_triangle = -1, 0.0, -1
+        for p in range(inside):
+            value = planes[p, 0] * x + planes[p, 1]
+            t = held[p, 1]
+            if wins_depth_test(value, t, best_value, best_triangle) and not (
+                masked[t] and cut_away_at(cutouts, t, x, y)
+            ):
+                best, best_value, best_triangle = p, value, t
+        _fill_place(i, i + 1, best, col_first, depth_row, id_row, held, planes)
 
 
 @njit
@@ -398,11 +438,12 @@ def _fill(first, stop, slope, offset, t, col_first, depth_row, id_row):
 
 def warmup() -> None:
     """Compile the scan-line kernel on two overlapping triangles."""
-    from pixelpath.raster._kernels import overlapping_pair
+    from pixelpath.raster._kernels import overlapping_pair, tiny_cutouts
 
     setup, rows = overlapping_pair()
     offsets = np.array([0, 2], dtype=np.intp)
     items = np.arange(2, dtype=np.intp)
     counts = np.zeros((8, len(LINE_COUNTS)), dtype=np.intp)
+    cutouts = tiny_cutouts(setup, np.array([[0, 1, 2], [0, 1, 2]], dtype=np.intp))
     scan_bands(np.zeros(1, dtype=np.intp), setup, rows, offsets, items, 32, 0, 0,
-               np.empty((8, 8)), np.empty((8, 8), dtype=np.int32), counts)
+               np.empty((8, 8)), np.empty((8, 8), dtype=np.int32), counts, cutouts)
