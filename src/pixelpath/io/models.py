@@ -38,8 +38,9 @@ where an MTL file sets ``Ka`` above 0.
 ============================  =================================================================
 File                          pixelpath ``Material``
 ============================  =================================================================
-glTF ``baseColorFactor``      ``color`` = its RGB (linear); its alpha A gives
-                              ``transparency = 1 - A`` under ``alphaMode`` BLEND
+glTF ``baseColorFactor``      ``color`` = its RGB (linear); its alpha A gives ``alpha = A``
+                              under ``alphaMode`` MASK and ``transparency = 1 - A`` under
+                              BLEND
 glTF ``baseColorTexture``     ``texture`` (sRGB); its alpha channel is dropped when the
                               ``alphaMode`` is OPAQUE (the default)
 glTF ``metallicFactor`` m     ``kd = 1 - 0.6 m``; ``ks = (1 - r)^2 (0.25 + 0.75 m)``
@@ -55,8 +56,14 @@ glTF sampler of the           ``texture_wrap`` from ``wrapS``: REPEAT (10497, th
                               (9984-9987) "trilinear", absent "trilinear" (glTF leaves the
                               choice to the viewer). No sampler: "repeat", "trilinear".
 glTF ``doubleSided``          ``double_sided``
-glTF ``alphaMode``            OPAQUE: texture alpha ignored; MASK (with ``alphaCutoff``) and
-                              BLEND: the texture keeps its alpha channel
+glTF ``alphaMode``            OPAQUE: every alpha ignored (``alpha_cutoff = None``). MASK:
+                              ``alpha_cutoff`` = ``alphaCutoff`` (0.5 when absent): where
+                              A × texture alpha × ``COLOR_0`` alpha is below it the surface
+                              is cut away, in every method and the ray tracer. BLEND is
+                              drawn as MASK with ``alpha_cutoff = 0.5`` on the texture's and
+                              ``COLOR_0``'s alpha (pixelpath does not blend: texels at least
+                              half opaque are drawn opaque, the others cut), A going to the
+                              ray tracer's ``transparency`` as above
 MTL ``Kd``                    ``color`` (decoded from sRGB), ``kd = 1``
 MTL ``Ka``                    ``ka`` = its mean when above 0 (0, a common export, would leave
                               the unlit side black: then ``ka = kd``)
@@ -531,6 +538,7 @@ def _pbr_material(path: Path, source: Any, gltf: dict | None, shared: dict) -> M
     roughness = 1.0 if source.roughnessFactor is None else float(source.roughnessFactor)
     metallic, roughness = (float(np.clip(x, 0.0, 1.0)) for x in (metallic, roughness))
     mode = (source.alphaMode or "OPAQUE").upper()
+    alpha_cutoff = _alpha_cutoff(source, mode)
     texture = _texture(path, source.baseColorTexture, shared, keep_alpha=mode != "OPAQUE")
     if texture is None:
         _refuse_lost_texture(path, source, gltf)
@@ -550,7 +558,34 @@ def _pbr_material(path: Path, source: Any, gltf: dict | None, shared: dict) -> M
         texture_filter=texture_filter,
         texture_wrap=texture_wrap,
         double_sided=bool(source.doubleSided),
+        alpha=float(np.clip(rgba[3], 0.0, 1.0)) if mode == "MASK" else 1.0,
+        alpha_cutoff=alpha_cutoff,
     )
+
+
+# BLEND is drawn as MASK with this cutoff: a texel at least half opaque is drawn, others cut.
+BLEND_CUTOFF = 0.5
+
+
+def _alpha_cutoff(source: Any, mode: str) -> float | None:
+    """Return the ``alpha_cutoff`` of a glTF material's ``alphaMode`` (see the table).
+
+    A cutoff that is not a number >= 0 is refused (the caller names the file and the part).
+    """
+    if mode == "BLEND":
+        return BLEND_CUTOFF
+    if mode != "MASK":
+        return None
+    value = 0.5 if source.alphaCutoff is None else source.alphaCutoff
+    try:
+        cutoff = float(value)
+    except (TypeError, ValueError):
+        cutoff = math.nan
+    if not (math.isfinite(cutoff) and cutoff >= 0.0):
+        raise ValueError(
+            f"material {source.name!r} has alphaCutoff {value!r}; glTF asks for a number >= 0"
+        )
+    return cutoff
 
 
 def _shininess(roughness: float) -> float:
