@@ -104,13 +104,18 @@ def _scan_band(setup, rows, band_items, first_row, stop_row, x0, y0, inv_depth, 
     stack = np.empty((width + 1, 2), dtype=np.intp)  # spans [first, stop) still to resolve
     active = np.intp(0)  # not the literal 0: Numba compiled its callees again for it
     masked = cutouts.masked
+    tested = False  # does the band hold an alpha-tested triangle?
+    for k in range(n):
+        if masked[band_items[k]]:
+            tested = True
+            break
     for j in range(first_row, stop_row):
         line = counts[j - y0]
         start, stop = entering[j - first_row], entering[j - first_row + 1]
         active = _next_line(floats, ints, start, stop, edges, xs, active, j, line)
         _walk(setup, band_items, ints, edges[0], xs[0], active, j + 0.5, x0, x0 + width,
-              inv_depth[j - y0], triangle_id[j - y0], line, held, planes, where, stack, masked,
-              cutouts)
+              inv_depth[j - y0], triangle_id[j - y0], line, held, planes, where, stack, tested,
+              masked, cutouts)
 
 
 @njit
@@ -257,14 +262,15 @@ def _merge_sort(edges, xs, n, scratch, scratch_x):
 
 @njit(refcount=False)
 def _walk(setup, band_items, ints, ael, ael_x, active, y, col_first, col_stop, depth_row, id_row,
-          line, held, planes, where, stack, masked, cutouts):
+          line, held, planes, where, stack, tested, masked, cutouts):
     """Walk one scan line's crossings left to right, filling the span before each.
 
     Each crossing puts its triangle into the in-list (with its 1/w along the line) or takes
     it out (the last place moves into its place). While an alpha-tested triangle is in the
-    list, spans are decided pixel by pixel (:func:`_by_pixel`). Called per scan line with a
-    score of arrays (the alpha test's record among them): compiled without reference
-    counting, which would update each array's count atomically at every call.
+    list, spans are decided pixel by pixel (:func:`_by_pixel`); they are only counted when
+    the band holds one (``tested``). Called per scan line with a score of arrays (the alpha
+    test's record among them): compiled without reference counting, which would update each
+    array's count atomically at every call.
     """
     inside = np.intp(0)  # not the literal 0: Numba compiled its callees again for it
     holes = 0  # alpha-tested triangles in the list
@@ -305,10 +311,12 @@ def _walk(setup, band_items, ints, ael, ael_x, active, y, col_first, col_stop, d
             planes[inside, 0] = setup[t, KEY_PLANE]
             planes[inside, 1] = setup[t, KEY_PLANE + 1] * y + setup[t, KEY_PLANE + 2]
             inside += 1
-            holes += 1 if masked[t] else 0
+            if tested:
+                holes += 1 if masked[t] else 0
         else:
             inside -= 1
-            holes -= 1 if masked[held[place, 1]] else 0
+            if tested:
+                holes -= 1 if masked[held[place, 1]] else 0
             where[owner] = -1
             if place != inside:
                 where[held[inside, 0]] = place
