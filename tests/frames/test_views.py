@@ -135,6 +135,7 @@ def test_resume_renders_only_what_is_missing_or_broken(tmp_path):
     (folder / "images" / "view_0001.png").unlink()
     (folder / "depth" / "view_0003.npy").write_bytes(b"\x93NUMPY broken")
     (folder / "transforms.json").unlink()
+    (folder / "images" / ".view_0001.png.k3x9_q.tmp").write_bytes(b"\x89PNG")  # a died write
     rendered = []
     pp.render_views(DUCK, 4, folder, resume=True, progress=rendered.append, **options)
     assert sum(rendered) == 2

@@ -76,6 +76,8 @@ REQUEST_FILE = ".pixelpath-views.json"
 MOST_VIEWS_PER_TASK = 64
 SHARES_PER_WORKER = 20
 _VIEW_FILE = re.compile(r"view_\d+\.(png|npy)")
+# What an atomic write leaves when its process dies half-way (a worker killed mid-view).
+_HALF_WRITTEN = re.compile(r"\.view_\d+\.(png|npy)\..+\.tmp")
 
 
 @dataclasses.dataclass(frozen=True)
@@ -432,6 +434,8 @@ def run_views(
         plan.job, plan.job.options, tasks, _ignore, client, progress,
         most_per_batch=MOST_VIEWS_PER_TASK, least_per_batch=_least_per_task(client, len(tasks)),
     )
+    for leftover in _in_view_folders(folder, _HALF_WRITTEN):  # from a worker that died
+        leftover.unlink(missing_ok=True)
     path = folder / "transforms.json"
     write_bytes(path, (json.dumps(plan.transforms(), indent=2) + "\n").encode())
     return path
@@ -494,10 +498,15 @@ def _check_render(job: ViewJob) -> None:
 def _previous_files(folder: Path) -> list[Path]:
     """Return the files a dataset of views left in ``folder``: views, JSON, request."""
     found = [folder / name for name in ("transforms.json", REQUEST_FILE)]
-    found = [path for path in found if path.is_file()]
+    return [path for path in found if path.is_file()] + _in_view_folders(folder, _VIEW_FILE)
+
+
+def _in_view_folders(folder: Path, pattern: re.Pattern) -> list[Path]:
+    """Return the files of the views' sub-folders whose names match ``pattern``."""
+    found = []
     for sub in FOLDERS.values():
         if (folder / sub).is_dir():
-            found.extend(p for p in (folder / sub).iterdir() if _VIEW_FILE.fullmatch(p.name))
+            found.extend(p for p in (folder / sub).iterdir() if pattern.fullmatch(p.name))
     return found
 
 
