@@ -190,10 +190,13 @@ def test_bad_requests_fail_before_anything_is_written(tmp_path, kwargs, error, m
 
 
 def test_a_model_that_cannot_be_framed_is_refused(tmp_path):
-    floor = pp.Plane((0, 0, 0), (0, 1, 0))
-    only_a_floor = pp.Scene(pp.Camera(eye=(0, 1, 5), target=(0, 0, 0)), [floor])
+    camera = pp.Camera(eye=(0, 1, 5), target=(0, 0, 0))
+    only_a_floor = pp.Scene(camera, [pp.Plane((0, 0, 0), (0, 1, 0))])
     with pytest.raises(ValueError, match="no bounded objects"):
         pp.render_views(only_a_floor, 2, tmp_path / "v")
+    huge = pp.Mesh(np.array([[-1e308, 0, 0], [1e308, 0, 0], [0, 1e308, 0]]), [[0, 1, 2]])
+    with pytest.raises(ValueError, match=r"cannot be framed: its bounds .* overflow"):
+        pp.render_views(pp.Scene(camera, [huge]), 2, tmp_path / "v")
     assert not (tmp_path / "v").exists()
 
 

@@ -188,17 +188,25 @@ def place_cameras(
     from pixelpath.io.models import depth_range, framing_distance
 
     bounds = _framed_bounds(scene)
-    center = bounds.mean(axis=0)
     ups = _ups(directions)
+    with np.errstate(over="ignore", invalid="ignore"):  # a model too large overflows: below
+        center = bounds.mean(axis=0)
+        radius = _radius(scene, center)
+        framed = float(np.max(framing_distance(bounds, directions, size, fov, up=ups)))
+    if not (math.isfinite(radius) and math.isfinite(framed) and np.isfinite(center).all()):
+        raise ValueError(
+            f"the scene cannot be framed: its bounds {bounds.tolist()} overflow float64 "
+            f"arithmetic"
+        )
     if distance is None:
-        distance = float(np.max(framing_distance(bounds, directions, size, fov, up=ups)))
+        distance = framed
     elif (
         isinstance(distance, bool)
         or not isinstance(distance, numbers.Real)
         or not (math.isfinite(distance) and distance > 0)
     ):
         raise ValueError(f"distance must be a positive number of scene units, got {distance!r}")
-    near, far = depth_range(float(distance), _radius(scene, center))
+    near, far = depth_range(float(distance), radius)
     return ViewCameras(center + distance * directions, ups, center, float(fov), tuple(size),
                        near, far)
 
