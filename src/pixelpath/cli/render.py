@@ -64,10 +64,7 @@ def register(subparsers: Any) -> None:
         help="a .toml scene file, a model file (.glb .gltf .obj .ply .stl) or a bundled scene",
     )
     parser.add_argument("-o", "--output", required=True, help="image file to write (.png, ...)")
-    parser.add_argument(
-        "--method", default="zbuffer", choices=METHOD_NAMES, help="hidden-surface method"
-    )
-    parser.add_argument("--shading", default="phong", choices=SHADINGS, help="shading mode")
+    add_shading_options(parser)
     parser.add_argument(
         "--style",
         default="filled",
@@ -79,15 +76,6 @@ def register(subparsers: Any) -> None:
         "--frame",
         action="store_true",
         help="model files: frame the whole model from the front, even if the file has a camera",
-    )
-    parser.add_argument("--ssaa", type=int, default=1, help="supersampling per side (1 = none)")
-    parser.add_argument("--no-cull", action="store_true", help="draw back faces too (two-sided)")
-    parser.add_argument("--blinn", action="store_true", help="Blinn-Phong highlights")
-    parser.add_argument(
-        "--gamma",
-        type=parse_gamma,
-        help="encode with this display gamma (e.g. 2.2), 'srgb' or 'linear' (default: the "
-        "scene's encoding: sRGB for model files, linear for scene files)",
     )
     parser.add_argument(
         "--transparent",
@@ -138,6 +126,23 @@ def register(subparsers: Any) -> None:
     add_frame_options(parser)
 
 
+def add_shading_options(parser: argparse.ArgumentParser) -> None:
+    """Add how pictures are drawn and encoded (``render`` and ``views`` share them)."""
+    parser.add_argument(
+        "--method", default="zbuffer", choices=METHOD_NAMES, help="hidden-surface method"
+    )
+    parser.add_argument("--shading", default="phong", choices=SHADINGS, help="shading mode")
+    parser.add_argument("--ssaa", type=int, default=1, help="supersampling per side (1 = none)")
+    parser.add_argument("--no-cull", action="store_true", help="draw back faces too (two-sided)")
+    parser.add_argument("--blinn", action="store_true", help="Blinn-Phong highlights")
+    parser.add_argument(
+        "--gamma",
+        type=parse_gamma,
+        help="encode with this display gamma (e.g. 2.2), 'srgb' or 'linear' (default: the "
+        "scene's encoding: sRGB for model files, linear for scene files)",
+    )
+
+
 def parse_size(text: str) -> tuple[int, int]:
     """Return (width, height) from ``WIDTHxHEIGHT``; raise CommandError on anything else.
 
@@ -174,10 +179,10 @@ def parse_gamma(text: str) -> float | str:
     return value
 
 
-def parse_aovs_option(text: str) -> tuple[str, ...]:
+def parse_aovs_option(text: str, allowed: tuple[str, ...] = AOVS) -> tuple[str, ...]:
     """Return the AOV names of ``--aov`` (argparse reports a bad one as a usage error)."""
     try:
-        return parse_aovs(text)
+        return parse_aovs(text, allowed)
     except ValueError as exc:
         raise argparse.ArgumentTypeError(str(exc)) from None
 

@@ -3,17 +3,20 @@
 from __future__ import annotations
 
 import argparse
+import functools
 import time
 from typing import Any
 
 from pixelpath.cli._common import CommandError, add_command, compile_kernels, console, progress
 from pixelpath.cli._frames import cluster_for, render_options, since
-from pixelpath.cli.render import parse_gamma, parse_size, scene_path
+from pixelpath.cli.render import (
+    add_shading_options,
+    parse_aovs_option,
+    parse_size,
+    scene_path,
+)
 from pixelpath.frames.poses import LAYOUTS
 from pixelpath.frames.views import VIEW_AOVS
-from pixelpath.io.aovs import parse_aovs
-from pixelpath.raster.shading import SHADINGS
-from pixelpath.renderer import METHOD_NAMES
 
 
 def register(subparsers: Any) -> None:
@@ -68,25 +71,14 @@ def register(subparsers: Any) -> None:
     parser.add_argument("--fov", type=float, help="vertical field of view, degrees (default 45)")
     parser.add_argument(
         "--aov",
-        type=_aovs_option,
+        type=functools.partial(parse_aovs_option, allowed=VIEW_AOVS),
         default=(),
         metavar="LIST",
         help=f"also write, comma-separated: {', '.join(VIEW_AOVS)}",
     )
-    parser.add_argument(
-        "--method", default="zbuffer", choices=METHOD_NAMES, help="hidden-surface method"
-    )
-    parser.add_argument("--shading", default="phong", choices=SHADINGS, help="shading mode")
-    parser.add_argument("--ssaa", type=int, default=1, help="supersampling per side (1 = none)")
-    parser.add_argument("--no-cull", action="store_true", help="draw back faces too (two-sided)")
-    parser.add_argument("--blinn", action="store_true", help="Blinn-Phong highlights")
+    add_shading_options(parser)
     parser.add_argument(
         "--transparent", action="store_true", help="RGBA images, the background transparent"
-    )
-    parser.add_argument(
-        "--gamma",
-        type=parse_gamma,
-        help="encode with this display gamma, 'srgb' or 'linear' (default: the scene's)",
     )
     cluster = parser.add_argument_group("clusters (Dask) and reruns")
     cluster.add_argument(
@@ -152,10 +144,3 @@ def run(args: argparse.Namespace) -> int:
             f"{args.method}) in {since(start)}{rate}{kept}"
         )
     return 0
-
-
-def _aovs_option(text: str) -> tuple[str, ...]:
-    try:
-        return parse_aovs(text, VIEW_AOVS)
-    except ValueError as exc:
-        raise argparse.ArgumentTypeError(str(exc)) from None

@@ -626,7 +626,7 @@ def _rasterize_band(setup, rows, offsets, items, band, band_rows, x0, y0, inv_de
 
     The buffers (h, w) cover image columns [x0, x0 + w) and rows [y0, y0 + h); pixel centres
     are computed in image coordinates, so a region gets exactly the pixels of the whole image.
-    Alpha-tested triangles (``cutouts.masked``) go through :func:`_depth_test_masked`.
+    Alpha-tested triangles (``cutouts.masked``) go through :func:`_draw_masked`.
     """
     height, width = inv_depth.shape
     band_first, band_stop = _band_rows(band, band_rows, y0, height)
@@ -635,8 +635,8 @@ def _rasterize_band(setup, rows, offsets, items, band, band_rows, x0, y0, inv_de
     for k in range(offsets[band], offsets[band + 1]):
         t = items[k]
         if masked[t]:
-            _depth_test_masked(t, max(rows[t, 0], band_first), min(rows[t, 1], band_stop), x0,
-                               y0, inv_depth, triangle_id, cutouts)
+            _draw_masked(t, max(rows[t, 0], band_first), min(rows[t, 1], band_stop), x0, y0,
+                         inv_depth, triangle_id, cutouts, True)
             continue
         record = setup[t]
         pa, pb, pc = record[KEY_PLANE], record[KEY_PLANE + 1], record[KEY_PLANE + 2]
@@ -652,11 +652,12 @@ def _rasterize_band(setup, rows, offsets, items, band, band_rows, x0, y0, inv_de
 
 
 @njit
-def _depth_test_masked(t, row_first, row_stop, x0, y0, inv_depth, triangle_id, cutouts):
-    """Depth-test alpha-tested triangle t's pixels on image rows [row_first, row_stop).
+def _draw_masked(t, row_first, row_stop, x0, y0, inv_depth, triangle_id, cutouts, depth_test):
+    """Draw alpha-tested triangle t on image rows [row_first, row_stop), skipping its holes.
 
-    As the z-buffer's loop, but a sample that wins the depth test is kept only where the
-    alpha test does not cut it away (:func:`cut_away_at`): what lies behind shows through.
+    As the z-buffer's loop (``depth_test``: a sample must be nearer than what is there) or the
+    painter's (it paints over), but only where the alpha test does not cut the sample away
+    (:func:`cut_away_at`): what lies behind shows through.
     """
     width = inv_depth.shape[1]
     record = cutouts.setup[t]
@@ -667,7 +668,8 @@ def _depth_test_masked(t, row_first, row_stop, x0, y0, inv_depth, triangle_id, c
         row_value = pb * y + pc
         for i in range(first, stop):
             inv_w = pa * (i + 0.5) + row_value
-            if inv_w > inv_depth[j - y0, i - x0] and not cut_away_at(cutouts, t, i + 0.5, y):
+            nearer = not depth_test or inv_w > inv_depth[j - y0, i - x0]
+            if nearer and not cut_away_at(cutouts, t, i + 0.5, y):
                 inv_depth[j - y0, i - x0] = inv_w
                 triangle_id[j - y0, i - x0] = t
 
@@ -696,7 +698,7 @@ def _paint_band(setup, rows, offsets, items, order, band, band_rows, x0, y0, inv
 
     No depth test: the painter's and BSP methods list the triangles back to front. The 1/w of
     the triangle drawn last is kept, so the visible surface's depth is known. An alpha-tested
-    triangle paints only the pixels its alpha test keeps (:func:`_paint_masked`).
+    triangle paints only the pixels its alpha test keeps (:func:`_draw_masked`).
     """
     height, width = inv_depth.shape
     band_first, band_stop = _band_rows(band, band_rows, y0, height)
@@ -705,8 +707,8 @@ def _paint_band(setup, rows, offsets, items, order, band, band_rows, x0, y0, inv
     for k in range(offsets[band], offsets[band + 1]):
         t = order[items[k]]
         if masked[t]:
-            _paint_masked(t, max(rows[t, 0], band_first), min(rows[t, 1], band_stop), x0, y0,
-                          inv_depth, triangle_id, cutouts)
+            _draw_masked(t, max(rows[t, 0], band_first), min(rows[t, 1], band_stop), x0, y0,
+                         inv_depth, triangle_id, cutouts, False)
             continue
         record = setup[t]
         pa, pb, pc = record[KEY_PLANE], record[KEY_PLANE + 1], record[KEY_PLANE + 2]
@@ -715,22 +717,6 @@ def _paint_band(setup, rows, offsets, items, order, band, band_rows, x0, y0, inv
             first, stop = scanline_span(record, y, x0, x0 + width)
             row_value = pb * y + pc
             for i in range(first, stop):
-                inv_depth[j - y0, i - x0] = pa * (i + 0.5) + row_value
-                triangle_id[j - y0, i - x0] = t
-
-
-@njit
-def _paint_masked(t, row_first, row_stop, x0, y0, inv_depth, triangle_id, cutouts):
-    """Paint alpha-tested triangle t over image rows [row_first, row_stop), skipping its holes."""
-    width = inv_depth.shape[1]
-    record = cutouts.setup[t]
-    pa, pb, pc = record[KEY_PLANE], record[KEY_PLANE + 1], record[KEY_PLANE + 2]
-    for j in range(row_first, row_stop):
-        y = j + 0.5
-        first, stop = scanline_span(record, y, x0, x0 + width)
-        row_value = pb * y + pc
-        for i in range(first, stop):
-            if not cut_away_at(cutouts, t, i + 0.5, y):
                 inv_depth[j - y0, i - x0] = pa * (i + 0.5) + row_value
                 triangle_id[j - y0, i - x0] = t
 
