@@ -168,7 +168,7 @@ class Exercise:
         The given values, JSON-serializable (lists, not tuples or arrays).
     question : str
         The question as Markdown. Where the notes would draw a figure, the question links
-        to ``{figure_name}`` (see :meth:`figure`), which the exports write beside it.
+        to :attr:`figure_name` (see :meth:`figure`), which the exports write beside it.
     answer : dict
         The answer, one entry per :attr:`fields` name, exact (not rounded).
     fields : tuple of Field
@@ -197,7 +197,7 @@ class Exercise:
     @property
     def name(self) -> str:
         """A file-friendly identifier: ``"<topic>-<seed>"`` (``"notes-<topic>"`` for the notes)."""
-        return f"notes-{self.topic}" if self.seed is None else f"{self.topic}-{self.seed}"
+        return exercise_name(self.topic, self.seed)
 
     @property
     def figure_name(self) -> str:
@@ -313,6 +313,11 @@ class Exercise:
             return self.question
         uri = "data:image/png;base64," + base64.b64encode(png).decode("ascii")
         return self.question.replace(f"({self.figure_name})", f"({uri})")
+
+
+def exercise_name(topic: str, seed: int | None) -> str:
+    """Return the identifier of an exercise: ``"<topic>-<seed>"``, or ``"notes-<topic>"``."""
+    return f"notes-{topic}" if seed is None else f"{topic}-{seed}"
 
 
 def shown(value: Any) -> str:

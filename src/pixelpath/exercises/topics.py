@@ -16,7 +16,7 @@ import random
 from collections.abc import Callable
 from typing import Any
 
-from pixelpath.exercises.exercise import Exercise, Field, Step
+from pixelpath.exercises.exercise import Exercise, Field, Step, exercise_name
 
 __all__ = ["DIFFICULTIES", "TOPIC_REGISTRY", "Solved", "Topic", "exercise_for", "register",
            "rng_for"]
@@ -30,7 +30,7 @@ DIFFICULTIES = ("easy", "standard", "edge")
 class Solved:
     """What a topic's ``solve`` returns: everything of an exercise but its identity."""
 
-    question: str
+    question: str  # a figure's link target is written "(FIGURE)"
     answer: dict
     fields: tuple[Field, ...]
     steps: tuple[Step, ...]
@@ -62,9 +62,10 @@ def exercise_for(topic: Topic, params: dict, seed: int | None, difficulty: str,
                  errata: dict | None = None) -> Exercise:
     """Solve ``params`` of ``topic`` into an :class:`Exercise`."""
     solved = topic.solve(params)
+    question = solved.question.replace("(FIGURE)", f"({exercise_name(topic.name, seed)}.png)")
     return Exercise(
         topic=topic.name, seed=seed, difficulty=difficulty, title=topic.title,
-        params=params, question=solved.question, answer=solved.answer, fields=solved.fields,
+        params=params, question=question, answer=solved.answer, fields=solved.fields,
         steps=solved.steps, marking=solved.marking, draw=solved.draw, errata=errata or {},
     )
 
