@@ -210,14 +210,18 @@ class Exercise:
         parts = []
         for number, step in enumerate(self.steps, start=1):
             parts.append(f"**Step {number}. {step.title}**\n")
-            parts.extend(f"{line}  " for line in step.lines)
+            # Two trailing spaces break a Markdown line; table rows and blank lines need none.
+            parts.extend(line if not line or line.startswith("|") else f"{line}  "
+                         for line in step.lines)
             parts.append("")
         parts.append("**Answer**\n")
         parts.append("| value | answer | exact |")
         parts.append("|---|---|---|")
         for field in self.fields:
             value = self.answer[field.name]
-            parts.append(f"| {field.name}: {field.label} | {shown(value)} | {exact(value)} |")
+            cells = (f"{field.name}: {field.label}", shown(value), exact(value))
+            # A "|" inside a cell (|P0 − C|²) would end it.
+            parts.append("| " + " | ".join(c.replace("|", "\\|") for c in cells) + " |")
         for name, printed in self.errata.items():
             parts.append("")
             parts.append(f"The notes print {name} = {printed}; that is wrong (see the errata).")
@@ -328,6 +332,27 @@ def shown(value: Any) -> str:
     >>> shown(0.492304), shown([1.0, 2.5]), shown(None), shown([[0, 1], [2.25, 3]])
     ('0.4923', '(1, 2.5)', 'none', '(0, 1) (2.25, 3)')
     """
+    return _written(value, _rounded)
+
+
+def exact(value: Any) -> str:
+    """Write a value with up to 10 significant digits, for the answer key's last column.
+
+    Examples
+    --------
+    >>> exact(2 / 3), exact([[0, 1 / 3], [1, 2]])
+    ('0.6666666667', '(0, 0.3333333333) (1, 2)')
+    """
+    return _written(value, lambda number: f"{number:.10g}")
+
+
+def _rounded(number: float) -> str:
+    text = f"{number:.4f}".rstrip("0").rstrip(".")
+    return "0" if text in ("-0", "") else text
+
+
+def _written(value: Any, number: Callable[[float], str]) -> str:
+    """Write numbers, vectors, polygons (points), lists of polygons and labels."""
     if value is None:
         return "none"
     if isinstance(value, bool):
@@ -335,32 +360,20 @@ def shown(value: Any) -> str:
     if isinstance(value, str):
         return value
     if isinstance(value, Sequence):
-        if value and all(isinstance(v, Sequence) and not isinstance(v, str) for v in value):
-            if value and all(isinstance(w, Sequence) and not isinstance(w, str)
-                             for v in value for w in v):
-                return "; ".join(shown(v) for v in value)
-            return " ".join(shown(v) for v in value)
-        if all(isinstance(v, str) for v in value):
-            return ", ".join(value)
-        return "(" + ", ".join(shown(v) for v in value) + ")"
-    number = float(value)
-    if math.isinf(number):
-        return "∞" if number > 0 else "−∞"
-    text = f"{number:.4f}".rstrip("0").rstrip(".")
-    return "0" if text in ("-0", "") else text
+        items = [_written(v, number) for v in value]
+        if value and all(isinstance(v, str) for v in value):
+            return ", ".join(items)
+        if value and all(_is_list(v) for v in value):
+            return ("; " if all(_is_list(w) for v in value for w in v) else " ").join(items)
+        return "(" + ", ".join(items) + ")"
+    x = float(value)
+    if math.isinf(x):
+        return "∞" if x > 0 else "−∞"
+    return number(x)
 
 
-def exact(value: Any) -> str:
-    """Write a value with up to 10 significant digits, for the answer key's last column."""
-    if isinstance(value, (bool, str)) or value is None:
-        return shown(value)
-    if isinstance(value, Sequence):
-        return shown([_exact_number(v) if not isinstance(v, Sequence) else v for v in value])
-    return f"{float(value):.10g}"
-
-
-def _exact_number(value: Any) -> Any:
-    return float(f"{float(value):.10g}") if isinstance(value, (int, float)) else value
+def _is_list(value: Any) -> bool:
+    return isinstance(value, Sequence) and not isinstance(value, str)
 
 
 def _label(value: Any) -> str:

@@ -34,7 +34,7 @@ import numpy as np
 
 from pixelpath.scene import Plane, Scene, Sphere
 
-__all__ = ["LightTest", "RayNode", "RayTree", "SphereQuadratic", "ray_tree"]
+__all__ = ["LightTest", "RayNode", "RayTree", "SphereQuadratic", "ray_tree", "sphere_quadratic"]
 
 LOG_LIMIT = 1 << 14  # rays logged per pixel at most (the colour is exact beyond it)
 _KINDS = ("primary", "reflected", "refracted")
@@ -370,7 +370,8 @@ def _node(scene, world, settings, record, light_records, children) -> RayNode:
             for k in range(len(world.lights))
         )
         if isinstance(scene.objects[obj], Sphere):
-            quadratic = _quadratic(origin, direction, scene.objects[obj])
+            sphere = scene.objects[obj]
+            quadratic = sphere_quadratic(origin, direction, sphere.center, sphere.radius)
     return RayNode(
         kind=_KINDS[int(record[wk.KIND])],
         depth=int(record[wk.DEPTH]),
@@ -433,11 +434,21 @@ def _blocker(record) -> int | None:
     return int(record[1]) if record[0] == 0.0 and record[1] >= 0 else None
 
 
-def _quadratic(origin, direction, sphere) -> SphereQuadratic:
-    f = origin - sphere.center
+def sphere_quadratic(origin: Any, direction: Any, center: Any, radius: float) -> SphereQuadratic:
+    """Set up the notes' ray-sphere quadratic for one ray and solve it.
+
+    Examples
+    --------
+    >>> from pixelpath.raytrace.explain import sphere_quadratic
+    >>> q = sphere_quadratic((0, 0, 5), (0, 0, -1), (0, 0, 0), 1.0)
+    >>> q.a, q.b, q.c, q.discriminant, q.roots
+    (1.0, -10.0, 24.0, 4.0, (4.0, 6.0))
+    """
+    direction = np.asarray(direction, dtype=np.float64)
+    f = np.asarray(origin, dtype=np.float64) - np.asarray(center, dtype=np.float64)
     a = float(direction @ direction)
     b = float(2.0 * direction @ f)
-    c = float(f @ f - sphere.radius**2)
+    c = float(f @ f - float(radius) ** 2)
     disc = b * b - 4.0 * a * c
     roots: tuple[float, ...] = ()
     if disc >= 0:
