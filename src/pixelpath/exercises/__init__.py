@@ -10,14 +10,14 @@ Examples
 >>> from pixelpath import exercises
 >>> ex = exercises.make("rgb-hsv", seed=1)
 >>> ex.params
-{'rgb': [0.65, 0.85, 0.3]}
+{'rgb': [0.65, 0.8, 0.05]}
 >>> {k: round(v, 4) for k, v in ex.answer.items()}
-{'h': 81.8182, 's': 0.6471, 'v': 0.85}
->>> ex.check({"h": 82, "s": 0.65, "v": 0.85}).correct
+{'h': 72.0, 's': 0.9375, 'v': 0.8}
+>>> ex.check({"h": 72, "s": 0.94, "v": 0.8}).correct
 True
->>> result = ex.check({"h": 82, "s": 0.35, "v": 0.85})
->>> result.first_wrong
-'s'
+>>> result = ex.check({"h": 72, "s": 0.6, "v": 0.8})
+>>> result.first_wrong, result.feedback
+('s', 's is not right: look at step 6 (saturation S); s should be 0.9375.')
 """
 
 from __future__ import annotations
@@ -104,8 +104,8 @@ def from_notes() -> list[Exercise]:
     --------
     >>> from pixelpath import exercises
     >>> phong = next(e for e in exercises.from_notes() if e.topic == "phong-intensity")
-    >>> round(phong.answer["I"], 4), phong.errata
-    (0.4923, {'I': '0.47005'})
+    >>> round(phong.answer["I"], 4), phong.errata["I"]
+    (0.4923, '0.47005')
     """
     from pixelpath.exercises.notes import notes_exercises
 

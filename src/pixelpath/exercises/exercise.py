@@ -268,29 +268,34 @@ class Exercise:
             raise ValueError(f"unknown answer field(s) {', '.join(map(repr, unknown))} for "
                              f"{self.topic!r}; its fields are {', '.join(known)}")
         marks: dict[str, bool] = {}
+        given: dict[str, Any] = {}
         for field in sorted(self.fields, key=lambda f: f.step):
             if field.name in answer:
                 try:
-                    given = field.parse(answer[field.name])
+                    given[field.name] = field.parse(answer[field.name])
                 except (TypeError, ValueError) as exc:
                     raise ValueError(f"cannot read {field.name} = {answer[field.name]!r}: "
                                      f"{exc}") from None
-                marks[field.name] = field.matches(given, self.answer[field.name])
+                marks[field.name] = field.matches(given[field.name], self.answer[field.name])
             elif field.required:
                 marks[field.name] = False
         first_wrong = next((name for name, right in marks.items() if not right), None)
         return CheckResult(first_wrong is None, first_wrong,
-                           self._feedback(known.get(first_wrong), answer), marks)
+                           self._feedback(known.get(first_wrong), given), marks)
 
-    def _feedback(self, field: Field | None, answer: Mapping[str, Any]) -> str:
+    def _feedback(self, field: Field | None, given: Mapping[str, Any]) -> str:
         if field is None:
             return "Correct."
         step = self.steps[field.step - 1]
-        if field.name not in answer:
+        if field.name not in given:
             return (f"{field.name} ({field.label}) is missing: step {field.step} "
                     f"({step.title}) computes it.")
-        return (f"{field.name} is not right: look at step {field.step} ({step.title}); "
+        text = (f"{field.name} is not right: look at step {field.step} ({step.title}); "
                 f"{field.name} should be {shown(self.answer[field.name])}.")
+        printed = self.errata.get(field.name)
+        if printed is not None and field.matches(given[field.name], field.parse(printed)):
+            text += f" {printed} is the value the notes print, and the notes are wrong here."
+        return text
 
     def to_dict(self) -> dict:
         """Return the exercise as JSON-serializable data (what the playground and exports send)."""
