@@ -491,6 +491,11 @@ def _exercise(data):
     return make(TOPIC, seed=data["params"]["seed"], difficulty=DIFFICULTY)
 
 
+def _typed(field, value):
+    """The answer as a student types it in a text box (grid rows apart by spaces)."""
+    return " ".join(value) if field.kind == "grid" and value else shown(value)
+
+
 def generate(data):
     seed = abs(int(data["variant_seed"]))
     exercise = make(TOPIC, seed=seed, difficulty=DIFFICULTY)
@@ -506,7 +511,7 @@ def generate(data):
         if field.required:
             value = exercise.answer[field.name]
             data["correct_answers"][field.name] = (
-                float(value) if field.name in NUMBER_INPUTS else shown(value))
+                float(value) if field.name in NUMBER_INPUTS else _typed(field, value))
 
 
 def parse(data):
