@@ -19,7 +19,8 @@ from pixelpath.cli._common import CommandError, error_console
 
 # Order shown by ``pixelpath --help``.
 COMMANDS = (
-    "demo", "render", "views", "ray", "info", "color", "clip", "phong", "playground", "warmup"
+    "demo", "render", "views", "ray", "info", "color", "clip", "phong", "exercise", "playground",
+    "warmup",
 )
 
 
