@@ -351,3 +351,15 @@ def test_a_reexport_replaces_its_own_files_and_leaves_others(tmp_path):
     assert exercises.make("rgb-hsv", seed=2).question in (tmp_path / "worksheet.md").read_text()
     assert sorted(p.name for p in tmp_path.iterdir()) == ["answers.md", "notes.txt",
                                                           "worksheet.md"]
+
+
+def test_the_notes_examples_export_with_the_corrected_values(tmp_path):
+    (path,) = export_exercises(exercises.from_notes(), tmp_path, format="moodle")
+    quiz = ET.parse(path).getroot()
+    phong = next(q for q in quiz.findall("question")
+                 if q.findtext("idnumber") == "notes-phong-intensity")
+    # The notes' example: I = ka Ia + kd IL N.L + ks IL (R.V)^n, which the notes misprint.
+    right = 0.2 * 0.2 + 0.6 * 1 * 0.707 + 0.5 * 1 * 0.866 ** 20
+    assert phong.get("type") == "numerical"
+    assert float(phong.findtext("answer/text")) == pytest.approx(right, abs=1e-4)
+    assert "0.47005" in plain_text(phong.findtext("generalfeedback/text"))  # named as wrong
