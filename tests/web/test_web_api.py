@@ -12,9 +12,13 @@ import pytest
 pytest.importorskip("starlette", reason="the playground needs the web extra (starlette)")
 
 from PIL import Image
+from practice_answers import typed_answer
 from starlette.testclient import TestClient
 
-from pixelpath.web import Limits, api, create_app
+from pixelpath import exercises
+from pixelpath.exercises import Field, Step
+from pixelpath.exercises.topics import TOPIC_REGISTRY, Solved, Topic
+from pixelpath.web import Limits, api, create_app, practice
 from pixelpath.web.app import PAGES
 
 NOTCHED = [[0, 0], [6, 0], [6, 6], [0, 6], [0, 4], [4, 4], [4, 2], [0, 2]]
@@ -61,7 +65,8 @@ def test_every_script_and_style_a_page_names_is_shipped(client):
         html = client.get(path).text
         for asset in ("/static/common.js", "/static/style.css"):
             assert asset in html
-    for name in ("clipping", "illumination", "hidden-surfaces", "ray-tracing", "colour"):
+    for name in ("clipping", "illumination", "hidden-surfaces", "ray-tracing", "colour",
+                 "practice"):
         response = client.get(f"/static/{name}.js")
         assert response.status_code == 200 and "use strict" in response.text
 
@@ -432,3 +437,128 @@ def test_colour_from_another_model(client):
 )
 def test_colour_refuses_bad_inputs(client, body, message):
     assert message in refused(client.post("/api/colour", json=body))
+
+
+# ----- practice -------------------------------------------------------------------------------
+
+SHOWN_KEYS = {"topic", "seed", "difficulty", "title", "question", "figure", "marking", "fields"}
+
+
+def test_exercise_topics_lists_every_topic_with_its_title(client):
+    listing = client.get("/api/exercise-topics").json()
+    assert [topic["name"] for topic in listing["topics"]] == list(exercises.TOPICS)
+    assert all(topic["title"] == exercises.topic_title(topic["name"])
+               for topic in listing["topics"])
+    assert listing["difficulties"] == list(exercises.DIFFICULTIES)
+
+
+@pytest.mark.parametrize("topic", exercises.TOPICS)
+def test_an_exercise_shows_its_question_and_fields_but_not_its_answer(client, topic):
+    exercise = exercises.make(topic, 7, "edge")
+    shown = client.post("/api/exercise", json={"topic": topic, "seed": 7,
+                                               "difficulty": "edge"}).json()
+    assert set(shown) == SHOWN_KEYS
+    assert (shown["topic"], shown["seed"], shown["difficulty"]) == (topic, 7, "edge")
+    assert shown["question"].startswith("<") and "Step 1" not in shown["question"]
+    assert shown["fields"] == [
+        {"name": f.name, "label": f.label, "kind": f.kind, "required": f.required,
+         "step": f.step} for f in exercise.fields]
+    assert (shown["figure"] is None) == (exercise.figure_png() is None)
+
+
+def test_an_exercise_without_a_seed_gets_one_that_makes_it_again(client):
+    shown = client.post("/api/exercise", json={"topic": "rgb-hsv"}).json()
+    assert 0 <= shown["seed"] < practice.RANDOM_SEEDS
+    again = client.post("/api/exercise", json={"topic": "rgb-hsv", "seed": shown["seed"]})
+    assert again.json() == shown
+
+
+@pytest.mark.parametrize("topic", exercises.TOPICS)
+def test_the_right_answer_typed_is_marked_correct_and_the_solution_follows(client, topic):
+    exercise = exercises.make(topic, 5)
+    marked = client.post("/api/exercise/check", json={
+        "topic": topic, "seed": 5, "values": typed_answer(exercise)}).json()
+    assert marked["correct"] is True and marked["first_wrong"] is None
+    assert marked["marks"] == {field.name: True for field in exercise.fields}
+    assert marked["feedback"] == "Correct."
+    assert "<strong>Step 1." in marked["solution"] and "<table>" in marked["solution"]
+    assert (marked["solved_figure"] is None) == (exercise.figure_png(solution=True) is None)
+
+
+def test_a_wrong_value_is_the_first_wrong_with_feedback_naming_it(client):
+    exercise = exercises.make("rgb-hsv", 1)
+    values = {**typed_answer(exercise), "s": "0.35"}
+    marked = client.post("/api/exercise/check", json={
+        "topic": "rgb-hsv", "seed": 1, "difficulty": "standard", "values": values}).json()
+    assert marked["correct"] is False and marked["first_wrong"] == "s"
+    assert marked["marks"] == {"h": True, "v": True, "s": False}
+    assert marked["feedback"].startswith("s is not right: look at step 6")
+
+
+def test_a_required_value_left_out_is_missing(client):
+    marked = client.post("/api/exercise/check", json={
+        "topic": "rgb-hsv", "seed": 1, "values": {"s": "0.9375"}}).json()
+    assert marked["first_wrong"] == "h" and "missing" in marked["feedback"]
+    assert marked["marks"] == {"h": False, "v": False, "s": True}
+
+
+def test_a_figure_is_shown_inline_where_the_question_puts_it(client, monkeypatch):
+    def draw(solution):
+        return Image.new("RGB", (4, 3), "red" if solution else "white")
+
+    def solve(params):
+        return Solved(question="Clip the polygon ![the polygon](FIGURE); see [it](FIGURE).",
+                      answer={"n": 3}, fields=(Field("n", "the vertices", 1),),
+                      steps=(Step("count", ("n = 3",)),), marking="exact", draw=draw)
+
+    topic = Topic("figure-test", "A figure", "test", lambda rng, difficulty: {}, solve)
+    monkeypatch.setitem(TOPIC_REGISTRY, topic.name, topic)
+    monkeypatch.setattr(exercises, "TOPICS", (*exercises.TOPICS, topic.name))
+    shown = client.post("/api/exercise", json={"topic": topic.name, "seed": 2}).json()
+    assert decode_png(shown["figure"]).shape == (3, 4, 3)
+    assert f'<img src="{shown["figure"]}" alt="the polygon" class="figure" />' in shown["question"]
+    assert '<a href="#figure-box">it</a>' in shown["question"]
+    marked = client.post("/api/exercise/check", json={"topic": topic.name, "seed": 2,
+                                                      "values": {"n": "3"}}).json()
+    assert decode_png(marked["solved_figure"])[0, 0].tolist() == [255, 0, 0]
+
+
+def test_markdown_passes_no_html_or_inline_style_to_the_page():
+    html = practice.markdown_html("<script>alert(1)</script>\n\n| a | b |\n|:-:|--:|\n| 1 | 2 |")
+    assert "<script>" not in html and "&lt;script&gt;" in html
+    assert "style=" not in html
+    assert html.count('class="align-center"') == 2 and html.count('class="align-right"') == 2
+
+
+@pytest.mark.parametrize(
+    ("path", "body", "message"),
+    [
+        ("exercise", {"topic": "warnock-magic"}, "unknown topic 'warnock-magic'; choose from"),
+        ("exercise", {}, "unknown topic ''; choose from"),
+        ("exercise", {"topic": "rgb-hsv", "difficulty": "hard"}, "unknown difficulty 'hard'"),
+        ("exercise", {"topic": "rgb-hsv", "seed": -1}, "seed must lie in 0..4294967295, got -1"),
+        ("exercise", {"topic": "rgb-hsv", "seed": 2**40}, "seed must lie in 0..4294967295"),
+        ("exercise", {"topic": "rgb-hsv", "seed": "12a"}, "seed must be an integer, got '12a'"),
+        ("exercise", {"topic": "rgb-hsv", "seed": 1.5}, "seed must be an integer, got 1.5"),
+        ("exercise/check", {"topic": "rgb-hsv", "values": {}}, "seed is required"),
+        ("exercise/check", {"topic": "rgb-hsv", "seed": 1, "values": {"h": "abc"}},
+         "cannot read h = 'abc': expected a number"),
+        ("exercise/check", {"topic": "rgb-hsv", "seed": 1, "values": {"hue": "72"}},
+         "unknown answer field(s) 'hue' for 'rgb-hsv'; its fields are h, s, v"),
+        ("exercise/check", {"topic": "rgb-hsv", "seed": 1, "values": ["72"]},
+         "values must be an object of field names to typed values, got list"),
+        ("exercise/check", {"topic": "rgb-hsv", "seed": 1, "values": {"h": [72]}},
+         "the value of 'h' must be typed text or a finite number, got [72]"),
+        ("exercise/check", {"topic": "rgb-hsv", "seed": 1, "values": {"h": True}},
+         "the value of 'h' must be typed text or a finite number, got True"),
+        ("exercise/check", {"topic": "rgb-hsv", "seed": 1, "values": {"h": "7" * 2001}},
+         "the value of 'h' holds 2001 characters, more than the 2000 allowed"),
+    ],
+)
+def test_practice_refuses_bad_inputs_with_a_message(client, path, body, message):
+    assert message in refused(client.post(f"/api/{path}", json=body))
+
+
+def test_exercise_topics_is_a_listing_not_a_computation(client):
+    assert client.post("/api/exercise-topics").status_code == 405
+    assert client.get("/api/exercise").status_code == 405

@@ -8,6 +8,8 @@ result, checks that the browser logged no error, and keeps a screenshot of the p
 
 from __future__ import annotations
 
+import re
+
 import pytest
 
 pytest.importorskip("selenium", reason="the browser tests need selenium (the test extra)")
@@ -19,10 +21,13 @@ from playground_browser import (
     find_chromium,
     start_chromium,
 )
+from practice_answers import typed, typed_answer
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
 from selenium.webdriver.support.ui import Select, WebDriverWait
+
+from pixelpath import exercises
 
 pytestmark = pytest.mark.slow
 
@@ -92,7 +97,7 @@ def test_home_page_links_every_page(browser, playground):
     open_page(browser, playground, "/")
     links = [a.get_attribute("href") for a in browser.find_elements(By.CSS_SELECTOR, "nav a")]
     assert [link.removeprefix(playground.url) for link in links] == [
-        "", "clipping", "illumination", "hidden-surfaces", "ray-tracing", "colour"]
+        "", "clipping", "illumination", "hidden-surfaces", "ray-tracing", "colour", "practice"]
     no_errors_logged(browser)
     keep_screenshot(browser, "home")
 
@@ -209,3 +214,79 @@ def test_colour_picker_slider_and_typed_values(browser, playground):
     assert "K = min(C, M, Y)" in text_of(browser, "#model-cmyk")
     no_errors_logged(browser)
     keep_screenshot(browser, "colour")
+
+
+def new_exercise(driver, topic: str, seed: str = "") -> int:
+    """Make an exercise of ``topic`` on the practice page; return its seed (drawn if blank)."""
+    Select(driver.find_element(By.ID, "topic")).select_by_value(topic)
+    seed_box = driver.find_element(By.ID, "seed")
+    seed_box.clear()
+    seed_box.send_keys(seed)
+    driver.find_element(By.ID, "new").click()
+    title = exercises.topic_title(topic)
+    wait_for(driver, lambda d: text_of(d, "#title").startswith(f"{title} · seed {seed}"),
+             f"the {topic} exercise did not appear")
+    return int(re.search(r"seed (\d+)", text_of(driver, "#title")).group(1))
+
+
+def answer_with(driver, values: dict[str, str]) -> None:
+    """Type ``values`` into the answer boxes (clearing every box first) and press Check."""
+    for box in driver.find_elements(By.CSS_SELECTOR, "#answers input"):
+        box.clear()
+        box.send_keys(values.get(box.get_attribute("name"), ""))
+    driver.find_element(By.ID, "check").click()
+
+
+def test_practice_answer_right_then_wrong_and_read_the_solution(browser, playground):
+    open_page(browser, playground, "/practice")
+    wait_for(browser, lambda d: d.find_elements(By.CSS_SELECTOR, "#answers input"),
+             "the first exercise did not appear")
+    seed = new_exercise(browser, "rgb-hsv")
+    exercise = exercises.make("rgb-hsv", seed, "standard")
+    labels = text_of(browser, "#answers")
+    assert all(f"{field.name}: {field.label}" in labels for field in exercise.fields)
+
+    answer_with(browser, typed_answer(exercise))
+    wait_for(browser, lambda d: text_of(d, "#verdict") == "correct",
+             "the right answer was not marked correct")
+    assert text_of(browser, "#feedback") == "Correct."
+
+    saturation = exercise.answer["s"]
+    wrong = {**typed_answer(exercise), "s": typed("number", (saturation + 0.5) % 1)}
+    answer_with(browser, wrong)
+    wait_for(browser, lambda d: text_of(d, "#verdict") == "not yet",
+             "the wrong answer was not marked")
+    assert text_of(browser, "#feedback").startswith("s is not right: look at step 6")
+    row = browser.find_element(By.ID, "field-s")
+    assert row.get_attribute("class") == "wrong first-wrong" and row.text.endswith("✗")
+    assert browser.find_element(By.ID, "field-h").text.endswith("✓")
+
+    assert not browser.find_element(By.ID, "solution-box").is_displayed()
+    browser.find_element(By.ID, "show-solution").click()
+    wait_for(browser, lambda d: d.find_element(By.ID, "solution-box").is_displayed(),
+             "the worked solution was not shown")
+    assert "Step 1. Cmax" in text_of(browser, "#solution")
+    assert "s: the saturation S" in text_of(browser, "#solution table")
+    no_errors_logged(browser)
+    keep_screenshot(browser, "practice")
+
+
+def test_practice_figures_of_the_question_and_the_solution(browser, playground):
+    open_page(browser, playground, "/practice")
+    wait_for(browser, lambda d: d.find_elements(By.CSS_SELECTOR, "#answers input"),
+             "the first exercise did not appear")
+    assert new_exercise(browser, "sutherland-hodgman", "3") == 3
+    drawn = "return arguments[0].complete && arguments[0].naturalWidth > 0"
+    figure = browser.find_element(By.CSS_SELECTOR, "#question img.figure")
+    wait_for(browser, lambda d: d.execute_script(drawn, figure), "the figure was not drawn")
+    assert not browser.find_element(By.ID, "figure-box").is_displayed()  # shown once, inline
+
+    answer_with(browser, {})
+    wait_for(browser, lambda d: "missing" in text_of(d, "#feedback"),
+             "an empty answer was not marked as missing")
+    browser.find_element(By.ID, "show-solution").click()
+    solved = browser.find_element(By.ID, "solved-figure")
+    wait_for(browser, lambda d: d.execute_script(drawn, solved) and solved.is_displayed(),
+             "the solved figure was not drawn")
+    no_errors_logged(browser)
+    keep_screenshot(browser, "practice-figures")

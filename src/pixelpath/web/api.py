@@ -25,6 +25,7 @@ from typing import Any
 
 import numpy as np
 
+from pixelpath.web import practice
 from pixelpath.web._limits import (
     BadRequest,
     Limits,
@@ -38,6 +39,7 @@ from pixelpath.web._limits import (
 
 __all__ = [
     "ENDPOINTS",
+    "LISTINGS",
     "clip",
     "colour",
     "hidden_surfaces",
@@ -626,12 +628,22 @@ def jsonable(value: Any) -> Any:
     return value
 
 
-# Endpoint name (the path under /api/) -> handler.
-ENDPOINTS: dict[str, Callable[[dict[str, Any], Limits], dict[str, Any]]] = {
+Handler = Callable[[dict[str, Any], Limits], dict[str, Any]]
+
+# Endpoint name (the path under /api/) -> handler, answering POST requests.
+ENDPOINTS: dict[str, Handler] = {
     "clip": clip,
     "illumination": illumination,
     "illumination/point": illumination_point,
     "hidden-surfaces": hidden_surfaces,
     "ray-tree": ray_tree,
     "colour": colour,
+    "exercise": practice.make_exercise,
+    "exercise/check": practice.check_exercise,
+}
+
+# The names the pages fill their choices from, answering GET requests (no body).
+LISTINGS: dict[str, Handler] = {
+    "scenes": scenes,
+    "exercise-topics": practice.exercise_topics,
 }

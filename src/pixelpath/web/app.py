@@ -48,6 +48,7 @@ PAGES = {
     "/hidden-surfaces": ("hidden-surfaces.html", "Hidden surfaces"),
     "/ray-tracing": ("ray-tracing.html", "Ray tracing"),
     "/colour": ("colour.html", "Colour"),
+    "/practice": ("practice.html", "Practice"),
 }
 
 SECURITY_HEADERS = [
@@ -99,7 +100,8 @@ def create_app(
     routes = [
         Route("/", _file_endpoint(folder / "index.html")),
         *(Route(path, _file_endpoint(folder / name)) for path, (name, _) in PAGES.items()),
-        Route("/api/scenes", _api_endpoint(api.scenes, runner, limits), methods=["GET"]),
+        *(Route(f"/api/{name}", _api_endpoint(handler, runner, limits), methods=["GET"])
+          for name, handler in api.LISTINGS.items()),
         *(Route(f"/api/{name}", _api_endpoint(handler, runner, limits), methods=["POST"])
           for name, handler in api.ENDPOINTS.items()),
         Route("/favicon.ico", lambda request: RedirectResponse("/static/favicon.svg")),

@@ -7,6 +7,7 @@ const PAGES = [
   ["/hidden-surfaces", "Hidden surfaces"],
   ["/ray-tracing", "Ray tracing"],
   ["/colour", "Colour"],
+  ["/practice", "Practice"],
 ];
 
 function buildNavigation() {
@@ -117,13 +118,15 @@ function table(caption, columns, rows) {
   return result;
 }
 
-// Fill <select> elements from the API's list of names.
-async function fillChoices() {
-  const names = await api("scenes");
+// Fill <select data-choices="key"> elements from the list `key` of an API listing: names, or
+// {name, title} pairs (shown by title).
+async function fillChoices(listing = "scenes") {
+  const names = await api(listing);
   if (!names) return null;
   for (const select of document.querySelectorAll("select[data-choices]")) {
-    for (const name of names[select.dataset.choices]) {
-      select.appendChild(element("option", { value: name }, name));
+    for (const choice of names[select.dataset.choices]) {
+      const { name, title } = typeof choice === "string" ? { name: choice, title: choice } : choice;
+      select.appendChild(element("option", { value: name }, title));
     }
     if (select.dataset.default) select.value = select.dataset.default;
   }
