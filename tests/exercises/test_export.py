@@ -282,8 +282,10 @@ def test_prairielearn_server_draws_the_variants_figure(tmp_path, pixels):
     assert "n" in data["format_errors"]
 
 
-def test_every_topic_exports_in_every_format_and_its_server_grades_its_answer(tmp_path):
-    sheet = [exercises.make(topic, seed=1) for topic in exercises.TOPICS]
+@pytest.mark.parametrize("difficulty", ["standard", "edge"])
+def test_every_topic_exports_in_every_format_and_its_server_grades_its_answer(tmp_path,
+                                                                             difficulty):
+    sheet = [exercises.make(topic, seed=1, difficulty=difficulty) for topic in exercises.TOPICS]
     for format in ("markdown", "html", "moodle", "prairielearn"):
         export_exercises(sheet, tmp_path / format, format=format)
     worksheet = (tmp_path / "markdown" / "worksheet.md").read_text()
