@@ -242,6 +242,19 @@ def test_warnock_subdivision_obeys_the_rules_and_renders_right(seed):
     assert ex.answer["frame"] == rows
     assert rendered(params, "warnock") == rows
     boxes = _boxes(params)
+    for quadrant in ("R1", "R2", "R3", "R4"):
+        x0, x1, y0, y1 = _area_of(quadrant, params["width"], params["height"])
+        expected = []
+        for a, b, c, d, _ in boxes.values():
+            if a >= x1 or b <= x0 or c >= y1 or d <= y0:
+                expected.append("D")
+            elif a <= x0 and b >= x1 and c <= y0 and d >= y1:
+                expected.append("S")
+            elif a >= x0 and b <= x1 and c >= y0 and d <= y1:
+                expected.append("C")
+            else:
+                expected.append("I")
+        assert ex.answer[quadrant] == expected
     subdivided = set(ex.answer["subdivided"])
     assert "R" in subdivided
     leaves = 0

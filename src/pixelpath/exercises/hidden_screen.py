@@ -1,4 +1,4 @@
-"""Image-space hidden-surface exercises: the z-buffer, the scan line and Warnock's subdivision.
+"""Image-space hidden-surface exercises on a small screen: the z-buffer and the scan line.
 
 The given values are a few planar polygons on a small screen, in screen coordinates: x to
 the right, y up, pixel (i, j) the unit square with its centre at (i + 0.5, j + 0.5), and a
@@ -23,15 +23,15 @@ import numpy as np
 from pixelpath.exercises.exercise import Field, Step, shown
 from pixelpath.exercises.topics import Solved
 
-__all__ = ["covers", "depth_at", "frame_buffer", "plane_of", "samples", "screen_figure",
-           "warnock_areas"]
+__all__ = ["BACKGROUND", "covers", "depth_at", "frame_buffer", "picker", "plane_of",
+           "polygon_table", "samples", "screen_figure", "screen_words"]
 
 #: What the background is written as in a frame buffer's rows.
 BACKGROUND = "."
 # Slopes of the depth planes (dz per pixel along x and along y) a generator draws from: they
 # keep every depth at a pixel centre a multiple of 1/8, exact in binary, so ties are exact.
 _SLOPES = (-0.5, -0.25, 0.0, 0.25, 0.5)
-_GRID_MARKING = ("The frame buffer must match pixel for pixel; depths are accepted within "
+GRID_MARKING = ("The frame buffer must match pixel for pixel; depths are accepted within "
                  "±0.01.")
 
 Vertex = Sequence[float]
@@ -250,7 +250,8 @@ def polygon_table(polygons: dict) -> str:
     return "\n".join(lines)
 
 
-def _screen_words(params: dict) -> str:
+def screen_words(params: dict) -> str:
+    """Describe the screen and its coordinates, for a question."""
     return (f"A screen of {params['width']} × {params['height']} pixels: x to the right, y "
             f"up, pixel (i, j) is the unit square whose centre is (i + 0.5, j + 0.5). Each "
             f"polygon is planar, with the depth z given at its vertices (smaller z is nearer).")
@@ -277,7 +278,8 @@ def _linear(constant: float, dx: float, dy: float) -> str:
     return text
 
 
-def _grid_lines(grid: list[str]) -> list[str]:
+def grid_lines(grid: list[str]) -> list[str]:
+    """Write a frame buffer's rows as lines of code, for a worked step."""
     return [f"`{row}`" for row in grid]
 
 
@@ -337,11 +339,11 @@ def solve_zbuffer(params: dict) -> Solved:
             f"{', '.join(polygons)} in turn: at each pixel centre a polygon covers, compute z "
             "(incrementally along the scan line) and write the pixel when z < the stored z.",
             "The z-buffer at the end, rows from the top:", *(f"`{r}`" for r in buffer_rows),
-            "The frame buffer:", *_grid_lines(grid))),
+            "The frame buffer:", *grid_lines(grid))),
     )
     named = " and ".join(f"({i}, {j})" for i, j in params["pixels"])
     question = (
-        f"{_screen_words(params)}\n\n{polygon_table(polygons)}\n\n"
+        f"{screen_words(params)}\n\n{polygon_table(polygons)}\n\n"
         "![The polygons on the screen](FIGURE)\n\n"
         f"Apply the z-buffer algorithm, drawing {', '.join(polygons)} in that order. "
         f"(a) Give each polygon's plane equation and its depth increment along a scan line. "
@@ -349,7 +351,7 @@ def solve_zbuffer(params: dict) -> Solved:
         "(c) Give the frame buffer: one row of letters per scan line from the top, "
         f"{BACKGROUND!r} for the background."
     )
-    return Solved(question, answer, tuple(fields), steps, _GRID_MARKING,
+    return Solved(question, answer, tuple(fields), steps, GRID_MARKING,
                   draw=lambda solution: screen_figure(params, grid if solution else None))
 
 
@@ -452,7 +454,7 @@ def solve_scanline(params: dict) -> Solved:
     edges = ", ".join(f"{name}1 = {name}'s edge from its 1st to its 2nd vertex"
                       for name in list(polygons)[:1])
     question = (
-        f"{_screen_words(params)}\n\n{polygon_table(polygons)}\n\n"
+        f"{screen_words(params)}\n\n{polygon_table(polygons)}\n\n"
         "![The polygons and the scan line](FIGURE)\n\n"
         f"Process the scan line y = {shown(y)} (pixel row j = {j}) with the scan-line "
         f"algorithm. Edges are named by polygon and number ({edges}, and so on). "
@@ -460,149 +462,9 @@ def solve_scanline(params: dict) -> Solved:
         "(b) For each span between successive crossings, give the polygon seen "
         f"({BACKGROUND!r} for none). (c) Give the pixels of the line as letters."
     )
-    return Solved(question, answer, fields, steps, _GRID_MARKING.replace(
+    return Solved(question, answer, fields, steps, GRID_MARKING.replace(
         "depths", "crossings x"),
         draw=lambda solution: screen_figure(params, [row] if solution else None, scan_row=j))
-
-
-# ------------------------------------------------------------------ Warnock
-
-_CASES = {"surrounding": "S", "intersecting": "I", "contained": "C", "disjoint": "D"}
-_DECISIONS = ("empty", "single", "front", "pixel")
-
-
-def _box(vertices: Sequence[Vertex]) -> tuple[float, float, float, float]:
-    xs, ys = [v[0] for v in vertices], [v[1] for v in vertices]
-    return min(xs), max(xs), min(ys), max(ys)
-
-
-def _classify(vertices: Sequence[Vertex], area: tuple[int, int, int, int]) -> str:
-    """Classify a rectangle against an area (x0, x1, y0, y1): surrounding, intersecting, ..."""
-    x0, x1, y0, y1 = _box(vertices)
-    ax0, ax1, ay0, ay1 = area
-    if x1 <= ax0 or x0 >= ax1 or y1 <= ay0 or y0 >= ay1:
-        return "disjoint"
-    if x0 <= ax0 and x1 >= ax1 and y0 <= ay0 and y1 >= ay1:
-        return "surrounding"
-    if x0 >= ax0 and x1 <= ax1 and y0 >= ay0 and y1 <= ay1:
-        return "contained"
-    return "intersecting"
-
-
-def _quadrants(area: tuple[int, int, int, int]) -> list[tuple[int, int, int, int]]:
-    """Quadrants 1..4: top left, top right, bottom left, bottom right."""
-    x0, x1, y0, y1 = area
-    xm, ym = (x0 + x1) // 2, (y0 + y1) // 2
-    return [(x0, xm, ym, y1), (xm, x1, ym, y1), (x0, xm, y0, ym), (xm, x1, y0, ym)]
-
-
-def warnock_areas(params: dict) -> list[tuple[str, tuple[int, int, int, int], str, list[str]]]:
-    """Run Warnock's subdivision on rectangles of constant depth, depth first.
-
-    Returns one row per area examined: its name (``"R"`` the screen, then a digit per
-    quadrant: 1 top left, 2 top right, 3 bottom left, 4 bottom right), its extent (x0, x1,
-    y0, y1), how it was decided (``"empty"``, ``"single"``, ``"front"``, ``"pixel"`` or
-    ``"subdivided"``) and the polygons reaching it.
-
-    Examples
-    --------
-    >>> params = {"width": 2, "height": 2, "polygons": {
-    ...     "A": [[0, 0, 5], [2, 0, 5], [2, 2, 5], [0, 2, 5]],
-    ...     "B": [[1, 0, 3], [2, 0, 3], [2, 1, 3], [1, 1, 3]]}}
-    >>> [(name, decision) for name, _, decision, _ in warnock_areas(params)]
-    [('R', 'subdivided'), ('R1', 'single'), ('R2', 'single'), ('R3', 'single'), ('R4', 'front')]
-    """
-    polygons = params["polygons"]
-    rows: list = []
-
-    def visit(name: str, area: tuple[int, int, int, int], candidates: list[str]) -> None:
-        reaching = [p for p in candidates if _classify(polygons[p], area) != "disjoint"]
-        rows.append((name, area, _decide(polygons, area, reaching), reaching))
-        if rows[-1][2] == "subdivided":
-            for k, quadrant in enumerate(_quadrants(area), start=1):
-                visit(f"{name}{k}", quadrant, reaching)
-
-    visit("R", (0, params["width"], 0, params["height"]), list(polygons))
-    return rows
-
-
-def _decide(polygons: dict, area: tuple[int, int, int, int], reaching: list[str]) -> str:
-    if not reaching:
-        return "empty"
-    if len(reaching) == 1:
-        return "single"
-    depth = {p: polygons[p][0][2] for p in reaching}
-    nearest = min(reaching, key=depth.get)
-    if (_classify(polygons[nearest], area) == "surrounding"
-            and sorted(depth.values())[1] > depth[nearest]):
-        return "front"
-    return "pixel" if area[1] - area[0] == 1 else "subdivided"
-
-
-def _warnock_fair(params: dict, difficulty: str) -> bool:
-    """Depths apart; a front decision and 2 to 10 subdivisions (any count when ``edge``)."""
-    depths = [v[0][2] for v in params["polygons"].values()]
-    rows = warnock_areas(params)
-    subdivided = sum(decision == "subdivided" for _, _, decision, _ in rows)
-    if difficulty == "edge":
-        return True
-    return (len(set(depths)) == len(depths) and 2 <= subdivided <= 10
-            and any(decision == "front" for _, _, decision, _ in rows))
-
-
-def solve_warnock(params: dict) -> Solved:
-    """Solve a Warnock exercise: the classes on the screen, the subdivisions, the leaves."""
-    polygons = params["polygons"]
-    rows = warnock_areas(params)
-    screen = (0, params["width"], 0, params["height"])
-    classes = [_CASES[_classify(v, screen)] for v in polygons.values()]
-    grid = frame_buffer(params)[0]
-    counts = {d: sum(decision == d for _, _, decision, _ in rows) for d in _DECISIONS}
-    answer = {"screen": classes,
-              "subdivided": [name for name, _, d, _ in rows if d == "subdivided"],
-              **counts, "frame": grid}
-    fields = (
-        Field("screen", "each polygon against the whole screen (S, I, C or D)", 1,
-              kind="sequence", required=False),
-        Field("subdivided", "the areas subdivided", 2, kind="set"),
-        *(Field(d, f"how many areas are decided '{d}'", 2, tolerance=0, required=False)
-          for d in _DECISIONS),
-        Field("frame", "the frame buffer, rows from the top", 3, kind="grid"),
-    )
-    area_lines = [f"{name} x {area[0]}..{area[1]}, y {area[2]}..{area[3]}: "
-                  f"{', '.join(reaching) or 'no polygon'} → {decision}"
-                  for name, area, decision, reaching in rows]
-    steps = (
-        Step("Classify against the screen", tuple(
-            f"{p}: {_classify(v, screen)}" for p, v in polygons.items())),
-        Step("Subdivide", (
-            "An area is decided when no polygon reaches it (empty), when exactly one does "
-            "(single: draw it), or when a surrounding polygon is nearer than every other "
-            "(front: fill with it); otherwise it is cut into quadrants 1 2 / 3 4, down to "
-            "pixels, where the nearest polygon at the centre wins (pixel).", *area_lines,
-            "Counts: " + ", ".join(f"{d} {n}" for d, n in counts.items()))),
-        Step("The frame buffer", tuple(_grid_lines(grid))),
-    )
-    question = (
-        f"{_screen_words(params)} Each polygon is a rectangle at one depth.\n\n"
-        f"{polygon_table(polygons)}\n\n![The rectangles on the screen](FIGURE)\n\n"
-        "Apply Warnock's area subdivision. Name the screen R and the quadrants of an area by "
-        "appending 1 (top left), 2 (top right), 3 (bottom left) or 4 (bottom right): R2, "
-        "R24, … (a) Classify each polygon against the screen: S(urrounding), I(ntersecting), "
-        "C(ontained) or D(isjoint). (b) Which areas are subdivided? How many areas are "
-        "decided empty, by a single polygon, by a surrounding polygon in front, and at "
-        "pixel level? (c) Give the frame buffer, rows from the top, "
-        f"{BACKGROUND!r} for the background."
-    )
-    return Solved(question, answer, fields, steps,
-                  "The areas subdivided must be exactly those; counts must be exact; the "
-                  "frame buffer must match pixel for pixel.",
-                  draw=lambda solution: screen_figure(params, grid if solution else None,
-                                                      areas=rows if solution else None))
-
-
-def _pick_warnock(rng: random.Random, difficulty: str) -> dict:
-    return picker(8, 8, True, _warnock_fair)(rng, difficulty)
 
 
 # ------------------------------------------------------------------ the figure
@@ -612,7 +474,8 @@ def screen_figure(params: dict, grid: list[str] | None = None, scan_row: int | N
     """Draw the screen: pixel grid, polygons with their vertex depths; solved, the pixels.
 
     ``grid`` (rows from the top, or one row with ``scan_row``) fills each pixel with the
-    colour of the polygon it shows; ``areas`` (from :func:`warnock_areas`) outlines them.
+    colour of the polygon it shows; ``areas`` (rows of
+    :func:`pixelpath.exercises.hidden_warnock.warnock_areas`) are outlined.
 
     Examples
     --------

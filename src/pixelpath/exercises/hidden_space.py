@@ -140,10 +140,13 @@ def solve_backface(params: dict) -> Solved:
 def _backface_figure(params: dict, visible: list[str] | None):
     vertices = {name: np.asarray(p, dtype=np.float64) for name, p in params["vertices"].items()}
     sketch, view = _sketch(list(vertices.values()))
-    for k, (face, names) in enumerate(params["faces"].items(), start=1):
-        corners = _project([vertices[n] for n in names])
+    faces = {face: _project([vertices[n] for n in names])
+             for face, names in params["faces"].items()}
+    for k, (face, corners) in enumerate(faces.items()):
         if visible is not None and face in visible:
-            sketch.fill(view, corners, f"object {(k - 1) % 6 + 1}")
+            sketch.fill(view, corners, f"object {k % 6 + 1}")
+    # Outlines and labels go on top of every fill, so no face hides another's name.
+    for face, corners in faces.items():
         sketch.outline(view, corners, "subject", width=2,
                        dashed=visible is not None and face not in visible)
         sketch.label(view, corners.mean(axis=0), face)
