@@ -170,9 +170,10 @@ def solve_painter(params: dict) -> Solved:
         f"nearer); their screen coordinates are (x, y).\n\n{polygon_table(polygons)}\n\n"
         "![The triangles on the screen](FIGURE)\n\n"
         "Apply the painter's algorithm (depth sort). (a) Sort the triangles by farthest depth, "
-        "farthest first. (b) Take P, the first of the list; for each Q whose depth extent "
-        "overlaps P's, give the first of these tests that holds (extents that only touch do "
-        "not overlap; a vertex on a plane counts as on either side):\n\n"
+        "farthest first (a tie in alphabetical order). (b) Take P, the first of the list; for "
+        "each Q whose depth extent overlaps P's, give the first of these tests that holds "
+        "(extents that only touch do not overlap; a vertex on a plane counts as on either "
+        "side):\n\n"
         + "\n".join(f"- {test}" for test in _TESTS[1:]) +
         "\n\nor 'swap' when none holds and Q is moved before P (as test_PQ, e.g. test_AB). "
         "Paint P when every such Q is settled and go on with the rest of the list. "

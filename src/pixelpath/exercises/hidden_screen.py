@@ -346,7 +346,8 @@ def solve_zbuffer(params: dict) -> Solved:
         f"{screen_words(params)}\n\n{polygon_table(polygons)}\n\n"
         "![The polygons on the screen](FIGURE)\n\n"
         f"Apply the z-buffer algorithm, drawing {', '.join(polygons)} in that order. "
-        f"(a) Give each polygon's plane equation and its depth increment along a scan line. "
+        "(a) Give each polygon's plane equation and its depth increment along a scan line "
+        "(dz_A, …). "
         f"(b) Give the depth stored at pixels {named} at the end (z1, z2). "
         "(c) Give the frame buffer: one row of letters per scan line from the top, "
         f"{BACKGROUND!r} for the background."
@@ -385,12 +386,13 @@ def _span_winner(polygons: dict, span: tuple[float, float, list[str]], y: float)
     return min(inside, key=lambda p: depth_at(polygons[p], middle, y), default=BACKGROUND)
 
 
-def _scanline_fair(params: dict, difficulty: str) -> bool:
+def _scanline_fair(params: dict, _difficulty: str) -> bool:
     """Check for a scan line where two polygons share a span and no span swaps depths."""
-    return _scan_rows(params, difficulty) != []
+    return _scan_rows(params) != []
 
 
-def _scan_rows(params: dict, difficulty: str) -> list[int]:
+def _scan_rows(params: dict) -> list[int]:
+    """Rows whose crossings are apart and where two polygons share a span, no span swapping."""
     rows = []
     for j in range(params["height"]):
         y = j + 0.5
@@ -398,7 +400,8 @@ def _scan_rows(params: dict, difficulty: str) -> list[int]:
         spans = _spans(params["polygons"], y)
         if len(set(xs)) < len(xs) or not any(len(s[2]) > 1 for s in spans):
             continue
-        if difficulty == "edge" or all(_no_swap(params["polygons"], s, y) for s in spans):
+        # Even at the edge, a span shows one polygon: the answer names one per span.
+        if all(_no_swap(params["polygons"], s, y) for s in spans):
             rows.append(j)
     return rows
 
@@ -413,7 +416,7 @@ def _no_swap(polygons: dict, span: tuple[float, float, list[str]], y: float) -> 
 
 def _pick_scanline(rng: random.Random, difficulty: str) -> dict:
     params = picker(10, 6, False, _scanline_fair)(rng, difficulty)
-    return {**params, "row": rng.choice(_scan_rows(params, difficulty))}
+    return {**params, "row": rng.choice(_scan_rows(params))}
 
 
 def solve_scanline(params: dict) -> Solved:

@@ -165,7 +165,8 @@ def solve_warnock(params: dict) -> Solved:
         "S(urrounding), I(ntersecting), C(ontained) or D(isjoint), in the order "
         f"{', '.join(polygons)}. (b) Which areas are subdivided? How many areas are "
         "decided empty, by a single polygon, by a surrounding polygon in front, and at "
-        "pixel level? (c) Give the frame buffer, rows from the top, "
+        "pixel level (where a tie goes to the polygon listed first)? (c) Give the frame "
+        "buffer, rows from the top, "
         f"{BACKGROUND!r} for the background."
     )
     return Solved(question, answer, fields, steps,
