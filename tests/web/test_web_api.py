@@ -473,11 +473,14 @@ def test_an_exercise_without_a_seed_gets_one_that_makes_it_again(client):
     assert again.json() == shown
 
 
+@pytest.mark.parametrize("difficulty", ["standard", "edge"])
 @pytest.mark.parametrize("topic", exercises.TOPICS)
-def test_the_right_answer_typed_is_marked_correct_and_the_solution_follows(client, topic):
-    exercise = exercises.make(topic, 5)
+def test_the_right_answer_typed_is_marked_correct_and_the_solution_follows(client, topic,
+                                                                           difficulty):
+    exercise = exercises.make(topic, 5, difficulty)
     marked = client.post("/api/exercise/check", json={
-        "topic": topic, "seed": 5, "values": typed_answer(exercise)}).json()
+        "topic": topic, "seed": 5, "difficulty": difficulty,
+        "values": typed_answer(exercise)}).json()
     assert marked["correct"] is True and marked["first_wrong"] is None
     assert marked["marks"] == {field.name: True for field in exercise.fields}
     assert marked["feedback"] == "Correct."

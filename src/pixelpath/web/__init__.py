@@ -1,7 +1,8 @@
 """The playground: a local web app to see every algorithm work (``pixelpath playground``).
 
-Pages for clipping, illumination, hidden surfaces, ray tracing and colour, served by a
-Starlette app (:func:`create_app`) whose small JSON API calls the library's own functions.
+Pages for clipping, illumination, hidden surfaces, ray tracing, colour and practice (seeded
+exam questions, answers marked, worked solutions), served by a Starlette app
+(:func:`create_app`) whose small JSON API calls the library's own functions.
 It needs the ``web`` extra: ``pip install 'pixelpath[web]'``. ``import pixelpath`` does not
 import this package.
 

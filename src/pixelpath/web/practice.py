@@ -43,7 +43,7 @@ def exercise_topics(data: dict[str, Any], limits: Limits) -> dict[str, Any]:
     >>> from pixelpath.web import Limits
     >>> from pixelpath.web.practice import exercise_topics
     >>> answer = exercise_topics({}, Limits())
-    >>> answer["topics"][0] in answer["topics"], answer["difficulties"]
+    >>> {"name": "rgb-hsv", "title": "RGB to HSV"} in answer["topics"], answer["difficulties"]
     (True, ['easy', 'standard', 'edge'])
     """
     from pixelpath import exercises
@@ -142,14 +142,13 @@ def _typed_values(data: dict[str, Any]) -> dict[str, str | float]:
         raise BadRequest(f"values must be an object of field names to typed values, got "
                          f"{type(values).__name__}")
     for name, value in values.items():
-        if isinstance(value, str):
-            if len(value) > MAX_VALUE_CHARS:
-                raise BadRequest(f"the value of {name[:40]!r} holds {len(value)} characters, "
-                                 f"more than the {MAX_VALUE_CHARS} allowed")
-        elif isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(
-                value):
+        number = isinstance(value, int | float) and not isinstance(value, bool)
+        if not isinstance(value, str) and not (number and math.isfinite(value)):
             raise BadRequest(f"the value of {name[:40]!r} must be typed text or a finite "
                              f"number, got {value!r}"[:160])
+        if isinstance(value, str) and len(value) > MAX_VALUE_CHARS:
+            raise BadRequest(f"the value of {name[:40]!r} holds {len(value)} characters, "
+                             f"more than the {MAX_VALUE_CHARS} allowed")
     return values
 
 
