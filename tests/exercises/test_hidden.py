@@ -415,14 +415,16 @@ def _fair(topic, ex):
         return any(k.startswith("test_") for k in answer)
     if topic == "bsp":
         return len(answer["order"]) >= 3
-    return len(answer["subdivided"]) >= 2
+    # An easy octree may stop at the first level.
+    return len(answer["subdivided"]) >= (1 if ex.difficulty == "easy" else 2)
 
 
-def _stress(topic, seeds):
+def _stress(topic, seeds, difficulty="standard"):
     for seed in seeds:
-        ex = exercises.make(topic, seed=seed)
-        assert _fair(topic, ex), seed
+        ex = exercises.make(topic, seed=seed, difficulty=difficulty)
         assert ex.check(ex.answer).correct, seed
+        # Edge cases may be degenerate on purpose (a face seen edge-on, a tie in depth).
+        assert difficulty == "edge" or _fair(topic, ex), seed
 
 
 @pytest.mark.parametrize("topic", HIDDEN)
@@ -431,6 +433,7 @@ def test_stress_a_few_hundred_seeds(topic):
 
 
 @pytest.mark.slow
+@pytest.mark.parametrize("difficulty", ["easy", "standard", "edge"])
 @pytest.mark.parametrize("topic", HIDDEN)
-def test_stress_two_thousand_seeds(topic):
-    _stress(topic, range(2000))
+def test_stress_two_thousand_seeds(topic, difficulty):
+    _stress(topic, range(2000), difficulty)
