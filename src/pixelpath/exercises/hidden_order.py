@@ -143,7 +143,14 @@ _TESTS = (
 
 
 def solve_painter(params: dict) -> Solved:
-    """Solve a painter's exercise: the sorted list, the tests that settled each pair, the order."""
+    """Solve a painter's exercise: the sorted list, the tests that settled each pair, the order.
+
+    Examples
+    --------
+    >>> from pixelpath import exercises
+    >>> solve_painter(exercises.make("painter", seed=1).params).answer["order"]
+    ['D', 'C', 'B', 'A']
+    """
     polygons = params["polygons"]
     ranked, comparisons, order = depth_sort(polygons)
     extents = [f"{name}: z from {shown(min(v[2] for v in polygons[name]))} to "
@@ -193,6 +200,12 @@ class Wall:
 
     Its front is the side its normal (−(y2 − y1), x2 − x1) points to: the left of the walk
     from ``start`` to ``end``.
+
+    Examples
+    --------
+    >>> wall = Wall("A", (0, 0), (4, 0))
+    >>> wall.normal, wall.side((1, 3)), wall.side((1, -1))
+    ((0, 4), 12, -4)
     """
 
     name: str
@@ -320,7 +333,14 @@ def _pick_bsp(rng: random.Random, difficulty: str) -> dict:
 
 
 def solve_bsp(params: dict) -> Solved:
-    """Solve a BSP exercise: the tree in preorder, the eye's sides, the back-to-front order."""
+    """Solve a BSP exercise: the tree in preorder, the eye's sides, the back-to-front order.
+
+    Examples
+    --------
+    >>> from pixelpath import exercises
+    >>> solve_bsp(exercises.make("bsp", seed=1).params).answer["order"]
+    ['C1', 'A', 'C2', 'B', 'D']
+    """
     walls, eye = params["walls"], params["eye"]
     root = build_bsp(walls)
     nodes = _nodes(root)

@@ -229,7 +229,20 @@ def _fair(params: dict, difficulty: str) -> bool:
 
 def picker(width: int, height: int, rectangles: bool,
            accept: Callable[[dict, str], bool]) -> Callable[[random.Random, str], dict]:
-    """Make a topic's pick: polygons on a ``width`` × ``height`` screen, redrawn until fair."""
+    """Make a topic's pick: polygons on a ``width`` × ``height`` screen, redrawn until fair.
+
+    A draw is fair when no pixel centre lies on an outline, every polygon shows somewhere,
+    two polygons overlap, no two depths at a pixel tie (unless ``edge``), and ``accept``
+    agrees.
+
+    Examples
+    --------
+    >>> import random
+    >>> pick = picker(8, 6, False, lambda params, difficulty: True)
+    >>> params = pick(random.Random(1), "standard")
+    >>> params["width"], params["height"], sorted(params["polygons"])
+    (8, 6, ['A', 'B', 'C'])
+    """
 
     def pick(rng: random.Random, difficulty: str) -> dict:
         while True:
@@ -243,7 +256,15 @@ def picker(width: int, height: int, rectangles: bool,
 # ------------------------------------------------------------------ shared wording
 
 def polygon_table(polygons: dict) -> str:
-    """Write the given polygons as a Markdown table: name, vertices (x, y, z) in order."""
+    """Write the given polygons as a Markdown table: name, vertices (x, y, z) in order.
+
+    Examples
+    --------
+    >>> print(polygon_table({"A": [[0, 0, 2], [4, 0, 3.5], [0, 2, 2]]}))
+    | polygon | vertices (x, y, z), counter-clockwise |
+    |---|---|
+    | A | (0, 0, 2) (4, 0, 3.5) (0, 2, 2) |
+    """
     lines = ["| polygon | vertices (x, y, z), counter-clockwise |", "|---|---|"]
     for name, vertices in polygons.items():
         lines.append(f"| {name} | {' '.join(shown(v) for v in vertices)} |")
@@ -251,7 +272,13 @@ def polygon_table(polygons: dict) -> str:
 
 
 def screen_words(params: dict) -> str:
-    """Describe the screen and its coordinates, for a question."""
+    """Describe the screen and its coordinates, for a question.
+
+    Examples
+    --------
+    >>> screen_words({"width": 8, "height": 6})[:32]
+    'A screen of 8 × 6 pixels: x to t'
+    """
     return (f"A screen of {params['width']} × {params['height']} pixels: x to the right, y "
             f"up, pixel (i, j) is the unit square whose centre is (i + 0.5, j + 0.5). Each "
             f"polygon is planar, with the depth z given at its vertices (smaller z is nearer).")
@@ -279,7 +306,13 @@ def _linear(constant: float, dx: float, dy: float) -> str:
 
 
 def grid_lines(grid: list[str]) -> list[str]:
-    """Write a frame buffer's rows as lines of code, for a worked step."""
+    """Write a frame buffer's rows as lines of code, for a worked step.
+
+    Examples
+    --------
+    >>> grid_lines(["AB.", "..C"])
+    ['`AB.`', '`..C`']
+    """
     return [f"`{row}`" for row in grid]
 
 
@@ -308,7 +341,14 @@ def _pick_zbuffer(rng: random.Random, difficulty: str) -> dict:
 
 
 def solve_zbuffer(params: dict) -> Solved:
-    """Solve a z-buffer exercise: plane equations, the depths at two pixels, the frame buffer."""
+    """Solve a z-buffer exercise: plane equations, the depths at two pixels, the frame buffer.
+
+    Examples
+    --------
+    >>> from pixelpath import exercises
+    >>> solve_zbuffer(exercises.make("z-buffer", seed=1).params).answer["z1"]
+    4.25
+    """
     polygons = params["polygons"]
     grid, depths = frame_buffer(params)
     height = params["height"]
@@ -420,7 +460,14 @@ def _pick_scanline(rng: random.Random, difficulty: str) -> dict:
 
 
 def solve_scanline(params: dict) -> Solved:
-    """Solve a scan-line exercise: the active edges, the spans and the pixels of one line."""
+    """Solve a scan-line exercise: the active edges, the spans and the pixels of one line.
+
+    Examples
+    --------
+    >>> from pixelpath import exercises
+    >>> solve_scanline(exercises.make("scan-line", seed=1).params).answer["pixels"]
+    ['CCCCCCBB..']
+    """
     polygons, j = params["polygons"], params["row"]
     y = j + 0.5
     crossings = _crossings(polygons, y)

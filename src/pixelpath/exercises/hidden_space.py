@@ -91,7 +91,14 @@ def _pick_backface(rng: random.Random, difficulty: str) -> dict:
 
 
 def solve_backface(params: dict) -> Solved:
-    """Solve a back-face exercise: N · V for every face and the faces that are visible."""
+    """Solve a back-face exercise: N · V for every face and the faces that are visible.
+
+    Examples
+    --------
+    >>> from pixelpath import exercises
+    >>> solve_backface(exercises.make("back-face", seed=1).params).answer["visible"]
+    ['A', 'D', 'E']
+    """
     from pixelpath.hsr.backface import front_facing
 
     vertices, faces = params["vertices"], params["faces"]
@@ -225,7 +232,14 @@ def _pick_octree(rng: random.Random, difficulty: str) -> dict:
 
 
 def solve_octree(params: dict) -> Solved:
-    """Solve an octree exercise: the cells subdivided, the octant order, the points' order."""
+    """Solve an octree exercise: the cells subdivided, the octant order, the points' order.
+
+    Examples
+    --------
+    >>> from pixelpath import exercises
+    >>> solve_octree(exercises.make("octree", seed=1).params).answer["subdivided"]
+    ['R', 'R7', 'R2']
+    """
     from pixelpath.hsr.octree import front_to_back
 
     points, eye = params["points"], params["eye"]

@@ -119,7 +119,14 @@ def _warnock_fair(params: dict, difficulty: str) -> bool:
 
 
 def solve_warnock(params: dict) -> Solved:
-    """Solve a Warnock exercise: the classes in the quadrants, the subdivisions, the leaves."""
+    """Solve a Warnock exercise: the classes in the quadrants, the subdivisions, the leaves.
+
+    Examples
+    --------
+    >>> from pixelpath import exercises
+    >>> solve_warnock(exercises.make("warnock", seed=1).params).answer["subdivided"]
+    ['R', 'R4', 'R41', 'R43']
+    """
     polygons = params["polygons"]
     rows = warnock_areas(params)
     screen = (0, params["width"], 0, params["height"])
