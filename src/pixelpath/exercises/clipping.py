@@ -90,12 +90,14 @@ def _area(points) -> float:
 def pick_sutherland_hodgman(rng: random.Random, difficulty: str) -> dict:
     """Pick a window and a simple polygon with integer vertices.
 
-    Outside ``edge`` the polygon is partly inside and partly outside the window (something
-    is clipped and something is left) and no vertex lies on a window boundary.
+    Outside ``edge`` (and in 6 of 10 ``edge`` exercises) the polygon is partly inside and
+    partly outside the window (something is clipped and something is left) and no vertex
+    lies on a window boundary.
     """
     from pixelpath.clip import Rect, sutherland_hodgman
 
     counts = (3, 4) if difficulty == "easy" else (3, 4, 5, 6)
+    anything = difficulty == "edge" and rng.random() < 0.4
     while True:
         window = _window(rng)
         centre = ((window[0] + window[2]) / 2 + rng.randint(-3, 3),
@@ -103,7 +105,7 @@ def pick_sutherland_hodgman(rng: random.Random, difficulty: str) -> dict:
         polygon = _star(rng, rng.choice(counts), centre, (3, 7), alternate=False)
         if not _is_simple(polygon) or _area(polygon) < 6:
             continue
-        if difficulty == "edge":
+        if anything:
             return {"window": window, "polygon": polygon}
         clipped = sutherland_hodgman(polygon, Rect(*window))
         if (not _touches_boundary(polygon, window)
@@ -196,44 +198,46 @@ def _question_picture(polygon: list, window: list):
 def pick_weiler_atherton(rng: random.Random, difficulty: str) -> dict:
     """Pick a window and a comb: prongs rising from a base outside the window through it.
 
-    The classic case for Weiler-Atherton: each prong that reaches into the window is a
-    separate piece. The comb is turned by a multiple of 90°. Outside ``edge``: at least two
-    pieces and no vertex on a window boundary.
+    The classic case for Weiler-Atherton: each prong reaches into the window and is a
+    separate piece, so there are as many pieces as prongs (2, or 2 to 3). The comb is turned
+    by a multiple of 90°. Outside ``edge`` (and in 6 of 10 ``edge`` exercises) no vertex
+    lies on a window boundary.
     """
-    from pixelpath.clip import Rect, weiler_atherton
-
+    anything = difficulty == "edge" and rng.random() < 0.4
+    width, height = rng.randint(6, 9), rng.randint(4, 6)
+    # In the comb's own frame the window is [0, width] × [0, height] and the base lies below.
+    xs = [x for x in range(-1, width + 2) if anything or x not in (0, width)]
     while True:
-        width, height = rng.randint(6, 9), rng.randint(4, 6)
-        prongs = _prongs(rng, 2 if difficulty == "easy" else rng.choice((2, 3)), width)
-        if prongs is None:
-            continue
-        low = -rng.randint(2, 3)
-        tops = [rng.randint(2, height + 2) for _ in prongs]
-        comb = [[prongs[0][0], low], [prongs[-1][1], low]]
-        for k in range(len(prongs) - 1, -1, -1):
-            left, right = prongs[k]
-            comb += [[right, tops[k]], [left, tops[k]]]
-            if k:
-                comb += [[left, -1], [prongs[k - 1][1], -1]]
-        turns = rng.randint(0, 3)
-        polygon, window = _turned(comb, turns), _turned([[0, 0], [width, height]], turns)
-        shift = np.array([rng.randint(1, 4), rng.randint(1, 4)]) - np.min(window, axis=0)
-        polygon = (np.asarray(polygon) + shift).tolist()
-        xs, ys = sorted(w[0] + shift[0] for w in window), sorted(w[1] + shift[1] for w in window)
-        params = {"window": [int(xs[0]), int(ys[0]), int(xs[1]), int(ys[1])], "polygon": polygon}
-        if difficulty == "edge":
-            return params
-        pieces = weiler_atherton(polygon, Rect(*params["window"]))
-        if len(pieces) >= 2 and not _touches_boundary(polygon, params["window"]):
-            return params
+        prongs = _prongs(rng, 2 if difficulty == "easy" else rng.choice((2, 3)), xs, width)
+        if prongs is not None:
+            break
+    low = -rng.randint(2, 3)
+    tops = [rng.choice([y for y in range(2, height + 3) if anything or y != height])
+            for _ in prongs]
+    comb = [[prongs[0][0], low], [prongs[-1][1], low]]
+    for k in range(len(prongs) - 1, -1, -1):
+        left, right = prongs[k]
+        comb += [[right, tops[k]], [left, tops[k]]]
+        if k:
+            comb += [[left, -1], [prongs[k - 1][1], -1]]
+    turns = rng.randint(0, 3)
+    polygon, window = _turned(comb, turns), _turned([[0, 0], [width, height]], turns)
+    shift = np.array([rng.randint(1, 4), rng.randint(1, 4)]) - np.min(window, axis=0)
+    (xmin, ymin), (xmax, ymax) = np.min(window, axis=0) + shift, np.max(window, axis=0) + shift
+    return {"window": [int(xmin), int(ymin), int(xmax), int(ymax)],
+            "polygon": (np.asarray(polygon) + shift).tolist()}
 
 
-def _prongs(rng: random.Random, count: int, width: int) -> list[tuple[int, int]] | None:
-    """Disjoint x-intervals of ``count`` prongs across ``[-1, width + 1]``, None if cramped."""
-    edges = sorted(rng.sample(range(-1, width + 2), 2 * count))
+def _prongs(rng: random.Random, count: int, xs: list[int],
+            width: int) -> list[tuple[int, int]] | None:
+    """Pick x-intervals of ``count`` prongs, apart and each across part of ``[0, width]``.
+
+    None when the draw does not give that (the caller draws again).
+    """
+    edges = sorted(rng.sample(xs, 2 * count))
     prongs = [(edges[2 * k], edges[2 * k + 1]) for k in range(count)]
-    gaps_ok = all(b[0] - a[1] >= 1 for a, b in itertools.pairwise(prongs))
-    return prongs if gaps_ok and all(0 < right and left < width for left, right in prongs) \
+    apart = all(b[0] - a[1] >= 1 for a, b in itertools.pairwise(prongs))
+    return prongs if apart and all(0 < right and left < width for left, right in prongs) \
         else None
 
 
@@ -254,7 +258,7 @@ def solve_weiler_atherton(p: dict) -> Solved:
     contacts = Step("the intersection points of the two boundaries", (
         f"{_points(trace.contacts)} (sorted by x, then y)",))
     walk = tuple(_walk_step(trace, loop) for loop in range(trace.loops))
-    answer = {"pieces": [piece.tolist() for piece in pieces], "count": len(pieces)}
+    answer = {"count": len(pieces), "pieces": [piece.tolist() for piece in pieces]}
     vertices = ", ".join(f"P{k + 1}{_pair(v)}" for k, v in enumerate(p["polygon"]))
     return Solved(
         question=(f"Clip the concave polygon {vertices} (vertices in order) against the "

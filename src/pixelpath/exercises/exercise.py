@@ -94,7 +94,7 @@ class Field:
             return [_label(part) for part in parts if _label(part)]
         if self.kind == "choice":
             return _label(value)
-        rows = value.split() if isinstance(value, str) else value
+        rows = re.split(r"[,\s]+", value.strip()) if isinstance(value, str) else value
         return [_label(row) for row in rows]
 
     def matches(self, given: Any, expected: Any) -> bool:
