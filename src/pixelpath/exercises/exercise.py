@@ -371,7 +371,7 @@ def _written(value: Any, number: Callable[[float], str]) -> str:
         if value and all(_is_list(v) for v in value):
             return ("; " if all(_is_list(w) for v in value for w in v) else " ").join(items)
         return "(" + ", ".join(items) + ")"
-    x = float(value)
+    x = float(value) + 0.0  # no "-0"
     if math.isinf(x):
         return "∞" if x > 0 else "−∞"
     return number(x)
