@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import doctest
 import json
+from pathlib import Path
 
 import pytest
 from hypothesis import given, settings
@@ -174,3 +176,14 @@ def test_polygons_match_from_any_start_either_way_round(points, shift, backwards
     assert field.matches(field.parse(given_points), expected)
     moved = [[x + 0.5, y] for x, y in given_points]
     assert not field.matches(field.parse(moved), expected)
+
+
+def test_the_readme_s_practice_example_prints_what_it_shows():
+    readme = (Path(__file__).parents[2] / "README.md").read_text(encoding="utf-8")
+    section = readme.split("## Practice: the notes' exam questions", 1)[1]
+    example = section.split("```python\n", 1)[1].split("```", 1)[0]
+    test = doctest.DocTestParser().get_doctest(example, {}, "README practice", None, 0)
+    runner = doctest.DocTestRunner(optionflags=doctest.NORMALIZE_WHITESPACE)
+    runner.run(test)
+    result = runner.summarize(verbose=False)
+    assert result.attempted >= 5 and result.failed == 0

@@ -17,7 +17,7 @@ EXAMPLES = [
     "pixelpath exercise --list",
     "pixelpath exercise rgb-hsv --seed 3",
     "pixelpath exercise rgb-hsv --seed 3 --solution",
-    "pixelpath exercise rgb-hsv --seed 3 --check 'h=82; s=0.65; v=0.85'",
+    "pixelpath exercise rgb-hsv --seed 3 --check 'h=43; s=0.35; v=1'",
     "pixelpath exercise sutherland-hodgman --seed 1 --figure clip.png",
     "pixelpath exercise rgb-hsv --export sheet --count 10",
     "pixelpath exercise phong-intensity --export quiz --format moodle --count 20",
