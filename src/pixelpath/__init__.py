@@ -17,7 +17,9 @@ from typing import TYPE_CHECKING, Any
 
 __version__ = "0.1.0"
 
-_SUBMODULES = ("color", "clip", "lighting", "scene", "raster", "hsr", "io", "frames", "raytrace")
+_SUBMODULES = (
+    "color", "clip", "lighting", "scene", "raster", "hsr", "io", "frames", "raytrace", "exercises"
+)
 
 # Public name -> module that defines it, imported on first access.
 _LAZY_NAMES = {
@@ -52,6 +54,7 @@ __all__ = [
     "Texture",
     "clip",
     "color",
+    "exercises",
     "frames",
     "hsr",
     "io",
@@ -67,7 +70,18 @@ __all__ = [
 ]
 
 if TYPE_CHECKING:
-    from pixelpath import clip, color, frames, hsr, io, lighting, raster, raytrace, scene
+    from pixelpath import (
+        clip,
+        color,
+        exercises,
+        frames,
+        hsr,
+        io,
+        lighting,
+        raster,
+        raytrace,
+        scene,
+    )
     from pixelpath.frames import render_frames, render_views
     from pixelpath.image import Image
     from pixelpath.renderer import render
