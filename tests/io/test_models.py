@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import base64
+import dataclasses
 import importlib.util
 import io
 import json
@@ -415,12 +416,15 @@ def test_truncated_glb_is_refused(tmp_path):
             read_model(path)
 
 
-def test_corrupt_jpeg_texture_is_refused(tmp_path):
+def test_corrupt_jpeg_texture_is_refused_when_first_used(tmp_path):
     for name in ("fuze.obj", "fuze.obj.mtl"):
         shutil.copy(DATA / name, tmp_path / name)
     (tmp_path / "fuze uv.jpg").write_bytes((DATA / "fuze uv.jpg").read_bytes()[:2000])
-    with pytest.raises(ValueError, match=r"fuze\.obj.*texture"):
-        read_model(tmp_path / "fuze.obj")
+    scene = pp.load_scene(tmp_path / "fuze.obj")  # pictures are decoded lazily, as trimesh does
+    scene = dataclasses.replace(scene, camera=dataclasses.replace(scene.camera, width=32,
+                                                                   height=24))
+    with pytest.raises(ValueError, match=r"fuze\.obj texture: not a readable image"):
+        pp.render(scene)
 
 
 def test_missing_gltf_texture_warns_and_keeps_the_colour(tmp_path):
@@ -489,11 +493,17 @@ def _edited_json(data: dict, key_index: int, value) -> dict:
 
 
 def _only_named_errors(path: Path) -> None:
-    """Load ``path``: it loads, or raises ValueError/TypeError naming it (warnings allowed)."""
+    """Load ``path`` and decode its textures: it works, or raises ValueError/TypeError naming it.
+
+    Warnings are allowed.
+    """
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         try:
-            read_model(path)
+            for obj in read_model(path).objects:
+                texture = getattr(obj.material, "texture", None)
+                if texture is not None:
+                    assert texture.levels  # pictures decode at first use: errors come here
         except (ValueError, TypeError) as exc:
             assert path.name in str(exc), f"{type(exc).__name__} without the file's name: {exc}"
 

@@ -639,7 +639,7 @@ def _mtl_number(value: Any, default: float) -> float:
 
 
 def _texture(path: Path, image: Any, shared: dict, *, keep_alpha: bool) -> Texture | None:
-    """Return the picture as a Texture (with alpha only when it matters), decoded once."""
+    """Return the picture as a Texture (with alpha only when it matters), shared by materials."""
     if image is None:
         return None
     import PIL.Image
@@ -649,14 +649,9 @@ def _texture(path: Path, image: Any, shared: dict, *, keep_alpha: bool) -> Textu
     key = ("texture", id(image), keep_alpha)
     if key in shared:
         return shared[key]
-    try:
-        image.load()  # decode now: a truncated PNG/JPEG fails here, not in a render
-        has_alpha = image.mode in ("RGBA", "LA", "PA") or "transparency" in image.info
-        # Texture converts to RGBA itself: only an alpha that must be dropped needs a pass here.
-        picture = image.convert("RGB") if has_alpha and not keep_alpha else image
-    except (OSError, ValueError, SyntaxError, PIL.Image.DecompressionBombError) as exc:
-        raise ValueError(f"{path}: a texture could not be decoded ({exc})") from None
-    shared[key] = Texture(picture, name=f"{path.name} texture")
+    # Decoded at first use (as trimesh leaves it): a truncated picture raises its ValueError
+    # naming the file then, and loading costs little more than trimesh's.
+    shared[key] = Texture.deferred(image, name=f"{path.name} texture", opaque=not keep_alpha)
     return shared[key]
 
 

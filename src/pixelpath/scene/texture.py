@@ -15,6 +15,11 @@ Conventions (SPEC, ``pp.Mesh`` and ``pp.Material``):
   above (an odd side repeats its last row or column), down to 1 × 1.
 - Size: a side over :data:`MAX_SIDE` texels is reduced (by a whole factor, with a warning)
   before anything else, so a 16k × 16k picture costs 64 MB rather than 1 GB.
+- Decoding: a file, a PIL image or an array is read at once. :meth:`Texture.deferred` (what
+  the model-file loader uses) decodes a PIL image when the texture is first used, as PIL and
+  trimesh open pictures lazily, so loading a model costs little more than trimesh's own
+  loading; pixels that cannot be decoded (a truncated PNG or JPEG) raise the ValueError
+  naming the picture then.
 """
 
 from __future__ import annotations
@@ -73,6 +78,8 @@ class Texture:
         images, uint8 arrays), False for float arrays (linear, in [0, 1]).
     name : str, optional
         A label for messages; a file's name by default.
+    opaque : bool, default False
+        Ignore the picture's alpha channel (a glTF material whose alpha mode is OPAQUE).
 
     Raises
     ------
@@ -95,7 +102,8 @@ class Texture:
 
     __hash__ = None  # textures compare by value
 
-    def __init__(self, image: Any, *, srgb: bool | None = None, name: str | None = None) -> None:
+    def __init__(self, image: Any, *, srgb: bool | None = None, name: str | None = None,
+                 opaque: bool = False) -> None:
         if name is not None and not isinstance(name, str):
             raise TypeError(f"name must be a str, got {type(name).__name__}")
         if srgb is not None and not isinstance(srgb, bool):
@@ -104,16 +112,52 @@ class Texture:
         if isinstance(image, str | os.PathLike):
             path = Path(image)
             label = label or path.name
-            rgba, eight_bit = _read_file(path)
+            rgba, eight_bit = _read_file(path, opaque)
         elif _is_pil_image(image):
-            rgba, eight_bit = _from_pil(image, label or "texture")
+            rgba, eight_bit = _from_pil(image, label or "texture", opaque)
         else:
             rgba, eight_bit = _from_array(image)
+            if opaque:
+                rgba = _opaque(rgba)
         self.name = label
         self.srgb = eight_bit if srgb is None else srgb
-        base = _encoded_base(rgba, self.srgb)
-        base.flags.writeable = False
-        self._base = base
+        self._pending: tuple[Any, str, bool] | None = None
+        self.__dict__["_base"] = _frozen(_encoded_base(rgba, self.srgb))
+
+    @classmethod
+    def deferred(cls, image: Any, *, name: str, opaque: bool = False) -> Texture:
+        """Make a texture of a PIL image that is decoded when the texture is first used.
+
+        The image must stay readable until then (not closed). Undecodable pixels raise the
+        ValueError, naming ``name``, at that first use.
+
+        Examples
+        --------
+        >>> import io
+        >>> from PIL import Image
+        >>> from pixelpath.scene import Texture
+        >>> buffer = io.BytesIO()
+        >>> Image.new("RGB", (4, 2), (255, 0, 0)).save(buffer, format="PNG")
+        >>> texture = Texture.deferred(Image.open(buffer), name="red.png")
+        >>> texture.width, texture.height
+        (4, 2)
+        """
+        if not _is_pil_image(image):
+            raise TypeError(f"{name}: a deferred texture needs a PIL image, got "
+                            f"{type(image).__name__}")
+        texture = cls.__new__(cls)
+        texture.name = name
+        texture.srgb = image.mode not in _WIDE_MODES
+        texture._pending = (image, name, opaque)
+        return texture
+
+    @functools.cached_property
+    def _base(self) -> np.ndarray:
+        """The base level, decoded from the deferred PIL image at first use."""
+        image, label, opaque = self._pending
+        rgba, _ = _from_pil(image, label, opaque)
+        self._pending = None
+        return _frozen(_encoded_base(rgba, self.srgb))
 
     @property
     def width(self) -> int:
@@ -132,9 +176,7 @@ class Texture:
         linear = _decoded(self._base)
         while linear.shape[0] > 1 or linear.shape[1] > 1:
             linear = _half(linear)
-            level = _encoded(linear)
-            level.flags.writeable = False
-            levels.append(level)
+            levels.append(_frozen(_encoded(linear)))
         return tuple(levels)
 
     def linear(self, level: int = 0) -> np.ndarray:
@@ -175,12 +217,27 @@ class Texture:
         return f"<Texture{label}: {self.width}x{self.height}>"
 
 
+# PIL modes of more than 8 bits a channel: linear, not sRGB.
+_WIDE_MODES = ("I;16", "I;16B", "I;16L", "I", "F")
+
+
+def _frozen(array: np.ndarray) -> np.ndarray:
+    array.flags.writeable = False
+    return array
+
+
+def _opaque(rgba: np.ndarray) -> np.ndarray:
+    out = rgba.copy()
+    out[..., 3] = 255 if out.dtype == np.uint8 else 1.0
+    return out
+
+
 def _is_pil_image(value: Any) -> bool:
     module = type(value).__module__
     return module.startswith("PIL.") and hasattr(value, "convert")
 
 
-def _read_file(path: Path) -> tuple[np.ndarray, bool]:
+def _read_file(path: Path, opaque: bool) -> tuple[np.ndarray, bool]:
     from PIL import Image as PILImage
     from PIL import UnidentifiedImageError
 
@@ -190,30 +247,37 @@ def _read_file(path: Path) -> tuple[np.ndarray, bool]:
         with warnings.catch_warnings():
             warnings.simplefilter("error", PILImage.DecompressionBombWarning)
             with PILImage.open(path) as img:
-                return _from_pil(img, str(path))
+                return _from_pil(img, str(path), opaque)
     except (UnidentifiedImageError, OSError, SyntaxError, PILImage.DecompressionBombError,
             PILImage.DecompressionBombWarning) as exc:
         raise ValueError(f"{path}: not a readable image ({exc})") from None
 
 
-def _from_pil(img: Any, label: str) -> tuple[np.ndarray, bool]:
+def _from_pil(img: Any, label: str, opaque: bool) -> tuple[np.ndarray, bool]:
     """Return (H, W, 4) pixels of a PIL image, reduced to MAX_SIDE, and whether 8-bit."""
+    from PIL import Image as PILImage
+
+    try:
+        return _decoded_pil(img, label, opaque)
+    except (OSError, ValueError, SyntaxError, PILImage.DecompressionBombError) as exc:
+        # Truncated or corrupt data is only found when the pixels are decoded.
+        raise ValueError(f"{label}: not a readable image ({exc})") from None
+
+
+def _decoded_pil(img: Any, label: str, opaque: bool) -> tuple[np.ndarray, bool]:
     reduction = -(-max(img.size) // MAX_SIDE)
     if reduction > 1:
         warnings.warn(
             f"{label}: a {img.size[0]}x{img.size[1]} texture is larger than {MAX_SIDE} texels "
-            f"on a side; reduced {reduction} times", UserWarning, stacklevel=4,
+            f"on a side; reduced {reduction} times", UserWarning, stacklevel=5,
         )
         img = img.reduce(reduction)
-    if img.mode in ("I;16", "I;16B", "I;16L", "I", "F"):
+    if img.mode in _WIDE_MODES:
         grey = np.asarray(img, dtype=np.float64)
         grey = grey / (65535.0 if img.mode != "F" else 1.0)
         return _from_array(np.repeat(grey[..., None], 3, axis=2))[0], False
-    try:
-        rgba = np.asarray(img.convert("RGBA"))  # Pillow adds the alpha faster than NumPy
-    except OSError as exc:  # truncated data is only found when decoding
-        raise ValueError(f"{label}: not a readable image ({exc})") from None
-    return _from_array(rgba)[0], True
+    # Pillow adds (or drops) the alpha faster than NumPy does.
+    return _from_array(np.asarray(img.convert("RGB" if opaque else "RGBA")))[0], True
 
 
 def _from_array(image: Any) -> tuple[np.ndarray, bool]:
