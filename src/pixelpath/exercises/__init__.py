@@ -115,7 +115,16 @@ def from_notes() -> list[Exercise]:
 def export(exercises_list, path, format: str = "markdown"):
     """Write exercises as a worksheet and answer key, or for a course platform.
 
-    See :func:`pixelpath.exercises.export.export_exercises` for the formats.
+    ``format`` is ``"markdown"``, ``"html"``, ``"moodle"`` or ``"prairielearn"``; see
+    :func:`pixelpath.exercises.exporting.export_exercises` for what each writes. Returns the
+    paths of the files written.
+
+    Examples
+    --------
+    >>> from pixelpath import exercises
+    >>> quiz = [exercises.make("ray-sphere", seed=s) for s in range(3)]
+    >>> [p.name for p in exercises.export(quiz, "quiz", format="moodle")]
+    ['quiz.xml']
     """
     from pixelpath.exercises.exporting import export_exercises
 
