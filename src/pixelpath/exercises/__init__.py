@@ -23,6 +23,9 @@ True
 from __future__ import annotations
 
 import importlib
+import os
+from collections.abc import Sequence
+from pathlib import Path
 
 from pixelpath.exercises.exercise import CheckResult, Exercise, Field, Step
 from pixelpath.exercises.topics import DIFFICULTIES, TOPIC_REGISTRY, exercise_for, rng_for
@@ -112,7 +115,8 @@ def from_notes() -> list[Exercise]:
     return notes_exercises()
 
 
-def export(exercises_list, path, format: str = "markdown"):
+def export(exercises_list: Sequence[Exercise], path: str | os.PathLike,
+           format: str = "markdown") -> list[Path]:
     """Write exercises as a worksheet and answer key, or for a course platform.
 
     ``format`` is ``"markdown"``, ``"html"``, ``"moodle"`` or ``"prairielearn"``; see
