@@ -59,8 +59,8 @@ from pathlib import Path
 from pixelpath import _precompiled
 _precompiled.SHIPPED = Path(sys.argv[1])
 from pixelpath import _warm
-cold = _warm.cold_groups(["lighting"])
-_warm.compile_groups(["lighting"], processes=1)
+cold = _warm.cold_groups(["lighting"], _precompiled.markers())
+_warm.compile_groups(["lighting"], _precompiled.markers(), processes=1)
 compiled, loaded = _warm._specializations("pixelpath.lighting._kernels")
 print(json.dumps({"cold": cold, "compiled": compiled, "loaded": loaded}))
 """

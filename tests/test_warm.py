@@ -11,7 +11,7 @@ import textwrap
 import numba
 import pytest
 
-from pixelpath import _warm
+from pixelpath import _precompiled, _warm
 from pixelpath.renderer import METHOD_NAMES, STYLES
 
 needs_jit = pytest.mark.skipif(numba.config.DISABLE_JIT, reason="needs Numba's JIT")
@@ -76,7 +76,7 @@ def test_recorded_seconds_replace_the_estimate(tmp_path):
 
 def test_unknown_groups_are_refused():
     with pytest.raises(ValueError, match="unknown kernel groups"):
-        _warm.compile_groups(["front", "nonsense"])
+        _warm.compile_groups(["front", "nonsense"], None)
 
 
 def test_a_failed_worker_leaves_its_share_to_this_process(monkeypatch):
@@ -107,7 +107,7 @@ def test_the_stamp_follows_the_install_location_and_the_sources(tmp_path):
 
     here = _warm._stamp()
     assert here == _warm._stamp() and len(here) == 16
-    assert here in str(_warm._marker_folder())
+    assert here in str(_precompiled.markers())
     copy = tmp_path / "pixelpath"
     shutil.copytree(os.path.dirname(pixelpath.__file__), copy,
                     ignore=shutil.ignore_patterns("__pycache__"))
@@ -159,10 +159,10 @@ def test_after_compiling_the_groups_a_render_compiles_nothing(tmp_path):
     env.pop("NUMBA_CACHE_DIR", None)
     methods = sorted(_warm.METHOD_GROUPS)
     warm = (
-        "from pixelpath import _warm; import json, sys; "
-        "groups = _warm.groups_for(sys.argv[1:]); "
-        "print(json.dumps([_warm.cold_groups(groups), sorted(_warm.compile_groups(groups, 2)), "
-        "_warm.cold_groups(groups)]))"
+        "from pixelpath import _precompiled, _warm; import json, sys; "
+        "groups = _warm.groups_for(sys.argv[1:]); folder = _precompiled.markers(); "
+        "print(json.dumps([_warm.cold_groups(groups, folder), "
+        "sorted(_warm.compile_groups(groups, folder, 2)), _warm.cold_groups(groups, folder)]))"
     )
     result = subprocess.run([sys.executable, "-c", warm, *methods], env=env, check=True,
                             capture_output=True, text=True)

@@ -129,6 +129,7 @@ def warmup() -> int:
     >>> pp.warmup() > 0
     True
     """
+    from pixelpath._precompiled import markers
     from pixelpath._warm import run_warmups
 
-    return len(run_warmups())
+    return len(run_warmups(markers()))

@@ -11,7 +11,9 @@ changes:
   ``$NUMBA_CACHE_DIR/pixelpath``, else the platform's per-user cache folder. When it cannot be
   written (a read-only home directory), a private folder in the temporary directory is used, and
   when that fails too the kernels compile without a disk cache; either way one
-  :class:`CacheWarning` says so (:func:`writable_cache_dir`).
+  :class:`CacheWarning` says so (:func:`writable_cache_dir`). The kernels compiled when
+  pixelpath was built are copied into that folder by :mod:`pixelpath._precompiled`, which
+  calls this module (and :mod:`pixelpath._warm`), never the other way round.
 * **Freshness.** Numba stamps a cache with its own source file only, so a kernel that inlines a
   function from another file would keep stale code when that file changes. The stamp here
   (:func:`source_stamp`) hashes the kernel's file together with every pixelpath module it
@@ -112,13 +114,13 @@ def writable_cache_dir() -> Path | None:
 
     :func:`cache_dir` when it can be written; else the private temporary folder
     ``pixelpath-<uid>/numba`` with one :class:`CacheWarning`; else None (the kernels compile
-    in every new process) with one :class:`CacheWarning`. Decided once per process, when the
-    kernels compiled at build time are also copied into it (:mod:`pixelpath._precompiled`).
+    in every new process) with one :class:`CacheWarning`. Decided once per process;
+    :func:`pixelpath._precompiled.cache_root` copies the kernels compiled at build time into it.
     """
     preferred = cache_dir()
     reason = _unwritable_reason(preferred)
     if reason is None:
-        return _seeded(preferred)
+        return preferred
     advice = "set PIXELPATH_CACHE_DIR to a writable folder to choose where"
     try:
         fallback = _fallback_dir()
@@ -138,15 +140,7 @@ def writable_cache_dir() -> Path | None:
         CacheWarning,
         stacklevel=2,
     )
-    return None if fallback is None else _seeded(fallback)
-
-
-def _seeded(folder: Path) -> Path:
-    """Hand ``folder`` the kernels compiled when pixelpath was built (once), and return it."""
-    from pixelpath._precompiled import seed
-
-    seed(folder)
-    return folder
+    return fallback
 
 
 def _module_file(name: str) -> Path | None:

@@ -30,6 +30,7 @@ from numba.core import config
 from numba.core.compiler_lock import global_compiler_lock
 
 from pixelpath._cache import cache_dir, enable_cache
+from pixelpath._precompiled import cache_root
 
 __all__ = ["cache_dir", "njit", "prange"]
 
@@ -71,6 +72,9 @@ def njit(function: Callable | None = None, /, **options) -> Callable:
         if config.DISABLE_JIT:
             return dispatcher
         if cache:
+            # The kernels compiled at build time go into the cache before Numba first looks
+            # there, so that it loads them instead of compiling.
+            cache_root()
             enable_cache(dispatcher)
         if simd:
             dispatcher.compile = _with_slp_vectorizer(dispatcher.compile)

@@ -19,10 +19,17 @@ them at build time).
 
 Run as ``python -m pixelpath._precompiled FOLDER`` (what ``setup.py`` does while building) it
 compiles the groups and writes the files into FOLDER, unless ``PIXELPATH_PRECOMPILED=0``.
+
+Of the kernel cache's three modules this one is on top: it calls :mod:`pixelpath._cache` (the
+folder and the stamps) and :mod:`pixelpath._warm` (the groups and their markers), which call
+neither each other nor this one. So the folder everything else uses, seeded, is
+:func:`cache_root`: the kernels' own caches (:mod:`pixelpath._jit`) and the groups' markers
+(:func:`markers`) come through it.
 """
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import json
 import os
@@ -50,7 +57,7 @@ from pixelpath._warm import (
     write_markers,
 )
 
-__all__ = ["BUILT_GROUPS", "MANIFEST", "build", "enabled", "seed"]
+__all__ = ["BUILT_GROUPS", "MANIFEST", "build", "cache_root", "enabled", "markers", "seed"]
 
 # Every group a render calls, whatever its method, shading or drawing style; the clipping and
 # colour kernels (about a minute of compiling between them, over every dtype they accept)
@@ -167,10 +174,11 @@ def build(destination: Path, groups: Iterable[str] = BUILT_GROUPS) -> dict:
     each with the data files it names. Returns the manifest written beside the files.
     """
     groups = tuple(groups)
-    root = writable_cache_dir()
+    root = cache_root()
     if root is None or numba.config.DISABLE_JIT:
         raise RuntimeError("kernels cannot be compiled into a cache (JIT disabled or no folder)")
-    compile_groups(cold_groups(groups))
+    folder = marker_folder(root)
+    compile_groups(cold_groups(groups, folder), folder)
     shutil.rmtree(destination, ignore_errors=True)
     digest = hashlib.sha256()
     for folder in _source_folders():
@@ -183,10 +191,9 @@ def build(destination: Path, groups: Iterable[str] = BUILT_GROUPS) -> dict:
             for name in sorted(index.data_files | {path.name}):
                 shutil.copyfile(compiled / name, target / name)
                 digest.update(name.encode() + (target / name).read_bytes())
-    markers = marker_folder(root)
     manifest = {
         **_compiled_for(),
-        "groups": {group: round(recorded_seconds(group, markers), 3) for group in groups},
+        "groups": {group: round(recorded_seconds(group, folder), 3) for group in groups},
         "id": digest.hexdigest()[:16],
     }
     (destination / MANIFEST).write_text(json.dumps(manifest, indent=1) + "\n")
@@ -256,6 +263,34 @@ def seed(root: Path, shipped: Path | None = None) -> bool:
     except (OSError, KeyError, TypeError, ValueError):
         return False
     return True
+
+
+@functools.cache
+def cache_root() -> Path | None:
+    """Return the kernel cache's folder, the kernels compiled at build time in it; None if none.
+
+    The folder is :func:`pixelpath._cache.writable_cache_dir`'s. The shipped kernels are copied
+    in (:func:`seed`) the first time a process asks, which is before Numba looks for a kernel
+    there (:func:`pixelpath._jit.njit` asks first) or a command for a group's marker.
+    """
+    root = writable_cache_dir()
+    if root is not None:
+        seed(root)
+    return root
+
+
+def markers() -> Path | None:
+    """Return the folder of the groups' markers (:mod:`pixelpath._warm`); None without a cache.
+
+    Examples
+    --------
+    >>> from pixelpath._precompiled import markers
+    >>> folder = markers()
+    >>> folder is None or folder.parent.name == "warm"
+    True
+    """
+    root = cache_root()
+    return None if root is None else marker_folder(root)
 
 
 def _build_for_setup(destination: Path) -> None:

@@ -1,4 +1,4 @@
-"""Input checks shared across the package: scene records and light packing.
+"""Input checks shared across the package: scene records, light packing and render options.
 
 Each message names the argument and shows what came in.
 """
@@ -135,3 +135,18 @@ def finite_array(value: Any, name: str, last: int | None = None) -> np.ndarray:
         kind = "NaN" if np.any(np.isnan(array)) else "infinite values"
         raise ValueError(f"{name} must be finite, got {kind} in {_describe(value)}")
     return array
+
+
+def choice(value: Any, name: str, choices: tuple[str, ...]) -> None:
+    """Check that ``value`` is one of the strings ``choices``."""
+    if not isinstance(value, str) or value not in choices:
+        raise ValueError(f"{name} must be one of {', '.join(choices)}; got {value!r}")
+
+
+def int_in(value: Any, name: str, low: int, high: int, meaning: str) -> int:
+    """Return ``value`` as an int in ``low..high``; ``meaning`` says what it counts."""
+    if not isinstance(value, int | np.integer) or isinstance(value, bool):
+        raise TypeError(f"{name} must be an int ({meaning}), got {type(value).__name__}")
+    if not low <= value <= high:
+        raise ValueError(f"{name} must be in {low}..{high} ({meaning}), got {value}")
+    return int(value)

@@ -11,6 +11,9 @@ A group is known to be compiled when its marker exists: a file named after the g
 folder of the cache named after a hash of pixelpath's sources and the Python and Numba
 versions, so that any change to the code makes every group cold again (loading unchanged
 kernels from the cache is quick). The marker holds the seconds the group took to compile.
+The functions here are handed that folder (:func:`pixelpath._precompiled.markers` finds it in
+the kernel cache): this module imports neither :mod:`pixelpath._cache` nor
+:mod:`pixelpath._precompiled`.
 
 Run as ``python -m pixelpath._warm GROUP...`` a worker compiles the groups named and prints
 their seconds as JSON.
@@ -152,10 +155,11 @@ def _specializations(module_name: str) -> tuple[int, int]:
     return compiled, loaded
 
 
-def run_warmups() -> list[WarmupReport]:
+def run_warmups(markers: Path | None) -> list[WarmupReport]:
     """Run every group's warm-up in this process, module by module; report each module.
 
-    Afterwards every group is in the disk cache, so its marker is written too: a first render
+    Afterwards every group is in the disk cache, so its marker is written too (in the folder
+    ``markers``; None when there is no disk cache): a first render
     then starts no worker processes. ``pixelpath warmup`` prints these reports (its test
     checks that a second run compiles nothing); compiling everything takes minutes, so the
     example of :class:`WarmupReport` only shows their shape.
@@ -171,9 +175,8 @@ def run_warmups() -> list[WarmupReport]:
         compiled, loaded = (now - then for now, then in zip(_specializations(module), before,
                                                             strict=True))
         reports.append(WarmupReport(module, elapsed, compiled, loaded))
-    folder = _marker_folder() if _jit_enabled() else None
-    if folder is not None:
-        write_markers(folder, seconds)
+    if markers is not None and _jit_enabled():
+        write_markers(markers, seconds)
     return reports
 
 
@@ -242,22 +245,14 @@ def marker_folder(root: Path) -> Path:
     return root / "warm" / _stamp()
 
 
-def _marker_folder() -> Path | None:
-    """Return the markers' folder, in the folder the kernels are cached in; None without one."""
-    from pixelpath._cache import writable_cache_dir
-
-    root = writable_cache_dir()
-    return None if root is None else marker_folder(root)
-
-
 def _jit_enabled() -> bool:
     import numba
 
     return not numba.config.DISABLE_JIT
 
 
-def cold_groups(groups: Iterable[str]) -> list[str]:
-    """Return those of ``groups`` not yet compiled into the disk cache (in their order).
+def cold_groups(groups: Iterable[str], markers: Path | None) -> list[str]:
+    """Return those of ``groups`` without a marker in the folder ``markers`` (in their order).
 
     Empty when Numba's JIT is disabled (nothing to compile) and when no cache folder can be
     written (worker processes could not hand their code over: each kernel compiles on first
@@ -265,14 +260,16 @@ def cold_groups(groups: Iterable[str]) -> list[str]:
 
     Examples
     --------
+    >>> from pixelpath._precompiled import markers
     >>> from pixelpath._warm import cold_groups
-    >>> set(cold_groups(["front", "back"])) <= {"front", "back"}
+    >>> set(cold_groups(["front", "back"], markers())) <= {"front", "back"}
     True
+    >>> cold_groups(["front", "back"], None)
+    []
     """
-    folder = _marker_folder() if _jit_enabled() else None
-    if folder is None:
+    if markers is None or not _jit_enabled():
         return []
-    return [group for group in groups if not (folder / group).is_file()]
+    return [group for group in groups if not (markers / group).is_file()]
 
 
 def recorded_seconds(group: str, folder: Path | None) -> float:
@@ -294,20 +291,22 @@ def recorded_seconds(group: str, folder: Path | None) -> float:
         return GROUPS[group][1]
 
 
-def estimate_seconds(groups: Sequence[str], processes: int | None = None) -> float:
+def estimate_seconds(
+    groups: Sequence[str], markers: Path | None, processes: int | None = None
+) -> float:
     """Return about how long compiling ``groups`` on ``processes`` processes takes.
 
-    From the seconds each group took when last compiled here, else the built-in estimate.
+    From the seconds each group took when last compiled here (its marker in ``markers``), else
+    the built-in estimate.
 
     Examples
     --------
     >>> from pixelpath._warm import estimate_seconds
-    >>> estimate_seconds([]) == 0
+    >>> estimate_seconds([], None) == 0
     True
     """
-    folder = _marker_folder()
-    shares = _share_out(groups, processes or _cores(), folder)
-    return max((sum(recorded_seconds(g, folder) for g in share) for share in shares), default=0)
+    shares = _share_out(groups, processes or _cores(), markers)
+    return max((sum(recorded_seconds(g, markers) for g in share) for share in shares), default=0)
 
 
 def _cores() -> int:
@@ -349,17 +348,22 @@ def _compile_here(groups: Iterable[str]) -> dict[str, float]:
     return seconds
 
 
-def compile_groups(groups: Sequence[str], processes: int | None = None) -> dict[str, float]:
+def compile_groups(
+    groups: Sequence[str], markers: Path | None, processes: int | None = None
+) -> dict[str, float]:
     """Compile ``groups`` into the disk cache, on up to ``processes`` processes at once.
 
     This process compiles one share itself; the others go to worker processes started with
     the same Python. A worker that fails leaves its groups to this process. Each compiled
-    group's marker is written afterwards (when the cache folder is writable).
+    group's marker is written afterwards.
 
     Parameters
     ----------
     groups : sequence of str
         Names from :data:`GROUPS`.
+    markers : Path or None
+        The markers' folder in the kernel cache (:func:`pixelpath._precompiled.markers`); None
+        when there is no disk cache, and everything compiles in this process.
     processes : int, optional
         How many processes compile at once (default: the cores this process may use).
 
@@ -370,24 +374,24 @@ def compile_groups(groups: Sequence[str], processes: int | None = None) -> dict[
 
     Examples
     --------
+    >>> from pixelpath._precompiled import markers
     >>> from pixelpath._warm import compile_groups
-    >>> sorted(compile_groups(["lighting"], processes=1))
+    >>> sorted(compile_groups(["lighting"], markers(), processes=1))
     ['lighting']
     """
     unknown = sorted(set(groups) - set(GROUPS))
     if unknown:
         raise ValueError(f"unknown kernel groups {unknown}; known: {sorted(GROUPS)}")
-    folder = _marker_folder()
-    if folder is None:  # no disk cache: what workers compiled would not reach this process
+    if markers is None:  # no disk cache: what workers compiled would not reach this process
         return _compile_here(groups)
-    shares = _share_out(list(groups), processes or _cores(), folder)
+    shares = _share_out(list(groups), processes or _cores(), markers)
     if not shares:
         return {}
     workers = [_start_worker(share) for share in shares[1:]]
     seconds = _compile_here(shares[0])
     for share, worker in zip(shares[1:], workers, strict=True):
         seconds.update(_finish_worker(share, worker))
-    write_markers(folder, seconds)
+    write_markers(markers, seconds)
     return seconds
 
 

@@ -7,7 +7,8 @@ they differ only in how they decide which surface each pixel shows. The ray trac
 deterministic: the same scene gives the same bytes whatever the number of threads.
 
 A method is a module with ``STEPS`` (how many progress steps it reports) and
-``render_frame(scene, view, options) -> Frame``.
+``render_frame(scene, view, options) -> Frame``: the contract of :mod:`pixelpath.contract`,
+whose types this module re-exports (``pixelpath.renderer.View`` is ``pixelpath.contract.View``).
 """
 
 from __future__ import annotations
@@ -19,99 +20,16 @@ from typing import Any
 
 import numpy as np
 
+from pixelpath._validate import choice, int_in
+from pixelpath.contract import METHOD_MODULES, METHOD_NAMES, STYLES, Frame, RenderOptions, View
 from pixelpath.image import Image
 from pixelpath.scene import Camera, Scene
 
 __all__ = ["MAX_SAMPLES", "METHOD_NAMES", "STYLES", "Frame", "RenderOptions", "View", "render"]
 
-METHOD_NAMES = ("zbuffer", "scanline", "painter", "bsp", "warnock", "octree", "raytrace")
-STYLES = ("filled", "wireframe", "hidden-line")
-
-# The module implementing each method.
-_METHOD_MODULES = {
-    "zbuffer": "pixelpath.hsr.zbuffer",
-    "scanline": "pixelpath.hsr.scanline",
-    "painter": "pixelpath.hsr.painter",
-    "bsp": "pixelpath.hsr.bsp",
-    "warnock": "pixelpath.hsr.warnock",
-    "octree": "pixelpath.hsr.octree",
-    "raytrace": "pixelpath.raytrace.tracer",
-}
-
 # Samples (width × height × ssaa²) a frame may hold: 32 bytes of buffers per sample (colour,
 # depth, object id, and the rasterizer's 1/w and triangle), about 2 GB at the limit.
 MAX_SAMPLES = 1 << 26
-
-
-@dataclasses.dataclass(frozen=True)
-class View:
-    """The camera and the rectangle of its image that a method renders.
-
-    Pixel (i, j) of the region is pixel (x0 + i, y0 + j) of the camera's image, computed with
-    exactly the same numbers, so tiles rendered separately stitch into the whole image.
-
-    Examples
-    --------
-    >>> from pixelpath.scene import Camera
-    >>> from pixelpath.renderer import View
-    >>> view = View.whole(Camera(eye=(0, 0, 5), target=(0, 0, 0), width=64, height=48))
-    >>> view.x0, view.y0, view.width, view.height
-    (0, 0, 64, 48)
-    """
-
-    camera: Camera
-    x0: int
-    y0: int
-    width: int
-    height: int
-
-    @classmethod
-    def whole(cls, camera: Camera) -> View:
-        """Return the view of the camera's whole image."""
-        return cls(camera, 0, 0, camera.width, camera.height)
-
-
-@dataclasses.dataclass(frozen=True)
-class RenderOptions:
-    """The choices :func:`render` passes to a method (already validated)."""
-
-    shading: str = "phong"
-    backface_cull: bool = True
-    blinn: bool = False
-    explain: bool = False
-    max_depth: int = 5
-    samples: int = 1
-    fresnel: bool = False
-    progress: Callable[[int], None] = dataclasses.field(default=lambda steps: None)
-
-
-@dataclasses.dataclass(frozen=True)
-class Frame:
-    """The buffers of one rendered frame (or region of one).
-
-    Attributes
-    ----------
-    rgb : (h, w, 3) float32
-        Clamped intensities; the background where nothing was drawn.
-    depth : (h, w) float32
-        Distance along the viewing axis; ``inf`` where nothing was drawn.
-    object_id : (h, w) int32
-        Index of the scene object seen at each pixel; -1 for the background.
-    stats : dict of str to int
-        What the pipeline's stages took in and let through.
-    report : Report or None
-        What the method did, when asked to explain itself.
-    normal : (h, w, 3) float32 or None
-        Unit shading normal of the visible surface, 0 where nothing was drawn; None for the
-        line styles, which draw no surfaces.
-    """
-
-    rgb: np.ndarray
-    depth: np.ndarray
-    object_id: np.ndarray
-    stats: dict[str, int] = dataclasses.field(default_factory=dict)
-    report: Any = None
-    normal: np.ndarray | None = None
 
 
 def render(
@@ -198,16 +116,16 @@ def render(
     if not isinstance(scene, Scene):
         raise TypeError(f"scene must be a pixelpath Scene, got {type(scene).__name__}")
     module = _method_module(method)
-    _choice(shading, "shading", ("flat", "gouraud", "phong"))
-    _choice(style, "style", STYLES)
-    factor = _int_in(ssaa, "ssaa", 1, 16, "samples per pixel side; 1 means no supersampling")
+    choice(shading, "shading", ("flat", "gouraud", "phong"))
+    choice(style, "style", STYLES)
+    factor = int_in(ssaa, "ssaa", 1, 16, "samples per pixel side; 1 means no supersampling")
     options = RenderOptions(
         shading=shading,
         backface_cull=bool(backface_cull),
         blinn=bool(blinn),
         explain=bool(explain),
-        max_depth=_int_in(max_depth, "max_depth", 0, 64, "reflection/refraction bounces"),
-        samples=_int_in(samples, "samples", 1, 1024, "samples per pixel"),
+        max_depth=int_in(max_depth, "max_depth", 0, 64, "reflection/refraction bounces"),
+        samples=int_in(samples, "samples", 1, 1024, "samples per pixel"),
         fresnel=bool(fresnel),
         progress=progress or (lambda steps: None),
     )
@@ -265,20 +183,7 @@ def render_steps(method: str = "zbuffer") -> int:
 def _method_module(method: str):
     if not isinstance(method, str) or method not in METHOD_NAMES:
         raise ValueError(f"method must be one of {', '.join(METHOD_NAMES)}; got {method!r}")
-    return importlib.import_module(_METHOD_MODULES[method])
-
-
-def _choice(value: Any, name: str, choices: tuple[str, ...]) -> None:
-    if not isinstance(value, str) or value not in choices:
-        raise ValueError(f"{name} must be one of {', '.join(choices)}; got {value!r}")
-
-
-def _int_in(value: Any, name: str, low: int, high: int, meaning: str) -> int:
-    if not isinstance(value, int | np.integer) or isinstance(value, bool):
-        raise TypeError(f"{name} must be an int ({meaning}), got {type(value).__name__}")
-    if not low <= value <= high:
-        raise ValueError(f"{name} must be in {low}..{high} ({meaning}), got {value}")
-    return int(value)
+    return importlib.import_module(METHOD_MODULES[method])
 
 
 def _view(camera: Camera, region: Any, factor: int) -> View:

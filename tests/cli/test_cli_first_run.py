@@ -23,9 +23,9 @@ def compiled(monkeypatch):
     for variable in ("FORCE_COLOR", "TTY_INTERACTIVE", "TTY_COMPATIBLE"):
         monkeypatch.delenv(variable, raising=False)  # rich would take them over isatty()
     requests = []
-    monkeypatch.setattr(_warm, "cold_groups", lambda groups: list(groups))
-    monkeypatch.setattr(_warm, "estimate_seconds", lambda groups: 12.4)
-    monkeypatch.setattr(_warm, "compile_groups", requests.append)
+    monkeypatch.setattr(_warm, "cold_groups", lambda groups, markers: list(groups))
+    monkeypatch.setattr(_warm, "estimate_seconds", lambda groups, markers: 12.4)
+    monkeypatch.setattr(_warm, "compile_groups", lambda groups, markers: requests.append(groups))
     return requests
 
 
@@ -45,7 +45,7 @@ def test_the_notice_shows_only_on_a_terminal_and_the_kernels_compile_either_way(
 
 
 def test_a_warm_cache_means_no_notice_and_no_compiling(compiled, monkeypatch):
-    monkeypatch.setattr(_warm, "cold_groups", lambda groups: [])
+    monkeypatch.setattr(_warm, "cold_groups", lambda groups, markers: [])
     terminal = Terminal()
     monkeypatch.setattr("sys.stderr", terminal)
     compile_kernels(["zbuffer"])
@@ -53,7 +53,6 @@ def test_a_warm_cache_means_no_notice_and_no_compiling(compiled, monkeypatch):
     assert compiled == []
 
 
-def test_without_a_writable_cache_no_group_counts_as_cold(monkeypatch):
-    monkeypatch.setattr(_warm, "_marker_folder", lambda: None)
-    assert _warm.cold_groups(["front", "back"]) == []
-    assert _warm.estimate_seconds(["front"], processes=1) == _warm.GROUPS["front"][1]
+def test_without_a_writable_cache_no_group_counts_as_cold():
+    assert _warm.cold_groups(["front", "back"], None) == []
+    assert _warm.estimate_seconds(["front"], None, processes=1) == _warm.GROUPS["front"][1]

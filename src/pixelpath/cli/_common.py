@@ -55,18 +55,20 @@ def compile_kernels(
     when the kernels are in the disk cache already. While they compile, a line on standard
     error says so (only on a terminal, and not when ``quiet``).
     """
+    from pixelpath._precompiled import markers
     from pixelpath._warm import cold_groups, compile_groups, estimate_seconds, groups_for
 
-    cold = cold_groups(groups_for(methods, shadings))
+    folder = markers()
+    cold = cold_groups(groups_for(methods, shadings), folder)
     if not cold:
         return
     err = error_console()
     if not quiet and err.is_terminal:
         err.print(
-            f"compiling kernels for the first run, about {estimate_seconds(cold):.0f} s; "
+            f"compiling kernels for the first run, about {estimate_seconds(cold, folder):.0f} s; "
             "later runs are instant"
         )
-    compile_groups(cold)
+    compile_groups(cold, folder)
 
 
 @contextlib.contextmanager

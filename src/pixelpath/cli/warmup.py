@@ -27,11 +27,11 @@ def register(subparsers) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Compile every kernel; print per kernel module the time and what compiled, and the cache."""
-    from pixelpath._cache import writable_cache_dir
+    from pixelpath._precompiled import cache_root, markers
     from pixelpath._warm import run_warmups
 
     start = time.perf_counter()
-    reports = run_warmups()
+    reports = run_warmups(markers())
     total = time.perf_counter() - start
     out = console()
     out.print(f"{'kernel module':34s} {'seconds':>8s} {'compiled':>9s} {'from cache':>11s}")
@@ -42,7 +42,7 @@ def run(args: argparse.Namespace) -> int:
     compiled = sum(report.compiled for report in reports)
     loaded = sum(report.loaded for report in reports)
     out.print(f"{'total (with imports)':34s} {total:8.1f} {compiled:9d} {loaded:11d}")
-    folder = writable_cache_dir()
+    folder = cache_root()
     out.print(
         f"warmed up {len(reports)} kernel modules in {total:.1f} s: {compiled} specializations "
         f"compiled, {loaded} loaded from the cache; cache: {folder or 'none (not writable)'}"

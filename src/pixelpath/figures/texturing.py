@@ -93,9 +93,9 @@ def affine_rgb(scene) -> np.ndarray:
     >>> affine_rgb(receding_floor(64, 48)).shape
     (48, 64, 3)
     """
+    from pixelpath.contract import RenderOptions, View
     from pixelpath.hsr import pipeline
     from pixelpath.raster import _kernels
-    from pixelpath.renderer import RenderOptions, View
 
     view = View.whole(scene.camera)
     prepared = pipeline.prepare(scene, view, RenderOptions())

@@ -36,8 +36,8 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
+from pixelpath.contract import Frame, RenderOptions, View
 from pixelpath.hsr import pipeline
-from pixelpath.renderer import Frame, RenderOptions, View
 from pixelpath.scene import Plane, Scene
 
 __all__ = ["STEPS", "BSPTree", "build_tree", "render_frame"]
@@ -220,7 +220,7 @@ def render_frame(
     Examples
     --------
     >>> from pixelpath.scene import Box, Camera, PointLight, Scene
-    >>> from pixelpath.renderer import RenderOptions, View
+    >>> from pixelpath.contract import RenderOptions, View
     >>> from pixelpath.hsr.bsp import render_frame
     >>> scene = Scene(Camera(eye=(3, 3, 3), target=(0, 0, 0), width=32, height=24),
     ...               objects=[Box((-1, -1, -1), (1, 1, 1))], lights=[PointLight((5, 5, 5))])

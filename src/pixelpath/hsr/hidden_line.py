@@ -27,7 +27,7 @@ edges behind another surface, or behind the same object's front, disappear. The 
 most one pixel of a hidden line showing where it passes behind an outline. Planes are
 infinite: they have no edges to draw, but they hide edges behind them.
 
-The result is a :class:`~pixelpath.renderer.Frame`: colour of the line (or the background),
+The result is a :class:`~pixelpath.contract.Frame`: colour of the line (or the background),
 the line's depth (``inf`` where none) and its object (-1 where none).
 """
 
@@ -37,8 +37,8 @@ import dataclasses
 
 import numpy as np
 
+from pixelpath.contract import Frame, RenderOptions, View
 from pixelpath.raster.tessellate import _IdentityCache, scene_geometry
-from pixelpath.renderer import Frame, RenderOptions, View
 from pixelpath.scene import Plane, Scene
 
 __all__ = ["hidden_lines", "polygon_edges", "surface_limit", "surface_view", "wireframe"]
@@ -249,7 +249,7 @@ def surface_view(view: View) -> View:
     Examples
     --------
     >>> from pixelpath.scene import Camera
-    >>> from pixelpath.renderer import View
+    >>> from pixelpath.contract import View
     >>> from pixelpath.hsr.hidden_line import surface_view
     >>> camera = Camera(eye=(0, 0, 5), target=(0, 0, 0), width=64, height=48)
     >>> grown = surface_view(View(camera, 0, 10, 32, 20))

@@ -44,8 +44,8 @@ import time
 import numpy as np
 
 from pixelpath._threads import in_runs
+from pixelpath.contract import Frame, RenderOptions, View
 from pixelpath.hsr import pipeline
-from pixelpath.renderer import Frame, RenderOptions, View
 from pixelpath.scene import Scene
 
 __all__ = ["LEAF_SIZE", "MAX_DEPTH", "OUTCOMES", "STEPS", "Octree", "build_octree",
@@ -88,7 +88,7 @@ class Octree:
     Examples
     --------
     >>> from pixelpath.scene import Box, Camera, Scene
-    >>> from pixelpath.renderer import RenderOptions, View
+    >>> from pixelpath.contract import RenderOptions, View
     >>> from pixelpath.hsr import pipeline
     >>> from pixelpath.hsr.octree import build_octree
     >>> boxes = [Box((-2, -2, -2), (-1, -1, -1)), Box((1, 1, 1), (2, 2, 2))]
@@ -245,7 +245,7 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     Examples
     --------
     >>> from pixelpath.scene import Box, Camera, PointLight, Scene
-    >>> from pixelpath.renderer import RenderOptions, View
+    >>> from pixelpath.contract import RenderOptions, View
     >>> from pixelpath.hsr.octree import render_frame
     >>> scene = Scene(Camera(eye=(3, 3, 3), target=(0, 0, 0), width=32, height=24),
     ...               objects=[Box((-1, -1, -1), (1, 1, 1))], lights=[PointLight((5, 5, 5))])

@@ -39,7 +39,7 @@ from typing import NamedTuple
 import numpy as np
 
 from pixelpath._threads import in_runs
-from pixelpath.renderer import Frame, RenderOptions, View
+from pixelpath.contract import Frame, RenderOptions, View
 from pixelpath.scene import Scene
 
 __all__ = [
@@ -181,7 +181,7 @@ def prepare(
     Examples
     --------
     >>> from pixelpath.scene import Box, Camera, PointLight, Scene
-    >>> from pixelpath.renderer import RenderOptions, View
+    >>> from pixelpath.contract import RenderOptions, View
     >>> from pixelpath.hsr.pipeline import prepare
     >>> scene = Scene(Camera(eye=(3, 3, 3), target=(0, 0, 0), width=32, height=24),
     ...               objects=[Box((-1, -1, -1), (1, 1, 1))], lights=[PointLight((5, 5, 5))])
@@ -336,7 +336,7 @@ def cutouts(prepared: Prepared):
     --------
     >>> import numpy as np
     >>> import pixelpath as pp
-    >>> from pixelpath.renderer import RenderOptions, View
+    >>> from pixelpath.contract import RenderOptions, View
     >>> from pixelpath.hsr.pipeline import cutouts, prepare
     >>> texture = np.ones((2, 2, 4))
     >>> texture[0, 0, 3] = 0.0  # one transparent texel

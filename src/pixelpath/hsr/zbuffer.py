@@ -20,8 +20,8 @@ from __future__ import annotations
 import numpy as np
 
 from pixelpath._threads import in_runs
+from pixelpath.contract import Frame, RenderOptions, View
 from pixelpath.hsr import pipeline
-from pixelpath.renderer import Frame, RenderOptions, View
 from pixelpath.scene import Scene
 
 __all__ = ["STEPS", "render_frame"]
@@ -51,7 +51,7 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     Examples
     --------
     >>> from pixelpath.scene import Box, Camera, PointLight, Scene
-    >>> from pixelpath.renderer import RenderOptions, View
+    >>> from pixelpath.contract import RenderOptions, View
     >>> from pixelpath.hsr.zbuffer import render_frame
     >>> scene = Scene(Camera(eye=(3, 3, 3), target=(0, 0, 0), width=32, height=24),
     ...               objects=[Box((-1, -1, -1), (1, 1, 1))], lights=[PointLight((5, 5, 5))])

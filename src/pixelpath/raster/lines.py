@@ -6,7 +6,7 @@ the segment per half-space), so a segment crossing the near plane keeps exactly 
 front of the camera. Its ends are then mapped to pixels and the line between their pixels is
 drawn with Bresenham's integer algorithm: one pixel per step along the major axis, the minor
 coordinate advancing when the accumulated error crosses half a pixel. The result is
-8-connected, one pixel wide, with max(|Δx|, |Δy|) + 1 pixels.
+8-connected, one pixel wide, with ``max(|Δx|, |Δy|) + 1`` pixels.
 
 Each line pixel carries the line's depth there (the distance along the viewing axis),
 interpolated perspective-correctly: 1/w is affine along the projected line. The nearest line
@@ -29,7 +29,7 @@ import numpy as np
 from pixelpath.raster._arrays import kernel_array
 
 if TYPE_CHECKING:
-    from pixelpath.renderer import View
+    from pixelpath.contract import View
 
 __all__ = ["LineBuffers", "bresenham", "draw_lines"]
 
@@ -102,7 +102,7 @@ def draw_lines(
     --------
     >>> import numpy as np
     >>> from pixelpath.scene import Camera
-    >>> from pixelpath.renderer import View
+    >>> from pixelpath.contract import View
     >>> from pixelpath.raster.lines import draw_lines
     >>> camera = Camera(eye=(0, 0, 5), target=(0, 0, 0), fov=90, width=11, height=11)
     >>> lines = draw_lines([[-5.0, 0.0, 0.0]], [[5.0, 0.0, 0.0]], [0], View.whole(camera))

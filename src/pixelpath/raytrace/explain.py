@@ -277,21 +277,22 @@ def ray_tree(
     1 rays traced
     ...
     """
+    from pixelpath._validate import choice, int_in
+    from pixelpath.contract import RenderOptions
     from pixelpath.raytrace import _whitted_kernels as wk
     from pixelpath.raytrace._kernels import slab_nan_allowed
     from pixelpath.raytrace.tracer import pack
-    from pixelpath.renderer import RenderOptions, _choice, _int_in
 
     if not isinstance(scene, Scene):
         raise TypeError(f"scene must be a pixelpath Scene, got {type(scene).__name__}")
     x, y = _pixel(pixel, scene.camera)
-    _choice(shading, "shading", ("flat", "gouraud", "phong"))
+    choice(shading, "shading", ("flat", "gouraud", "phong"))
     options = RenderOptions(
         shading=shading,
         backface_cull=bool(backface_cull),
         blinn=bool(blinn),
-        max_depth=_int_in(max_depth, "max_depth", 0, 64, "reflection/refraction bounces"),
-        samples=_int_in(samples, "samples", 1, 1024, "samples per pixel"),
+        max_depth=int_in(max_depth, "max_depth", 0, 64, "reflection/refraction bounces"),
+        samples=int_in(samples, "samples", 1, 1024, "samples per pixel"),
         fresnel=bool(fresnel),
     )
     world, settings, bvh_depth, _ = pack(scene, scene.camera, options)

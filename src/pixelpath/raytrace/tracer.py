@@ -41,9 +41,9 @@ from typing import Any
 
 import numpy as np
 
+from pixelpath.contract import Frame, RenderOptions, View
 from pixelpath.raster.tessellate import _IdentityCache
 from pixelpath.raytrace.bvh import BVH
-from pixelpath.renderer import Frame, RenderOptions, View
 from pixelpath.scene import Box, Camera, Mesh, Plane, Scene, Sphere
 
 __all__ = ["EPSILON_SCALE", "STEPS", "render_frame"]
@@ -369,7 +369,7 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     Examples
     --------
     >>> from pixelpath.scene import Camera, Plane, PointLight, Scene, Sphere
-    >>> from pixelpath.renderer import RenderOptions, View
+    >>> from pixelpath.contract import RenderOptions, View
     >>> from pixelpath.raytrace.tracer import render_frame
     >>> scene = Scene(Camera(eye=(0, 1, 5), target=(0, 0, 0), width=32, height=24),
     ...               [Sphere((0, 0, 0), 1), Plane((0, -1, 0), (0, 1, 0))],
