@@ -315,7 +315,7 @@ def hsv_to_rgb(
 ) -> NDArray[np.floating]:
     """Convert HSV to RGB with the notes' sector table.
 
-    C = V·S, X = C·(1 − |(H/60) mod 2 − 1|), m = V − C; (R', G', B') from H's 60° sector, then
+    C = V·S, X = C·(1 − ``|(H/60) mod 2 − 1|``), m = V − C; (R', G', B') from H's 60° sector, then
     m is added. H is taken modulo 360, so 360 and negative hues wrap.
 
     Parameters
@@ -349,7 +349,7 @@ def rgb_to_hsl(
 ) -> NDArray[np.floating]:
     """Convert RGB to HSL (the double hexcone).
 
-    L = (Cmax + Cmin)/2, S = Δ/(1 − |2L − 1|) (0 for greys), H as for HSV.
+    L = (Cmax + Cmin)/2, S = Δ/(1 − ``|2L − 1|``) (0 for greys), H as for HSV.
 
     Parameters
     ----------
@@ -380,7 +380,7 @@ def hsl_to_rgb(
 ) -> NDArray[np.floating]:
     """Convert HSL to RGB.
 
-    C = (1 − |2L − 1|)·S, m = L − C/2, then the same sector table as HSV.
+    C = (1 − ``|2L − 1|``)·S, m = L − C/2, then the same sector table as HSV.
 
     Parameters
     ----------

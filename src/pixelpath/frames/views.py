@@ -4,9 +4,9 @@
 each view with the frames machinery (here, or on a Dask cluster whose workers write the files),
 and writes ``transforms.json`` last, in the layout NeRF, nerfstudio and instant-ngp read:
 
-====================  ==========================================================================
-file                  contents
-====================  ==========================================================================
+=========================  =========================================================================
+file                       contents
+=========================  =========================================================================
 ``images/view_0000.png``   the picture: RGB, or RGBA with ``transparent=True`` (NeRF-synthetic's
                            choice: the background is alpha 0), in the scene's encoding (sRGB for
                            model files)
@@ -15,7 +15,7 @@ file                  contents
 ``normals/view_0000.png``  8-bit RGB ``(n + 1) / 2`` of the unit world-space normal; 0 where none
 ``masks/view_0000.png``    8-bit, 255 where a surface was drawn, 0 elsewhere
 ``transforms.json``        intrinsics and one ``transform_matrix`` (camera-to-world) per view
-====================  ==========================================================================
+=========================  =========================================================================
 
 Depth is a float32 ``.npy`` rather than a 16-bit PNG: it keeps the renderer's depth exactly,
 with no scale to choose for the model's size (a millimetre step would flatten a small model,

@@ -7,7 +7,7 @@ The intensity at a surface point P is (notes, "Basic illumination model", sectio
 with N the unit normal at P, L the unit vector from P to the light, V the unit vector from P to
 the viewer, R the mirror direction of L about N, and n the shininess. With several lights the
 diffuse and specular terms are summed over them; with colours every term is evaluated per channel
-(r, g, b). Blinn-Phong replaces R.V by N.H with H = (L + V)/|L + V| (the halfway vector).
+(r, g, b). Blinn-Phong replaces R.V by N.H with H = (L + V)/``|L + V|`` (the halfway vector).
 
 Conventions of this module:
 
@@ -259,7 +259,7 @@ class PhongGeometry:
     r_dot_v : float
         cos(alpha) = R.V.
     halfway : ndarray (3,)
-        H = (L + V)/|L + V| (Blinn-Phong); the zero vector when L = -V.
+        H = (L + V)/``|L + V|`` (Blinn-Phong); the zero vector when L = -V.
     n_dot_h : float
         N.H.
     """

@@ -72,7 +72,7 @@ def ray_sphere(origin: Any, direction: Any, center: Any, radius: Any) -> np.ndar
     Parameters
     ----------
     origin, direction : (..., 3) array_like
-        Ray origins P0 and directions d (any non-zero length; t is in units of |d|).
+        Ray origins P0 and directions d (any non-zero length; t is in units of ``|d|``).
     center : (..., 3) array_like
         Sphere centres C.
     radius : float or (...) array_like
