@@ -178,11 +178,10 @@ def test_polygons_match_from_any_start_either_way_round(points, shift, backwards
     assert not field.matches(field.parse(moved), expected)
 
 
-def test_the_readme_s_practice_example_prints_what_it_shows():
-    readme = (Path(__file__).parents[2] / "README.md").read_text(encoding="utf-8")
-    section = readme.split("## Practice: the notes' exam questions", 1)[1]
-    example = section.split("```python\n", 1)[1].split("```", 1)[0]
-    test = doctest.DocTestParser().get_doctest(example, {}, "README practice", None, 0)
+def test_the_practice_page_s_example_prints_what_it_shows():
+    page = Path(__file__).parents[2] / "docs" / "guide" / "practice.md"
+    example = page.read_text(encoding="utf-8").split("```python\n", 1)[1].split("```", 1)[0]
+    test = doctest.DocTestParser().get_doctest(example, {}, "docs/guide/practice.md", None, 0)
     runner = doctest.DocTestRunner(optionflags=doctest.NORMALIZE_WHITESPACE)
     runner.run(test)
     result = runner.summarize(verbose=False)

@@ -220,14 +220,14 @@ def test_the_command_line_refuses_unknown_aovs(tmp_path, capsys):
     assert exit_.value.code == 2 and "unknown AOV 'id'" in capsys.readouterr().err
 
 
-def test_the_readme_s_loader_example_lands_on_the_surface(tmp_path, monkeypatch):
-    readme = (Path(__file__).parents[2] / "README.md").read_text()
-    after = readme.split("A dataset opens the way nerfstudio reads it", 1)[1]
+def test_the_views_page_s_loader_example_lands_on_the_surface(tmp_path, monkeypatch):
+    page = (Path(__file__).parents[2] / "docs" / "guide" / "views.md").read_text()
+    after = page.split("A dataset opens the way nerfstudio reads it", 1)[1]
     code = after.split("```python\n", 1)[1].split("```", 1)[0]
     monkeypatch.chdir(tmp_path)
     pp.render_views(DUCK, 2, "duck_views", "depth", size=(64, 48))
     names: dict = {}
-    exec(compile(code, "README loader example", "exec"), names)
+    exec(compile(code, "docs/guide/views.md loader example", "exec"), names)
     trimesh = pytest.importorskip("trimesh")
     mesh = trimesh.load(DUCK, force="mesh")
     distance = abs(trimesh.proximity.signed_distance(mesh, [names["point"]])[0])
