@@ -92,3 +92,14 @@ def test_the_pages_show_pictures_that_exist_or_that_an_example_draws():
                 assert match.group(1) in examples, f"{page.name}: {target}"
             else:
                 assert (DOCS / target.lstrip("/")).is_file(), f"{page.name}: {target}"
+
+
+def test_the_development_page_draws_the_layers_the_layer_test_checks():
+    from test_layers import LAYERS
+
+    page = (DOCS / "development.md").read_text(encoding="utf-8")
+    section = page.split("## Layers", 1)[1].split("\n## ", 1)[0]
+    rows = re.findall(r"^\| (\d+) \| (.+) \|$", section, flags=re.MULTILINE)
+    drawn = [tuple(re.findall(r"`([\w.]+)`", modules)) for _, modules in rows]
+    assert [int(number) for number, _ in rows] == list(range(1, len(LAYERS) + 1))
+    assert drawn == list(LAYERS)
