@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import importlib
 import json
 import os
 import subprocess
@@ -28,6 +29,30 @@ def test_a_method_that_needs_a_following_group_needs_its_leader_first():
         for follower, leader in _warm.FOLLOWS.items():
             if follower in groups:
                 assert groups.index(leader) < groups.index(follower)
+
+
+@needs_jit
+def test_every_module_with_compiled_kernels_is_counted_in_the_warmup_report():
+    # A kernel module split by concern keeps its parts on its warm-up module's line; a part
+    # missing from COMPILED_WITH would compile uncounted. Inlined kernels compile no code of
+    # their own (they are typed into their callers).
+    from numba.core.dispatcher import Dispatcher
+
+    from pixelpath._cache import PACKAGE_DIR
+
+    counted = set(_warm.kernel_modules()).union(*_warm.COMPILED_WITH.values())
+    holding = set()
+    for path in PACKAGE_DIR.rglob("*.py"):
+        if "@njit" not in path.read_text():
+            continue
+        name = ".".join(("pixelpath", *path.relative_to(PACKAGE_DIR).with_suffix("").parts))
+        module = importlib.import_module(name)
+        if any(isinstance(value, Dispatcher) and value.py_func.__module__ == name
+               and value.targetoptions.get("inline") != "always"
+               for value in vars(module).values()):
+            holding.add(name)
+    assert "pixelpath.raytrace._hit_kernels" in holding
+    assert holding - counted == set()
 
 
 def test_groups_for_lists_each_group_once_in_table_order():

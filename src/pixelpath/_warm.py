@@ -34,6 +34,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 __all__ = [
+    "COMPILED_WITH",
     "FOLLOWS",
     "GROUPS",
     "METHOD_GROUPS",
@@ -70,7 +71,7 @@ GROUPS: dict[str, tuple[str, float]] = {
     "lighting": ("pixelpath.lighting._kernels:warmup", 1.0),
     "clip": ("pixelpath.clip._kernels:warmup", 35.0),
     "color": ("pixelpath.color._kernels:warmup", 32.0),
-    "raytrace-bvh": ("pixelpath.raytrace._kernels:warmup", 9.0),
+    "raytrace-bvh": ("pixelpath.raytrace._bvh_kernels:warmup", 9.0),
     # The tracer's warm-up packs a one-pixel scene with the renderer's own code (BVH build,
     # back-face test), so it also compiles those kernels if no other process did. Its packet
     # searches (four rays at a time, vectorized) make it the longest group to compile.
@@ -106,13 +107,24 @@ SHADING_GROUPS: dict[str, tuple[str, ...]] = {
 # rows of pixels with the same kernels).
 FOLLOWS: dict[str, str] = {"shade": "back"}
 
+# Kernel modules without a warm-up of their own, after the module whose warm-ups compile their
+# kernels: the report of that module counts theirs too (a file split by concern keeps one
+# warm-up, and one line in ``pixelpath warmup``, for its parts).
+COMPILED_WITH: dict[str, tuple[str, ...]] = {
+    "pixelpath.raytrace._bvh_kernels": (
+        "pixelpath.raytrace._hit_kernels",
+        "pixelpath.raytrace._traversal_kernels",
+    ),
+}
+
 
 @dataclass(frozen=True)
 class WarmupReport:
     """What one kernel module's warm-up did: its module, seconds taken, specializations.
 
     ``compiled`` counts the specializations Numba compiled, ``loaded`` those it loaded from the
-    disk cache (both 0 with ``NUMBA_DISABLE_JIT=1``, where nothing compiles).
+    disk cache (both 0 with ``NUMBA_DISABLE_JIT=1``, where nothing compiles), of the module's
+    kernels and those of the modules :data:`COMPILED_WITH` it.
 
     Examples
     --------
@@ -132,7 +144,9 @@ def _module_of(group: str) -> str:
 
 
 def kernel_modules() -> tuple[str, ...]:
-    """Return every module that holds compiled kernels, each once, in :data:`GROUPS` order.
+    """Return every module with a warm-up, each once, in :data:`GROUPS` order.
+
+    Every other module that holds compiled kernels is :data:`COMPILED_WITH` one of these.
 
     Examples
     --------
@@ -144,14 +158,18 @@ def kernel_modules() -> tuple[str, ...]:
 
 
 def _specializations(module_name: str) -> tuple[int, int]:
-    """Return (compiled, loaded from cache) over the kernels defined in module ``module_name``."""
+    """Return (compiled, loaded from cache) over the kernels defined in module ``module_name``.
+
+    The kernels of the modules :data:`COMPILED_WITH` it count too.
+    """
     from numba.core.dispatcher import Dispatcher
 
     compiled = loaded = 0
-    for value in vars(sys.modules[module_name]).values():
-        if isinstance(value, Dispatcher) and value.py_func.__module__ == module_name:
-            compiled += sum(value.stats.cache_misses.values())
-            loaded += sum(value.stats.cache_hits.values())
+    for name in (module_name, *COMPILED_WITH.get(module_name, ())):
+        for value in vars(importlib.import_module(name)).values():
+            if isinstance(value, Dispatcher) and value.py_func.__module__ == name:
+                compiled += sum(value.stats.cache_misses.values())
+                loaded += sum(value.stats.cache_hits.values())
     return compiled, loaded
 
 

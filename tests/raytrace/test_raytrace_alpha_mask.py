@@ -98,7 +98,7 @@ def test_reflected_rays_pass_through_the_holes():
 def _holed_ring(rng):
     """A torus with random uv and a 4 x 4 "nearest" texture whose alpha cuts about half away."""
     from pixelpath.raytrace import BVH
-    from pixelpath.raytrace import _kernels as kernels
+    from pixelpath.raytrace import _traversal_kernels as kernels
     from pixelpath.scene import torus
     from pixelpath.scene.texture import surface_tables
 
@@ -147,7 +147,8 @@ def _hits_along(ring, uv, alpha, origin, direction):
 
 
 def test_one_ray_searches_with_holes_equal_brute_force():
-    from pixelpath.raytrace import _kernels as kernels
+    from pixelpath.raytrace import _traversal_kernels as kernels
+    from pixelpath.raytrace._hit_kernels import slab_nan_allowed
 
     rng = np.random.default_rng(11)
     ring, uv, alpha, bvh, cutouts = _holed_ring(rng)
@@ -162,7 +163,7 @@ def test_one_ray_searches_with_holes_equal_brute_force():
         if not all(clear for *_, clear in hits):
             continue
         checked += 1
-        with kernels.slab_nan_allowed():
+        with slab_nan_allowed():
             t, leaf, _, _, _, _ = kernels.closest_triangle(
                 bvh.bounds, bvh.links, bvh.corners, bvh.order, np.zeros(0, np.bool_), False,
                 *origin, *direction, 0.0, math.inf, stack, np.empty(bvh.depth + 1), cutouts,

@@ -10,7 +10,8 @@ import pytest
 
 import pixelpath as pp
 from pixelpath.raytrace import BVH
-from pixelpath.raytrace import _kernels as kernels
+from pixelpath.raytrace import _traversal_kernels as kernels
+from pixelpath.raytrace._hit_kernels import slab_nan_allowed
 from pixelpath.scene import icosphere, torus
 
 
@@ -21,7 +22,7 @@ def _packet_hits(bvh, rays, t_min=0.0, cull=False, skip=None):
     packet[:, :7] = rays
     hit = np.empty(kernels.LANES, dtype=np.intp)
     stack = np.empty(bvh.depth + 1, dtype=np.intp)
-    with kernels.slab_nan_allowed():
+    with slab_nan_allowed():
         nodes, tests = kernels.closest_triangles4(
             bvh.bounds, bvh.links, bvh.corners, bvh.order, skip, cull, packet, kernels.LANES, t_min,
             hit, stack,
@@ -34,7 +35,7 @@ def _single_hits(bvh, rays, t_min=0.0, cull=False, skip=None):
     skip = np.zeros(len(bvh.corners), dtype=np.bool_) if skip is None else skip
     stack = np.empty(bvh.depth + 1, dtype=np.intp)
     found, nodes, tests = [], 0, 0
-    with kernels.slab_nan_allowed():
+    with slab_nan_allowed():
         for ray in rays:
             t, i, w1, w2, n, m = kernels.closest_triangle(
                 bvh.bounds, bvh.links, bvh.corners, bvh.order, skip, cull, *ray[:6], t_min,
@@ -129,7 +130,7 @@ def test_rays_whose_directions_differ_in_sign_are_traced_one_by_one():
 def _any_hits(bvh, segments, pass_through, packet):
     """any_triangles4 (packet) or any_triangle per segment: [(light, blocker)], nodes, tests."""
     stack = np.empty(bvh.depth + 2, dtype=np.intp)
-    with kernels.slab_nan_allowed():
+    with slab_nan_allowed():
         if packet:
             rays = np.zeros((kernels.LANES, 8))
             rays[:, :7] = segments

@@ -47,16 +47,8 @@ import numpy as np
 
 from pixelpath._jit import njit
 from pixelpath.lighting._kernels import light_direction, shade_point
-from pixelpath.raytrace._kernels import (
-    LANES,
-    MISS,
-    Cutouts,
-    any_triangle,
-    any_triangles4,
+from pixelpath.raytrace._hit_kernels import (
     box_limit,
-    closest_triangle,
-    closest_triangles4,
-    cut_away_hit,
     enters_box,
     plane_t,
     reflect_direction,
@@ -64,6 +56,16 @@ from pixelpath.raytrace._kernels import (
     slab_nan_allowed,
     sphere_roots,
     sphere_t,
+)
+from pixelpath.raytrace._traversal_kernels import (
+    LANES,
+    MISS,
+    Cutouts,
+    any_triangle,
+    any_triangles4,
+    closest_triangle,
+    closest_triangles4,
+    cut_away_hit,
 )
 from pixelpath.scene._texture_kernels import SurfaceTables, colored, surface_color
 

@@ -1,8 +1,9 @@
 """A bounding-volume hierarchy over triangles, and the nearest hits of many rays on a mesh.
 
 The tree is built in compiled code with the binned surface-area heuristic and stored in flat
-arrays (see :mod:`pixelpath.raytrace._kernels` for the layout and the traversals). The
-triangles are stored in leaf order, so the ones a leaf holds are next to each other in memory.
+arrays (see :mod:`pixelpath.raytrace._bvh_kernels` for the layout and
+:mod:`pixelpath.raytrace._traversal_kernels` for the traversals). The triangles are stored in
+leaf order, so the ones a leaf holds are next to each other in memory.
 :func:`intersect` is a headless replacement for trimesh's ray module: the nearest triangle of a
 million rays in one call, traced on several threads, with the ray tracer's watertight test.
 
@@ -111,17 +112,17 @@ class BVH:
     @classmethod
     def _from_corners(cls, corners: np.ndarray) -> BVH:
         """Build from checked (T, 9) float64 triangle corners."""
-        from pixelpath.raytrace import _kernels
+        from pixelpath.raytrace import _bvh_kernels
 
         start = time.perf_counter()
         count = len(corners)
         boxes = np.empty((count, 6))
         centroids = np.empty((count, 3))
-        _kernels.triangle_boxes(corners, boxes, centroids)
+        _bvh_kernels.triangle_boxes(corners, boxes, centroids)
         order = np.empty(count, dtype=np.intp)
         bounds = np.empty((max(2 * count, 1), 6))
         links = np.empty((max(2 * count, 1), 2), dtype=np.intp)
-        used, depth = (0, 0) if count == 0 else _kernels.build_bvh(
+        used, depth = (0, 0) if count == 0 else _bvh_kernels.build_bvh(
             boxes, centroids, order, bounds, links
         )
         return cls(
@@ -151,7 +152,7 @@ class BVH:
         >>> stats["nodes"], stats["leaves"], stats["depth"], stats["SAH cost"]
         (1, 1, 1, 1.0)
         """
-        from pixelpath.raytrace._kernels import NODE_COST
+        from pixelpath.raytrace._bvh_kernels import NODE_COST
 
         counts = self.links[:, 1]
         leaves = counts > 0
@@ -193,7 +194,8 @@ class BVH:
         >>> bvh.intersect([0.25, 0.25, 2.0], [0, 0, -1])
         (array(2.), array(0))
         """
-        from pixelpath.raytrace import _kernels
+        from pixelpath.raytrace._hit_kernels import slab_nan_allowed
+        from pixelpath.raytrace._traversal_kernels import intersect_many
 
         o = v.finite_array(origins, "origins", 3)
         d = _nonzero(v.finite_array(directions, "directions", 3), "directions")
@@ -207,8 +209,8 @@ class BVH:
             no_skip = np.zeros(0, dtype=np.bool_)
 
             def trace(start: int, stop: int) -> None:
-                with _kernels.slab_nan_allowed():
-                    _kernels.intersect_many(
+                with slab_nan_allowed():
+                    intersect_many(
                         self.bounds, self.links, self.corners, self.order, no_skip, False, o, d,
                         self.depth, start, stop, t, leaf,
                     )

@@ -280,7 +280,7 @@ def ray_tree(
     from pixelpath._validate import choice, int_in
     from pixelpath.contract import RenderOptions
     from pixelpath.raytrace import _whitted_kernels as wk
-    from pixelpath.raytrace._kernels import slab_nan_allowed
+    from pixelpath.raytrace._hit_kernels import slab_nan_allowed
     from pixelpath.raytrace.tracer import pack
 
     if not isinstance(scene, Scene):

@@ -3,7 +3,8 @@
 A ray is ``R(t) = P0 + t·d``; ``d`` may have any non-zero length and t is measured in units of
 ``|d|``. Every function broadcasts over leading axes like a NumPy ufunc (one ray against many
 spheres, many rays against one plane, ...) and returns a float (or None) when given single
-values. The hit tests are the very kernels the ray tracer runs (:mod:`pixelpath.raytrace._kernels`).
+values. The hit tests are the very kernels the ray tracer runs
+(:mod:`pixelpath.raytrace._hit_kernels`).
 
 * Sphere: solve ``|P0 + t d − C|² = r²``, the quadratic ``a t² + b t + c = 0`` with
   ``a = d·d``, ``b = 2 d·(P0 − C)``, ``c = |P0 − C|² − r²``; the nearest root with t > 0 is the
@@ -102,7 +103,7 @@ def ray_sphere(origin: Any, direction: Any, center: Any, radius: Any) -> np.ndar
     >>> ray_sphere((0, 0, 5), (0, 0, 1), (0, 0, 0), 1.0)    # behind the origin
     inf
     """
-    from pixelpath.raytrace import _kernels
+    from pixelpath.raytrace import _hit_kernels
 
     o = v.finite_array(origin, "origin", 3)
     d = _nonzero(v.finite_array(direction, "direction", 3), "direction")
@@ -113,7 +114,7 @@ def ray_sphere(origin: Any, direction: Any, center: Any, radius: Any) -> np.ndar
     arrays = {"origin": o, "direction": d, "center": c, "radius": r}
     shape, o, d, c, r = _broadcast(arrays, {"origin", "direction", "center"})
     out = np.empty(len(o))
-    _kernels.ray_sphere_many(o, d, c, r, out)
+    _hit_kernels.ray_sphere_many(o, d, c, r, out)
     return _result(out, shape)
 
 
@@ -148,7 +149,7 @@ def ray_plane(origin: Any, direction: Any, point: Any, normal: Any) -> np.ndarra
     >>> ray_plane([[0, 5, 0], [0, -5, 0]], (0, -1, 0), (0, 0, 0), (0, 1, 0)).tolist()
     [5.0, inf]
     """
-    from pixelpath.raytrace import _kernels
+    from pixelpath.raytrace import _hit_kernels
 
     o = v.finite_array(origin, "origin", 3)
     d = _nonzero(v.finite_array(direction, "direction", 3), "direction")
@@ -157,7 +158,7 @@ def ray_plane(origin: Any, direction: Any, point: Any, normal: Any) -> np.ndarra
     arrays = {"origin": o, "direction": d, "point": q, "normal": n}
     shape, o, d, q, n = _broadcast(arrays, set(arrays))
     out = np.empty(len(o))
-    _kernels.ray_plane_many(o, d, q, n, out)
+    _hit_kernels.ray_plane_many(o, d, q, n, out)
     return _result(out, shape)
 
 
@@ -185,13 +186,13 @@ def reflect(d: Any, n: Any) -> np.ndarray:
     >>> reflect((1, -1, 0), (0, 2, 0)).tolist()
     [1.0, 1.0, 0.0]
     """
-    from pixelpath.raytrace import _kernels
+    from pixelpath.raytrace import _hit_kernels
 
     d = v.finite_array(d, "d", 3)
     n = _unit(_nonzero(v.finite_array(n, "n", 3), "n"))
     shape, d, n = _broadcast({"d": d, "n": n}, {"d", "n"})
     out = np.empty((len(d), 3))
-    _kernels.reflect_many(d, n, out)
+    _hit_kernels.reflect_many(d, n, out)
     return out.reshape((*shape, 3))
 
 
@@ -229,7 +230,7 @@ def refract(d: Any, n: Any, eta: Any) -> np.ndarray | None:
     >>> refract((0.8, -0.6, 0.0), (0, 1, 0), 1.5) is None  # glass to air beyond 41.8°
     True
     """
-    from pixelpath.raytrace import _kernels
+    from pixelpath.raytrace import _hit_kernels
 
     d = _unit(_nonzero(v.finite_array(d, "d", 3), "d"))
     n = _unit(_nonzero(v.finite_array(n, "n", 3), "n"))
@@ -244,7 +245,7 @@ def refract(d: Any, n: Any, eta: Any) -> np.ndarray | None:
             f"the surface, got d·n = {facing[np.argmax(facing > 0.0)]:.6g}"
         )
     out = np.empty((len(d), 3))
-    _kernels.refract_many(d, n, eta_flat, out)
+    _hit_kernels.refract_many(d, n, eta_flat, out)
     if not shape:
         return None if np.isnan(out[0, 0]) else out[0]
     return out.reshape((*shape, 3))

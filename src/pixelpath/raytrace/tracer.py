@@ -381,7 +381,7 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     from pixelpath._threads import in_runs
     from pixelpath.raster import _pool
     from pixelpath.raytrace import _whitted_kernels as wk
-    from pixelpath.raytrace._kernels import slab_nan_allowed
+    from pixelpath.raytrace._hit_kernels import slab_nan_allowed
 
     world, settings, bvh_depth, triangles = pack(scene, view.camera, options)
     options.progress(1)
