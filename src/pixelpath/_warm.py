@@ -115,6 +115,11 @@ COMPILED_WITH: dict[str, tuple[str, ...]] = {
         "pixelpath.raytrace._hit_kernels",
         "pixelpath.raytrace._traversal_kernels",
     ),
+    "pixelpath.raytrace._whitted_kernels": (
+        "pixelpath.raytrace._records",
+        "pixelpath.raytrace._primary_kernels",
+        "pixelpath.raytrace._surface_kernels",
+    ),
 }
 
 

@@ -281,6 +281,7 @@ def ray_tree(
     from pixelpath.contract import RenderOptions
     from pixelpath.raytrace import _whitted_kernels as wk
     from pixelpath.raytrace._hit_kernels import slab_nan_allowed
+    from pixelpath.raytrace._records import new_work
     from pixelpath.raytrace.tracer import pack
 
     if not isinstance(scene, Scene):
@@ -297,7 +298,7 @@ def ray_tree(
     )
     world, settings, bvh_depth, _ = pack(scene, scene.camera, options)
     bound = options.samples * (2 ** min(options.max_depth + 1, 20) - 1)
-    work = wk.new_work(world, settings, bvh_depth, min(bound, LOG_LIMIT), 1)
+    work = new_work(world, settings, bvh_depth, min(bound, LOG_LIMIT), 1)
     with slab_nan_allowed():
         out = np.empty((1, wk.PIXEL_FIELDS))
         wk.trace_row(y, x, 1, world, settings, work, out)
@@ -336,7 +337,7 @@ def _pixel(pixel: Any, camera: Any) -> tuple[int, int]:
 
 def _nodes(scene, world, settings, log, log_lights) -> tuple[RayNode, ...]:
     """Rebuild the trees from the log (rows in the order traced, each naming its parent)."""
-    from pixelpath.raytrace import _whitted_kernels as wk
+    from pixelpath.raytrace import _records as rec
 
     children: dict[int, dict[str, RayNode]] = {}
     nodes: dict[int, RayNode] = {}
@@ -344,22 +345,22 @@ def _nodes(scene, world, settings, log, log_lights) -> tuple[RayNode, ...]:
         record = log[row]
         node = _node(scene, world, settings, record, log_lights[row], children.get(row, {}))
         nodes[row] = node
-        parent = int(record[wk.PARENT])
+        parent = int(record[rec.PARENT])
         if parent >= 0:
             children.setdefault(parent, {})[node.kind] = node
-    return tuple(nodes[row] for row in range(len(log)) if log[row, wk.PARENT] < 0)
+    return tuple(nodes[row] for row in range(len(log)) if log[row, rec.PARENT] < 0)
 
 
 def _node(scene, world, settings, record, light_records, children) -> RayNode:
-    from pixelpath.raytrace import _whitted_kernels as wk
+    from pixelpath.raytrace import _records as rec
 
-    origin = record[wk.ORIGIN : wk.ORIGIN + 3].copy()
-    direction = record[wk.DIRECTION : wk.DIRECTION + 3].copy()
-    obj = int(record[wk.OBJECT])
+    origin = record[rec.ORIGIN : rec.ORIGIN + 3].copy()
+    direction = record[rec.DIRECTION : rec.DIRECTION + 3].copy()
+    obj = int(record[rec.OBJECT])
     hit = obj >= 0
-    point = record[wk.POINT : wk.POINT + 3].copy() if hit else None
-    normal = record[wk.NORMAL : wk.NORMAL + 3].copy() if hit else None
-    local = record[wk.LOCAL : wk.LOCAL + 3].copy()
+    point = record[rec.POINT : rec.POINT + 3].copy() if hit else None
+    normal = record[rec.NORMAL : rec.NORMAL + 3].copy() if hit else None
+    local = record[rec.LOCAL : rec.LOCAL + 3].copy()
     ambient = np.zeros(3)
     lights: tuple[LightTest, ...] = ()
     quadratic = None
@@ -374,28 +375,28 @@ def _node(scene, world, settings, record, light_records, children) -> RayNode:
             sphere = scene.objects[obj]
             quadratic = sphere_quadratic(origin, direction, sphere.center, sphere.radius)
     return RayNode(
-        kind=_KINDS[int(record[wk.KIND])],
-        depth=int(record[wk.DEPTH]),
-        weight=float(record[wk.WEIGHT]),
+        kind=_KINDS[int(record[rec.KIND])],
+        depth=int(record[rec.DEPTH]),
+        weight=float(record[rec.WEIGHT]),
         origin=origin,
         direction=direction,
-        t=float(record[wk.T]),
+        t=float(record[rec.T]),
         object=obj,
         point=point,
         normal=normal,
-        entering=hit and bool(record[wk.ENTERING]),
+        entering=hit and bool(record[rec.ENTERING]),
         local=local,
         ambient=ambient,
         lights=lights,
         quadratic=quadratic,
-        kr=float(record[wk.KR]) if hit else 0.0,
-        kt=float(record[wk.KT]) if hit else 0.0,
-        total_internal_reflection=hit and bool(record[wk.TOTAL_REFLECTION]),
-        fresnel=float(record[wk.FRESNEL]) if hit else 0.0,
-        eta=float(record[wk.ETA]) if hit else 1.0,
+        kr=float(record[rec.KR]) if hit else 0.0,
+        kt=float(record[rec.KT]) if hit else 0.0,
+        total_internal_reflection=hit and bool(record[rec.TOTAL_REFLECTION]),
+        fresnel=float(record[rec.FRESNEL]) if hit else 0.0,
+        eta=float(record[rec.ETA]) if hit else 1.0,
         reflected=children.get("reflected"),
         refracted=children.get("refracted"),
-        sample=int(record[wk.SAMPLE]),
+        sample=int(record[rec.SAMPLE]),
     )
 
 

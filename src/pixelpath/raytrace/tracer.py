@@ -212,7 +212,8 @@ def pack(scene: Scene, camera: Camera, options: RenderOptions):
     from pixelpath.hsr.backface import front_facing
     from pixelpath.lighting import pack_lights
     from pixelpath.raster._arrays import kernel_array
-    from pixelpath.raytrace import _whitted_kernels as wk
+    from pixelpath.raytrace import _records as rec
+    from pixelpath.raytrace._traversal_kernels import Cutouts
 
     if options.shading not in ("phong", "flat"):
         raise ValueError(
@@ -235,7 +236,7 @@ def pack(scene: Scene, camera: Camera, options: RenderOptions):
     plane_back = ~front_facing(plane_normals, plane_points, viewpoint)
     plane_back &= ~double_sided[np.array([k for k, _ in planes], dtype=np.intp)]
     materials = scene_materials(scene)
-    world = wk.TraceScene(
+    world = rec.TraceScene(
         spheres=np.array([[*s.center, s.radius] for _, s in spheres]).reshape(-1, 4),
         sphere_object=np.array([k for k, _ in spheres], dtype=np.intp),
         planes=np.ascontiguousarray(np.hstack([plane_points, plane_normals])),
@@ -249,7 +250,7 @@ def pack(scene: Scene, camera: Camera, options: RenderOptions):
         tri_object=triangles.objects,
         tri_source=triangles.bvh.order,
         tri_back=np.ascontiguousarray(tri_back),
-        tri_pass=np.ascontiguousarray(materials[triangles.objects, wk.TRANSPARENCY]),
+        tri_pass=np.ascontiguousarray(materials[triangles.objects, rec.TRANSPARENCY]),
         materials=materials,
         lights=pack_lights(scene.lights),
         ambient=kernel_array(scene.ambient),
@@ -260,10 +261,10 @@ def pack(scene: Scene, camera: Camera, options: RenderOptions):
         tri_colors=triangles.colors,
         tri_texel_scale=triangles.texel_scale,
         pixel_cone=_pixel_cone(camera),
-        cutouts=wk.Cutouts(_masked(cut, triangles.objects), triangles.objects, triangles.uv,
-                           triangles.colors, triangles.tables),
+        cutouts=Cutouts(_masked(cut, triangles.objects), triangles.objects, triangles.uv,
+                        triangles.colors, triangles.tables),
     )
-    settings = wk.Settings(
+    settings = rec.Settings(
         max_depth=options.max_depth,
         samples=options.samples,
         blinn=bool(options.blinn),
@@ -382,6 +383,7 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     from pixelpath.raster import _pool
     from pixelpath.raytrace import _whitted_kernels as wk
     from pixelpath.raytrace._hit_kernels import slab_nan_allowed
+    from pixelpath.raytrace._records import COUNTS
 
     world, settings, bvh_depth, triangles = pack(scene, view.camera, options)
     options.progress(1)
@@ -390,7 +392,7 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     depth = _pool.empty(shape, np.float32)
     object_id = _pool.empty(shape, np.int32)
     normal = _pool.empty((*shape, 3), np.float32)
-    counts = np.zeros((view.height, wk.COUNTS), dtype=np.int64)
+    counts = np.zeros((view.height, COUNTS), dtype=np.int64)
     # Blocks of neighbouring rows go to the threads as they free up: the next row's rays meet
     # the boxes and triangles this row's brought into the cache (rows taken from all over the
     # image one by one took 15-20 % longer on the bunny). The blocks themselves are taken from
@@ -423,21 +425,21 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
 
 
 def _stats(world, totals: np.ndarray) -> dict[str, int]:
-    from pixelpath.raytrace import _whitted_kernels as wk
+    from pixelpath.raytrace import _records as rec
 
     return {
         "spheres": len(world.spheres),
         "planes": len(world.planes),
         "triangles": len(world.tris),
         "BVH nodes": len(world.links),
-        "primary rays": int(totals[wk.COUNT_PRIMARY]),
-        "shadow rays": int(totals[wk.COUNT_SHADOW]),
-        "reflected rays": int(totals[wk.COUNT_REFLECTED]),
-        "refracted rays": int(totals[wk.COUNT_REFRACTED]),
-        "rays that hit nothing": int(totals[wk.COUNT_MISSED]),
-        "total internal reflections": int(totals[wk.COUNT_TOTAL_REFLECTION]),
-        "BVH nodes visited": int(totals[wk.COUNT_NODES]),
-        "triangle tests": int(totals[wk.COUNT_TESTS]),
+        "primary rays": int(totals[rec.COUNT_PRIMARY]),
+        "shadow rays": int(totals[rec.COUNT_SHADOW]),
+        "reflected rays": int(totals[rec.COUNT_REFLECTED]),
+        "refracted rays": int(totals[rec.COUNT_REFRACTED]),
+        "rays that hit nothing": int(totals[rec.COUNT_MISSED]),
+        "total internal reflections": int(totals[rec.COUNT_TOTAL_REFLECTION]),
+        "BVH nodes visited": int(totals[rec.COUNT_NODES]),
+        "triangle tests": int(totals[rec.COUNT_TESTS]),
     }
 
 
