@@ -39,3 +39,25 @@ def test_a_kernel_that_inlines_another_files_kernels_is_stamped_with_it():
     colour = PACKAGE_DIR / "color" / "_kernels.py"
     assert lighting not in _imported_files(colour)
     assert source_stamp(raster) != source_stamp(colour)
+
+
+class Vanished:
+    """A record type pickled into an index, then renamed (moved) before the index is read."""
+
+
+def test_an_index_naming_a_type_no_longer_there_is_stale_not_an_error(tmp_path):
+    import pickle
+
+    from pixelpath._cache import _KernelIndexFile
+
+    cache = _KernelIndexFile(str(tmp_path), "_kernels.kernel-1.py311", "now")
+    cache.save((Vanished(), "int64"), "old code")
+    index = tmp_path / "_kernels.kernel-1.py311.nbi"
+    index.write_bytes(index.read_bytes().replace(b"Vanished", b"Vanishes"))
+    with pytest.raises(AttributeError):
+        with index.open("rb") as f:
+            pickle.load(f)
+            pickle.loads(f.read())
+    assert cache.load(("anything", "int64")) is None
+    cache.save(("anything", "int64"), "new code")  # replaces the index
+    assert cache.load(("anything", "int64")) == "new code"

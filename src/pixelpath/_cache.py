@@ -28,6 +28,7 @@ import getpass
 import hashlib
 import inspect
 import os
+import pickle
 import re
 import stat
 import tempfile
@@ -36,7 +37,12 @@ from collections.abc import Mapping
 from pathlib import Path
 
 import platformdirs
-from numba.core.caching import CompileResultCacheImpl, FunctionCache, _CacheLocator
+from numba.core.caching import (
+    CompileResultCacheImpl,
+    FunctionCache,
+    IndexDataCacheFile,
+    _CacheLocator,
+)
 
 PACKAGE_DIR = Path(__file__).resolve().parent
 
@@ -270,10 +276,32 @@ class _KernelCacheImpl(CompileResultCacheImpl):
     _locator_classes = [KernelCacheLocator]  # noqa: RUF012 (Numba's own name and type)
 
 
+class _KernelIndexFile(IndexDataCacheFile):
+    """Numba's index and data files, where an index that cannot be unpickled is only stale.
+
+    An index's keys are signatures that name pixelpath's record types (``Cutouts``,
+    ``TraceScene``, ...) by module. One written before such a type moved to another module
+    names a class that is no longer there, and Numba unpickles the index before it compares
+    the source stamp: the kernel would fail instead of compiling again and replacing it.
+    """
+
+    def _load_index(self) -> dict:
+        try:
+            return super()._load_index()
+        except (AttributeError, ImportError, EOFError, pickle.UnpicklingError):
+            return {}
+
+
 class KernelCache(FunctionCache):
     """Numba's function cache, located by :class:`KernelCacheLocator` alone."""
 
     _impl_class = _KernelCacheImpl
+
+    def __init__(self, py_func) -> None:
+        super().__init__(py_func)
+        self._cache_file = _KernelIndexFile(
+            self._cache_path, self._impl.filename_base, self._impl.locator.get_source_stamp()
+        )
 
 
 def enable_cache(dispatcher) -> None:

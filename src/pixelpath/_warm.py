@@ -111,6 +111,10 @@ FOLLOWS: dict[str, str] = {"shade": "back"}
 # kernels: the report of that module counts theirs too (a file split by concern keeps one
 # warm-up, and one line in ``pixelpath warmup``, for its parts).
 COMPILED_WITH: dict[str, tuple[str, ...]] = {
+    "pixelpath.raster._kernels": (
+        "pixelpath.raster._setup_kernels",
+        "pixelpath.raster._scan_kernels",
+    ),
     "pixelpath.raytrace._bvh_kernels": (
         "pixelpath.raytrace._hit_kernels",
         "pixelpath.raytrace._traversal_kernels",

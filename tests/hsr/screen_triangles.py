@@ -12,7 +12,7 @@ import types
 import numpy as np
 
 from pixelpath.hsr import pipeline
-from pixelpath.raster import _kernels
+from pixelpath.raster import _scan_kernels, _setup_kernels
 from pixelpath.renderer import View
 from pixelpath.scene import Camera, Sphere
 from pixelpath.scene.texture import surface_tables
@@ -36,9 +36,10 @@ def set_up(triangles, view: View):
     """
     screen = np.asarray(triangles, dtype=np.float64).reshape(-1, 3)
     indices = np.arange(len(screen), dtype=np.intp).reshape(-1, 3)
-    setup = np.zeros((len(indices), _kernels.SETUP_FIELDS))
+    setup = np.zeros((len(indices), _setup_kernels.SETUP_FIELDS))
     rows = np.zeros((len(indices), 2), dtype=np.intp)
-    _kernels.setup_triangles(screen, indices, False, view.y0, view.y0 + view.height, setup, rows)
+    _setup_kernels.setup_triangles(screen, indices, False, view.y0, view.y0 + view.height, setup,
+                                   rows)
     return types.SimpleNamespace(
         setup=setup, rows=rows, triangles=indices, info=np.zeros((len(indices), 2), np.intp),
         uv=np.empty((0, 2)), vertex_colors=np.empty((0, 4)),
@@ -51,7 +52,7 @@ def zbuffer(prepared, view: View) -> pipeline.Visibility:
     offsets, items = pipeline.binned(prepared, view)
     inv_depth = np.empty((view.height, view.width))
     triangle_id = np.empty((view.height, view.width), dtype=np.int32)
-    _kernels.rasterize_bands(np.arange(len(offsets) - 1), prepared.setup, prepared.rows, offsets,
-                             items, _kernels.BAND_ROWS, view.x0, view.y0, inv_depth, triangle_id,
-                             pipeline.cutouts(prepared))
+    _scan_kernels.rasterize_bands(np.arange(len(offsets) - 1), prepared.setup, prepared.rows,
+                                  offsets, items, _scan_kernels.BAND_ROWS, view.x0, view.y0,
+                                  inv_depth, triangle_id, pipeline.cutouts(prepared))
     return pipeline.Visibility(inv_depth, triangle_id)

@@ -117,7 +117,7 @@ def test_bad_input():
 
 
 def test_growing_a_buffer_keeps_its_rows():
-    from pixelpath.raster._kernels import _grown, _grown_rows
+    from pixelpath.raster._setup_kernels import _grown, _grown_rows
 
     rows = np.arange(6.0).reshape(3, 2)
     bigger = _grown_rows(rows, 5)

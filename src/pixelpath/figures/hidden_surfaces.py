@@ -149,7 +149,7 @@ def zbuffer_frames(image: Any, report: Any) -> list[Image.Image]:
     >>> len(zbuffer_frames(*pp.render(scene, explain=True)))  # bands of 32 rows
     2
     """
-    from pixelpath.raster._kernels import BAND_ROWS
+    from pixelpath.raster._scan_kernels import BAND_ROWS
 
     rgb = _checked(image, report, ["depth tests"])
     tests = np.asarray(report.arrays["depth tests"])

@@ -198,7 +198,7 @@ def _unit(vector: np.ndarray) -> np.ndarray:
 
 def _project(camera: Camera, a: np.ndarray, b: np.ndarray):
     """Return a segment's ends in pixels, cut where it passes behind the near plane."""
-    from pixelpath.raster import _kernels
+    from pixelpath.raster import _setup_kernels
     from pixelpath.raster.transform import world_to_clip
 
     clip = world_to_clip(np.array([a, b], dtype=np.float64), camera)
@@ -211,8 +211,8 @@ def _project(camera: Camera, a: np.ndarray, b: np.ndarray):
         cut = clip[0] + t * (clip[1] - clip[0])
         clip[0 if wa < near else 1] = cut
     screen = np.empty((2, 3))
-    _kernels.clip_to_screen(np.ascontiguousarray(clip), camera.width, camera.height,
-                            camera.orthographic, screen)
+    _setup_kernels.clip_to_screen(np.ascontiguousarray(clip), camera.width, camera.height,
+                                  camera.orthographic, screen)
     return screen[:, :2]
 
 

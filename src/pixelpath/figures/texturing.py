@@ -95,7 +95,7 @@ def affine_rgb(scene) -> np.ndarray:
     """
     from pixelpath.contract import RenderOptions, View
     from pixelpath.hsr import pipeline
-    from pixelpath.raster import _kernels
+    from pixelpath.raster import _setup_kernels
 
     view = View.whole(scene.camera)
     prepared = pipeline.prepare(scene, view, RenderOptions())
@@ -106,10 +106,10 @@ def affine_rgb(scene) -> np.ndarray:
     triangles = ids[rows, cols]
     setup = prepared.setup[triangles]
     x, y = cols + 0.5, rows + 0.5
-    s1 = setup[:, _kernels.S1_PLANE] * x + setup[:, _kernels.S1_PLANE + 1] * y
-    s1 += setup[:, _kernels.S1_PLANE + 2]
-    s2 = setup[:, _kernels.S2_PLANE] * x + setup[:, _kernels.S2_PLANE + 1] * y
-    s2 += setup[:, _kernels.S2_PLANE + 2]
+    s1 = setup[:, _setup_kernels.S1_PLANE] * x + setup[:, _setup_kernels.S1_PLANE + 1] * y
+    s1 += setup[:, _setup_kernels.S1_PLANE + 2]
+    s2 = setup[:, _setup_kernels.S2_PLANE] * x + setup[:, _setup_kernels.S2_PLANE + 1] * y
+    s2 += setup[:, _setup_kernels.S2_PLANE + 2]
     weights = np.stack([1.0 - s1 - s2, s1, s2], axis=1)
     uv = np.einsum("nk,nkc->nc", weights, prepared.uv[prepared.triangles[triangles]])
     objects = prepared.info[triangles, 0]

@@ -76,8 +76,8 @@ def front_facing(normals: np.ndarray, points: np.ndarray, eye: Any) -> np.ndarra
         eye = np.append(eye, 1.0)
     if eye.shape != (4,):
         raise ValueError(f"eye must have shape (3,) or (4,), got {eye.shape}")
-    from pixelpath.raster import _kernels
+    from pixelpath.raster import _setup_kernels
 
     out = np.empty(len(normals), dtype=np.bool_)
-    _kernels.front_facing_many(normals, points, eye, out)
+    _setup_kernels.front_facing_many(normals, points, eye, out)
     return out

@@ -211,17 +211,17 @@ def _vertex_rows(prepared: pipeline.Prepared, sorted_count: int) -> tuple[np.nda
 
 def _with_pieces(prepared, view, attrs, screen, pieces, origin) -> pipeline.Prepared:
     """Return the prepared frame with the split vertices and the pieces (set up) appended."""
-    from pixelpath.raster import _kernels
+    from pixelpath.raster import _setup_kernels
 
     if len(pieces) == 0:
         return prepared
     old = len(prepared.clip)
     new = attrs[old:]
     triangles = np.concatenate([prepared.triangles, pieces])
-    setup = np.empty((len(pieces), _kernels.SETUP_FIELDS))
+    setup = np.empty((len(pieces), _setup_kernels.SETUP_FIELDS))
     rows = np.empty((len(pieces), 2), dtype=np.intp)
-    _kernels.setup_triangles(screen, np.ascontiguousarray(pieces), view.camera.orthographic,
-                             view.y0, view.y0 + view.height, setup, rows)
+    _setup_kernels.setup_triangles(screen, np.ascontiguousarray(pieces), view.camera.orthographic,
+                                   view.y0, view.y0 + view.height, setup, rows)
     extended = {}
     start = 0
     for name in _cut_arrays(prepared):
@@ -274,7 +274,7 @@ def compare(p, q, camera: Camera) -> Comparison:
     Comparison(test=0, outcome='Q first')
     """
     from pixelpath.hsr._kernels import painter as kernels
-    from pixelpath.raster import _kernels
+    from pixelpath.raster import _setup_kernels
     from pixelpath.raster._arrays import kernel_array
     from pixelpath.raster.transform import world_to_clip
 
@@ -285,8 +285,8 @@ def compare(p, q, camera: Camera) -> Comparison:
     if not np.all(clip[:, 3] > 0):
         raise ValueError("p and q must lie in front of the eye (positive view depth)")
     screen = np.empty((6, 3))
-    _kernels.clip_to_screen(kernel_array(clip), camera.width, camera.height,
-                            camera.orthographic, screen)
+    _setup_kernels.clip_to_screen(kernel_array(clip), camera.width, camera.height,
+                                  camera.orthographic, screen)
     attrs = np.hstack([clip, points])
     corners = np.array([[0, 1, 2], [3, 4, 5]], dtype=np.intp)
     records = np.empty((2, kernels.RECORD))

@@ -121,7 +121,7 @@ class Prepared:
     face_normals : (T, 3) float64
         Unit normal of each triangle's polygon, turned towards the viewer.
     setup : (T, SETUP_FIELDS) float64
-        Scan-conversion records (:mod:`pixelpath.raster._kernels`).
+        Scan-conversion records (:mod:`pixelpath.raster._setup_kernels`).
     rows : (T, 2) intp
         Image rows [first, stop) each triangle covers inside the region.
     lighting : Lighting
@@ -266,17 +266,17 @@ def _clip_to_view(geometry, camera, keep, front, mode, lighting, blends) -> dict
 
 def _set_up(clipped: dict, view: View) -> Prepared:
     """Divide, map to the viewport and set the triangles up for the region's rows."""
-    from pixelpath.raster import _kernels
+    from pixelpath.raster import _setup_kernels
 
     camera = view.camera
     screen = np.empty((len(clipped["clip"]), 3))
-    _kernels.clip_to_screen(clipped["clip"], camera.width, camera.height, camera.orthographic,
-                            screen)
+    _setup_kernels.clip_to_screen(clipped["clip"], camera.width, camera.height, camera.orthographic,
+                                  screen)
     triangles = clipped["triangles"]
-    setup = np.empty((len(triangles), _kernels.SETUP_FIELDS))
+    setup = np.empty((len(triangles), _setup_kernels.SETUP_FIELDS))
     rows = np.empty((len(triangles), 2), dtype=np.intp)
-    _kernels.setup_triangles(screen, triangles, camera.orthographic, view.y0,
-                             view.y0 + view.height, setup, rows)
+    _setup_kernels.setup_triangles(screen, triangles, camera.orthographic, view.y0,
+                                   view.y0 + view.height, setup, rows)
     return Prepared(screen=screen, setup=setup, rows=rows, **clipped)
 
 
@@ -286,19 +286,19 @@ def bands(view: View) -> tuple[int, np.ndarray]:
     Parallel kernels hand threads contiguous runs of the list: even bands, then odd ones,
     gives each thread rows from all over the image, so the work is even.
     """
-    from pixelpath.raster import _kernels
+    from pixelpath.raster import _scan_kernels
 
-    count = -(-view.height // _kernels.BAND_ROWS)
+    count = -(-view.height // _scan_kernels.BAND_ROWS)
     return count, np.concatenate([np.arange(0, count, 2), np.arange(1, count, 2)])
 
 
 def binned(prepared: Prepared, view: View, order: np.ndarray | None = None):
     """Bin triangles (or the positions of ``order``) by band: CSR offsets and items."""
-    from pixelpath.raster import _kernels
+    from pixelpath.raster import _scan_kernels
 
     count, _ = bands(view)
     rows = prepared.rows if order is None else prepared.rows[order]
-    return _kernels.bin_triangles(rows, count, _kernels.BAND_ROWS, view.y0)
+    return _scan_kernels.bin_triangles(rows, count, _scan_kernels.BAND_ROWS, view.y0)
 
 
 def paint(prepared: Prepared, view: View, order: np.ndarray) -> Visibility:
@@ -307,7 +307,7 @@ def paint(prepared: Prepared, view: View, order: np.ndarray) -> Visibility:
     This is the drawing step of the painter's and BSP methods: given a back-to-front order,
     the pixel shows the last triangle drawn over it.
     """
-    from pixelpath.raster import _kernels
+    from pixelpath.raster import _scan_kernels
 
     visibility = visibility_buffers(view)
     order = np.ascontiguousarray(order, dtype=np.intp)
@@ -315,8 +315,8 @@ def paint(prepared: Prepared, view: View, order: np.ndarray) -> Visibility:
     _, band_list = bands(view)
     alpha = cutouts(prepared)
     in_runs(
-        lambda run: _kernels.paint_bands(
-            run, prepared.setup, prepared.rows, offsets, items, order, _kernels.BAND_ROWS,
+        lambda run: _scan_kernels.paint_bands(
+            run, prepared.setup, prepared.rows, offsets, items, order, _scan_kernels.BAND_ROWS,
             view.x0, view.y0, *visibility, alpha,
         ),
         band_list,
@@ -350,7 +350,7 @@ def cutouts(prepared: Prepared):
     >>> bool(masked[prepared.info[:, 0] == 0].all()), bool(masked[prepared.info[:, 0] == 1].any())
     (True, False)
     """
-    from pixelpath.raster import _kernels
+    from pixelpath.raster import _scan_kernels
     from pixelpath.scene._texture_kernels import CUTOFF
 
     tables = prepared.geometry.surfaces
@@ -358,8 +358,8 @@ def cutouts(prepared: Prepared):
         masked = np.ascontiguousarray(tables.alpha[prepared.info[:, 0], CUTOFF] > 0.0)
     else:  # the common case: nothing to gather per triangle
         masked = np.zeros(len(prepared.info), dtype=np.bool_)
-    return _kernels.Cutouts(masked, prepared.setup, prepared.triangles, prepared.info,
-                            prepared.uv, prepared.vertex_colors, tables)
+    return _scan_kernels.Cutouts(masked, prepared.setup, prepared.triangles, prepared.info,
+                                 prepared.uv, prepared.vertex_colors, tables)
 
 
 _SCRATCH = threading.local()
@@ -430,7 +430,7 @@ def shade(
 
     Returns the frame with the front end's counts as its stats and ``report`` attached.
     """
-    from pixelpath.raster import _kernels
+    from pixelpath.raster import _kernels, _scan_kernels
 
     out = output_buffers(view)
     kernel_surfaces = surfaces(prepared, scene, view)
@@ -438,7 +438,7 @@ def shade(
     runs = slices(view)
     def shade_run(run: np.ndarray) -> None:
         _kernels.shade_bands(
-            run, _kernels.BAND_ROWS, view.x0, view.y0, *visibility, kernel_surfaces, out
+            run, _scan_kernels.BAND_ROWS, view.x0, view.y0, *visibility, kernel_surfaces, out
         )
 
     for start, stop in runs:

@@ -121,7 +121,7 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
 def _scan(prepared: pipeline.Prepared, view: View) -> tuple[pipeline.Visibility, np.ndarray]:
     """Decide visibility over the region; return it and the counts per scan line (h, 10)."""
     from pixelpath.hsr._kernels import scanline as kernels
-    from pixelpath.raster import _kernels
+    from pixelpath.raster import _scan_kernels
 
     visibility = pipeline.visibility_buffers(view)
     offsets, items = pipeline.binned(prepared, view)
@@ -131,7 +131,7 @@ def _scan(prepared: pipeline.Prepared, view: View) -> tuple[pipeline.Visibility,
 
     def scan(run: np.ndarray) -> None:
         kernels.scan_bands(
-            run, prepared.setup, prepared.rows, offsets, items, _kernels.BAND_ROWS, view.x0,
+            run, prepared.setup, prepared.rows, offsets, items, _scan_kernels.BAND_ROWS, view.x0,
             view.y0, *visibility, counts, cutouts,
         )
 

@@ -59,7 +59,7 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     >>> frame.rgb.shape, int(frame.object_id[12, 16])
     ((24, 32, 3), 0)
     """
-    from pixelpath.raster import _kernels
+    from pixelpath.raster import _kernels, _scan_kernels
 
     prepared = pipeline.prepare(scene, view, options)
     visibility = pipeline.visibility_buffers(view)
@@ -71,7 +71,7 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     runs = pipeline.slices(view)
     def render_run(run: np.ndarray) -> None:
         _kernels.render_bands(
-            run, prepared.setup, prepared.rows, offsets, items, _kernels.BAND_ROWS, view.x0,
+            run, prepared.setup, prepared.rows, offsets, items, _scan_kernels.BAND_ROWS, view.x0,
             view.y0, *visibility, cutouts, surfaces, out,
         )
 
@@ -88,12 +88,12 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
 
 def _report(prepared: pipeline.Prepared, view: View, visibility: pipeline.Visibility):
     """Count the depth tests: every pixel each triangle covers is one comparison."""
-    from pixelpath.raster import _kernels
+    from pixelpath.raster import _scan_kernels
     from pixelpath.raster.transform import depth_key_name
     from pixelpath.report import Report
 
     tests = np.zeros((view.height, view.width), dtype=np.int32)
-    _kernels.count_coverage(prepared.setup, prepared.rows, view.x0, view.y0, tests)
+    _scan_kernels.count_coverage(prepared.setup, prepared.rows, view.x0, view.y0, tests)
     drawn = int(np.count_nonzero(visibility.triangle_id >= 0))
     total = int(tests.sum())
     return Report(

@@ -12,7 +12,7 @@
 
 Depth along a line works as in the triangle rasterizer: the ends carry the depth key (1/w for
 a perspective camera, affine in depth for an orthographic one), which is affine along the
-projected line, and :func:`pixelpath.raster._kernels.key_depth` turns it into a depth.
+projected line, and :func:`pixelpath.raster._setup_kernels.key_depth` turns it into a depth.
 """
 
 from __future__ import annotations
@@ -22,7 +22,7 @@ import math
 import numpy as np
 
 from pixelpath._jit import njit
-from pixelpath.raster._kernels import FRUSTUM_PLANES, ORTHO_KEY_AT_NDC_0, key_depth
+from pixelpath.raster._setup_kernels import FRUSTUM_PLANES, ORTHO_KEY_AT_NDC_0, key_depth
 
 # Columns of a screen segment: both ends' (x, y, depth key) in pixels.
 SEGMENT_FIELDS = 6

@@ -89,11 +89,12 @@ def classify(
     ``clip`` is (V, 4) float64, ``triangles`` (T, 3) intp and ``keep`` (T,) bool, all
     contiguous; triangles outside one frustum plane are in neither list.
     """
-    from pixelpath.raster import _kernels
+    from pixelpath.raster import _setup_kernels
 
     status = np.empty(len(triangles), dtype=np.int8)
-    _kernels.classify_triangles(clip, triangles, keep, status)
-    return np.flatnonzero(status == _kernels.INSIDE), np.flatnonzero(status == _kernels.CROSSING)
+    _setup_kernels.classify_triangles(clip, triangles, keep, status)
+    inside = np.flatnonzero(status == _setup_kernels.INSIDE)
+    return inside, np.flatnonzero(status == _setup_kernels.CROSSING)
 
 
 def clip_crossing(
@@ -106,7 +107,7 @@ def clip_crossing(
     that needs no clipping copies nothing. Returns the new vertices' blocks (N, k_i), their
     triangles (indices continue after V) and each new triangle's source triangle.
     """
-    from pixelpath.raster import _kernels
+    from pixelpath.raster import _setup_kernels
 
     count = len(columns[0])
     if len(crossing) == 0:
@@ -115,7 +116,7 @@ def clip_crossing(
     corners, local = np.unique(triangles[crossing], return_inverse=True)
     rows = np.hstack([block[corners] for block in columns])
     local = np.ascontiguousarray(local.reshape(-1, 3), dtype=np.intp)
-    new_rows, new_triangles, source = _kernels.clip_triangles(
+    new_rows, new_triangles, source = _setup_kernels.clip_triangles(
         rows, local, np.arange(len(crossing), dtype=np.intp)
     )
     splits = np.cumsum([block.shape[1] for block in columns])[:-1]

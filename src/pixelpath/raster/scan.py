@@ -30,7 +30,7 @@ __all__ = ["coverage", "interpolate", "scan_convert"]
 
 def _setup(points: np.ndarray, triangles: np.ndarray, width: int, height: int):
     """Validate, then return (width, height, triangles, set-up records, covered rows)."""
-    from pixelpath.raster import _kernels
+    from pixelpath.raster import _setup_kernels
     from pixelpath.raster.frustum import _triangle_indices
 
     width, height = _size(width, "width"), _size(height, "height")
@@ -46,9 +46,9 @@ def _setup(points: np.ndarray, triangles: np.ndarray, width: int, height: int):
             raise ValueError("the third column of points is the depth w and must be > 0")
         screen[:, 2] = 1.0 / points[:, 2]
     triangles = _triangle_indices(triangles, len(points))
-    setup = np.zeros((len(triangles), _kernels.SETUP_FIELDS))
+    setup = np.zeros((len(triangles), _setup_kernels.SETUP_FIELDS))
     rows = np.zeros((len(triangles), 2), dtype=np.intp)
-    _kernels.setup_triangles(screen, triangles, False, 0, height, setup, rows)
+    _setup_kernels.setup_triangles(screen, triangles, False, 0, height, setup, rows)
     return width, height, triangles, setup, rows
 
 
@@ -94,17 +94,17 @@ def scan_convert(
 def _nearest(setup: np.ndarray, rows: np.ndarray, triangles: np.ndarray, width: int,
              height: int) -> np.ndarray:
     """Run the depth-tested scan conversion; return the triangle seen at each pixel."""
-    from pixelpath.raster import _kernels
+    from pixelpath.raster import _scan_kernels
 
     inv_depth = np.empty((height, width))
     triangle_id = np.empty((height, width), dtype=np.int32)
-    n_bands = -(-height // _kernels.BAND_ROWS)
-    offsets, items = _kernels.bin_triangles(rows, n_bands, _kernels.BAND_ROWS, 0)
-    cutouts = _kernels.opaque_cutouts(setup, triangles)
+    n_bands = -(-height // _scan_kernels.BAND_ROWS)
+    offsets, items = _scan_kernels.bin_triangles(rows, n_bands, _scan_kernels.BAND_ROWS, 0)
+    cutouts = _scan_kernels.opaque_cutouts(setup, triangles)
     in_runs(
-        lambda bands: _kernels.rasterize_bands(
-            bands, setup, rows, offsets, items, _kernels.BAND_ROWS, 0, 0, inv_depth, triangle_id,
-            cutouts,
+        lambda bands: _scan_kernels.rasterize_bands(
+            bands, setup, rows, offsets, items, _scan_kernels.BAND_ROWS, 0, 0, inv_depth,
+            triangle_id, cutouts,
         ),
         np.arange(n_bands),
     )
@@ -134,11 +134,11 @@ def coverage(points: np.ndarray, triangles: np.ndarray, width: int, height: int)
     >>> coverage([[0, 0], [3, 0], [3, 2], [0, 2]], [[0, 1, 2], [0, 2, 3]], 3, 2).tolist()
     [[1, 1, 1], [1, 1, 1]]
     """
-    from pixelpath.raster import _kernels
+    from pixelpath.raster import _scan_kernels
 
     width, height, _, setup, rows = _setup(points, triangles, width, height)
     counts = np.zeros((height, width), dtype=np.int32)
-    _kernels.count_coverage(setup, rows, 0, 0, counts)
+    _scan_kernels.count_coverage(setup, rows, 0, 0, counts)
     return counts
 
 
@@ -173,7 +173,7 @@ def interpolate(
     >>> round(float(image[4, 4]), 4)  # centre (4.5, 4.5)
     0.6438
     """
-    from pixelpath.raster import _kernels
+    from pixelpath.raster import _scan_kernels
 
     width, height, triangles, setup, rows = _setup(points, triangles, width, height)
     values = np.asarray(values, dtype=np.float64)
@@ -188,7 +188,7 @@ def interpolate(
     out = np.full((height, width, table.shape[1]), np.nan)
     table = kernel_array(table)
     in_threads(
-        lambda first, stop: _kernels.interpolate_values(
+        lambda first, stop: _scan_kernels.interpolate_values(
             first, stop, setup, triangles, table, triangle_id, out
         ),
         height,

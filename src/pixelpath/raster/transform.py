@@ -87,7 +87,7 @@ def clip_to_screen(
     >>> clip_to_screen([[0.0, 0.0, -1.0, 1.0]], 4, 2, orthographic=True).tolist()  # near plane
     [[2.0, 1.0, 2.0]]
     """
-    from pixelpath.raster import _kernels
+    from pixelpath.raster import _setup_kernels
 
     clip = _points(clip, 4, "clip")
     if np.any(clip[:, 3] <= 0.0):
@@ -95,7 +95,7 @@ def clip_to_screen(
     screen = np.empty((len(clip), 3))
     if not isinstance(orthographic, bool | np.bool_):
         raise TypeError(f"orthographic must be a bool, got {type(orthographic).__name__}")
-    _kernels.clip_to_screen(clip, int(width), int(height), bool(orthographic), screen)
+    _setup_kernels.clip_to_screen(clip, int(width), int(height), bool(orthographic), screen)
     return screen
 
 

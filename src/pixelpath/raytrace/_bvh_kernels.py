@@ -200,7 +200,6 @@ def triangle_boxes(tris, boxes, centroids):
             centroids[i, axis] = 0.5 * (low + high)
 
 
-
 def warmup() -> None:
     """Compile the BVH build, both traversals and the public batch kernels on one triangle."""
     tris = np.array([[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0]])

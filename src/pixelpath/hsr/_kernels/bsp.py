@@ -10,7 +10,7 @@ per-camera grid triangles are attached to their nodes at render time (:func:`rou
 Build (:func:`build`): a stack of tasks, each a node and a run of fragment indices in a work
 array. A task partitions its run by the node's plane into the polygons in the plane (kept at
 the node), behind it and in front of it; a triangle that straddles the plane is cut in two or
-three (:func:`pixelpath.raster._kernels.cut_triangle`) and its pieces go to their sides. The
+three (:func:`pixelpath.raster._setup_kernels.cut_triangle`) and its pieces go to their sides. The
 splitter of a finite node is the best of a few candidates, scored on a sample of the run by
 ``|front - back| + SPLIT_WEIGHT · splits``: the planes of a few of the run's polygons, and for
 long runs three axis-aligned planes through the middle of the run (a node with such a *free*
@@ -23,7 +23,7 @@ from __future__ import annotations
 import numpy as np
 
 from pixelpath._jit import njit
-from pixelpath.raster._kernels import _grown, _grown_rows, cut_triangle
+from pixelpath.raster._setup_kernels import _grown, _grown_rows, cut_triangle
 
 CANDIDATES = 8  # polygon planes scored per node
 SAMPLE = 128  # polygons of a run the candidates are scored on

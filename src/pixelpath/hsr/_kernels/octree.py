@@ -20,17 +20,15 @@ from typing import NamedTuple
 import numpy as np
 
 from pixelpath._jit import njit
-from pixelpath.raster._kernels import (
-    BAND_ROWS,
+from pixelpath.raster._scan_kernels import BAND_ROWS, cut_away_at, tiny_cutouts
+from pixelpath.raster._setup_kernels import (
     KEY_PLANE,
     SETUP_FIELDS,
     _grown,
     _grown_rows,
     _outcode,
-    cut_away_at,
     perspective_weights,
     scanline_span,
-    tiny_cutouts,
 )
 
 # The children of a node, front to back, as the planes crossed from the eye's own child:

@@ -35,7 +35,7 @@ from __future__ import annotations
 import numpy as np
 
 from pixelpath._jit import njit
-from pixelpath.raster._kernels import _grown, _grown_rows, cut_triangle, screen_point
+from pixelpath.raster._setup_kernels import _grown, _grown_rows, cut_triangle, screen_point
 
 # Columns of a polygon record.
 ZMIN, ZMAX, XMIN, XMAX, YMIN, YMAX = 0, 1, 2, 3, 4, 5

@@ -4,7 +4,7 @@ The region is cut into bands of rows, scanned in parallel (threads take lists of
 kernels release the GIL); each band runs the whole algorithm:
 
 1. **Edge table.** Every triangle of the band gives its non-horizontal edges, as its set-up
-   record lists them (:mod:`pixelpath.raster._kernels`): the long edge (v0, v2) on every row
+   record lists them (:mod:`pixelpath.raster._setup_kernels`): the long edge (v0, v2) on every row
    the triangle covers, the upper short edge (v0, v1) on the rows whose centre lies above v1
    and the lower one (v1, v2) on the rest: the very rows on which ``scanline_span`` uses each.
    Edges are bucketed by the first row of the band they are active on, so an edge that began
@@ -39,12 +39,12 @@ import numpy as np
 
 from pixelpath._jit import njit
 from pixelpath.hsr.scanline import LINE_COUNTS
-from pixelpath.raster._kernels import (
+from pixelpath.raster._scan_kernels import cut_away_at
+from pixelpath.raster._setup_kernels import (
     KEY_PLANE,
     SLOPES,
     SORTED_XY,
     clearly_nearer,
-    cut_away_at,
     wins_depth_test,
 )
 
@@ -446,7 +446,8 @@ def _fill(first, stop, slope, offset, t, col_first, depth_row, id_row):
 
 def warmup() -> None:
     """Compile the scan-line kernel on two overlapping triangles."""
-    from pixelpath.raster._kernels import overlapping_pair, tiny_cutouts
+    from pixelpath.raster._scan_kernels import tiny_cutouts
+    from pixelpath.raster._setup_kernels import overlapping_pair
 
     setup, rows = overlapping_pair()
     offsets = np.array([0, 2], dtype=np.intp)

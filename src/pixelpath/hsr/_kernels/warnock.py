@@ -29,10 +29,10 @@ from __future__ import annotations
 import numpy as np
 
 from pixelpath._jit import njit
-from pixelpath.raster._kernels import (
+from pixelpath.raster._scan_kernels import cut_away_at
+from pixelpath.raster._setup_kernels import (
     KEY_PLANE,
     clearly_nearer,
-    cut_away_at,
     scanline_span,
     wins_depth_test,
 )
@@ -314,7 +314,8 @@ def mark_areas(areas, decisions, level, x0, y0, level_map, decision_map):
 
 def warmup() -> None:
     """Compile the subdivision kernels on two overlapping triangles."""
-    from pixelpath.raster._kernels import overlapping_pair, tiny_cutouts
+    from pixelpath.raster._scan_kernels import tiny_cutouts
+    from pixelpath.raster._setup_kernels import overlapping_pair
 
     setup, rows = overlapping_pair()
     cutouts = tiny_cutouts(setup, np.array([[0, 1, 2], [0, 1, 2]], dtype=np.intp))
