@@ -11,8 +11,7 @@ import random
 from pixelpath.exercises.exercise import Field, Step
 from pixelpath.exercises.topics import Solved, register
 
-_MARKING = ("Each value is accepted within ±{tolerance} (two decimals); hue within ±1° "
-            "(whole degrees).")
+_MARKING = "Each value is accepted within ±0.01 (two decimals)"
 
 
 def _conversion(src: str, dst: str, fields: tuple[tuple[str, str, int], ...],
@@ -35,7 +34,7 @@ def _conversion(src: str, dst: str, fields: tuple[tuple[str, str, int], ...],
             fields=tuple(Field(name, label, step + 1, tolerance=1.0 if name == "h" else 0.01)
                          for name, label, step in fields),
             steps=steps,
-            marking=_MARKING.format(tolerance=0.01),
+            marking=_MARKING + ("; hue within ±1° (whole degrees)." if dst == "hsv" else "."),
         )
 
     return solve
