@@ -78,8 +78,6 @@ class Texture:
         images, uint8 arrays), False for float arrays (linear, in [0, 1]).
     name : str, optional
         A label for messages; a file's name by default.
-    opaque : bool, default False
-        Ignore the picture's alpha channel (a glTF material whose alpha mode is OPAQUE).
 
     Raises
     ------
@@ -102,8 +100,7 @@ class Texture:
 
     __hash__ = None  # textures compare by value
 
-    def __init__(self, image: Any, *, srgb: bool | None = None, name: str | None = None,
-                 opaque: bool = False) -> None:
+    def __init__(self, image: Any, *, srgb: bool | None = None, name: str | None = None) -> None:
         if name is not None and not isinstance(name, str):
             raise TypeError(f"name must be a str, got {type(name).__name__}")
         if srgb is not None and not isinstance(srgb, bool):
@@ -112,13 +109,11 @@ class Texture:
         if isinstance(image, str | os.PathLike):
             path = Path(image)
             label = label or path.name
-            rgba, eight_bit = _read_file(path, opaque)
+            rgba, eight_bit = _read_file(path)
         elif _is_pil_image(image):
-            rgba, eight_bit = _from_pil(image, label or "texture", opaque)
+            rgba, eight_bit = _from_pil(image, label or "texture")
         else:
             rgba, eight_bit = _from_array(image)
-            if opaque:
-                rgba = _opaque(rgba)
         self.name = label
         self.srgb = eight_bit if srgb is None else srgb
         self._pending: tuple[Any, str, bool] | None = None
@@ -129,7 +124,8 @@ class Texture:
         """Make a texture of a PIL image that is decoded when the texture is first used.
 
         The image must stay readable until then (not closed). Undecodable pixels raise the
-        ValueError, naming ``name``, at that first use.
+        ValueError, naming ``name``, at that first use. ``opaque`` ignores the picture's
+        alpha channel (a glTF material whose alpha mode is OPAQUE).
 
         Examples
         --------
@@ -226,18 +222,12 @@ def _frozen(array: np.ndarray) -> np.ndarray:
     return array
 
 
-def _opaque(rgba: np.ndarray) -> np.ndarray:
-    out = rgba.copy()
-    out[..., 3] = 255 if out.dtype == np.uint8 else 1.0
-    return out
-
-
 def _is_pil_image(value: Any) -> bool:
     module = type(value).__module__
     return module.startswith("PIL.") and hasattr(value, "convert")
 
 
-def _read_file(path: Path, opaque: bool) -> tuple[np.ndarray, bool]:
+def _read_file(path: Path) -> tuple[np.ndarray, bool]:
     from PIL import Image as PILImage
     from PIL import UnidentifiedImageError
 
@@ -247,13 +237,13 @@ def _read_file(path: Path, opaque: bool) -> tuple[np.ndarray, bool]:
         with warnings.catch_warnings():
             warnings.simplefilter("error", PILImage.DecompressionBombWarning)
             with PILImage.open(path) as img:
-                return _from_pil(img, str(path), opaque)
+                return _from_pil(img, str(path))
     except (UnidentifiedImageError, OSError, SyntaxError, PILImage.DecompressionBombError,
             PILImage.DecompressionBombWarning) as exc:
         raise ValueError(f"{path}: not a readable image ({exc})") from None
 
 
-def _from_pil(img: Any, label: str, opaque: bool) -> tuple[np.ndarray, bool]:
+def _from_pil(img: Any, label: str, opaque: bool = False) -> tuple[np.ndarray, bool]:
     """Return (H, W, 4) pixels of a PIL image, reduced to MAX_SIDE, and whether 8-bit."""
     from PIL import Image as PILImage
 
