@@ -79,10 +79,9 @@ def _touches_boundary(points: list[list[int]], window: list[int]) -> bool:
 
 
 def _area(points) -> float:
-    if len(points) < 3:
-        return 0.0
-    x, y = np.asarray(points, dtype=float).T
-    return 0.5 * abs(float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1))))
+    from pixelpath.clip._validate import twice_signed_area
+
+    return 0.0 if len(points) < 3 else 0.5 * abs(twice_signed_area(np.asarray(points, float)))
 
 
 # ---------------------------------------------------------------- Sutherland-Hodgman

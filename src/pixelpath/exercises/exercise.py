@@ -337,7 +337,9 @@ def shown(value: Any) -> str:
     >>> shown(0.492304), shown([1.0, 2.5]), shown(None), shown([[0, 1], [2.25, 3]])
     ('0.4923', '(1, 2.5)', 'none', '(0, 1) (2.25, 3)')
     """
-    return _written(value, _rounded)
+    from pixelpath.color.explain import fmt  # the notes' way of writing a number
+
+    return _written(value, fmt)
 
 
 def exact(value: Any) -> str:
@@ -349,11 +351,6 @@ def exact(value: Any) -> str:
     ('0.6666666667', '(0, 0.3333333333) (1, 2)')
     """
     return _written(value, lambda number: f"{number:.10g}")
-
-
-def _rounded(number: float) -> str:
-    text = f"{number:.4f}".rstrip("0").rstrip(".")
-    return "0" if text in ("-0", "") else text
 
 
 def _written(value: Any, number: Callable[[float], str]) -> str:

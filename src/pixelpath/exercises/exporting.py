@@ -38,6 +38,7 @@ Formats
 from __future__ import annotations
 
 import base64
+import functools
 import html
 import json
 import os
@@ -46,6 +47,7 @@ import uuid
 import xml.etree.ElementTree as ET
 from collections.abc import Callable, Iterable, Sequence
 from pathlib import Path
+from typing import Any
 
 from pixelpath import __version__
 from pixelpath.exercises.exercise import Exercise, Field, shown
@@ -138,9 +140,15 @@ def markdown_html(text: str) -> str:
     <td>1</td>
     ...
     """
+    return markdown_parser().render(text)
+
+
+@functools.cache
+def markdown_parser() -> Any:
+    """Return the parser of exercises' Markdown: CommonMark with tables, raw HTML as text."""
     from markdown_it import MarkdownIt
 
-    return MarkdownIt("commonmark").enable("table").render(text)
+    return MarkdownIt("commonmark", {"html": False}).enable("table")
 
 
 def _checked(exercises: Sequence[Exercise]) -> list[Exercise]:

@@ -225,7 +225,7 @@ def pick_phong_shading(rng: random.Random, difficulty: str) -> dict:
         if difficulty == "easy":
             params["x"] = (xa + xb) // 2 if (xa + xb) % 2 == 0 else params["x"]
         try:
-            geometry, _, terms = _shade_span(params)
+            geometry, _, _, terms = _shade_span(params)
         except ValueError:  # a zero vector, or normals that cancel at the pixel
             continue
         lit = geometry.n_dot_l >= 0.2 and terms.specular >= 0.01
@@ -234,7 +234,7 @@ def pick_phong_shading(rng: random.Random, difficulty: str) -> dict:
 
 
 def _shade_span(p: dict):
-    """Interpolate the normal to the pixel, then evaluate the Phong model there."""
+    """Interpolate the normal to the pixel (at t along the span), then light it there."""
     from pixelpath.lighting import phong_geometry, phong_terms
 
     if not all(np.any(p[k]) for k in ("na", "nb", "l", "v")):
@@ -248,13 +248,12 @@ def _shade_span(p: dict):
     terms = phong_terms(ka=p["ka"], kd=p["kd"], ks=p["ks"], shininess=p["n"],
                         ambient=p["Ia"], light=p["IL"], n_dot_l=geometry.n_dot_l,
                         r_dot_v=geometry.r_dot_v)
-    return geometry, blended, terms
+    return geometry, t, blended, terms
 
 
 def solve_phong_shading(p: dict) -> Solved:
     """Solve one pixel of Phong shading: interpolate the normal, normalize, light it."""
-    geometry, blended, terms = _shade_span(p)
-    t = (p["x"] - p["xa"]) / (p["xb"] - p["xa"])
+    geometry, t, blended, terms = _shade_span(p)
     interpolate = Step("interpolate the normal", (
         f"t = (x − x_A)/(x_B − x_A) = ({p['x']} − {p['xa']})/({p['xb']} − {p['xa']}) "
         f"= {shown(t)}",
@@ -317,7 +316,7 @@ def pick_gouraud(rng: random.Random, difficulty: str) -> dict:
         if len(set(intensities)) < 3:
             continue
         params = {"vertices": vertices, "intensities": intensities, "scan_line": scan, "x": 0}
-        (x_left, _), (x_right, _) = _span(params)
+        (*_, x_left, _), (*_, x_right, _) = _span(params)
         inside = [x for x in range(math.ceil(x_left), math.floor(x_right) + 1)
                   if x - x_left >= 0.5 and x_right - x >= 0.5]
         if x_right - x_left >= 2 and inside:
@@ -341,9 +340,10 @@ def _crossings(p: dict) -> list[tuple[int, int, float, float, float]]:
     return sorted(found, key=lambda crossing: crossing[3])
 
 
-def _span(p: dict) -> tuple[tuple[float, float], tuple[float, float]]:
+def _span(p: dict) -> tuple[tuple, tuple]:
+    """Return the crossings where the scan line enters and leaves the triangle."""
     crossings = _crossings(p)
-    return (crossings[0][3], crossings[0][4]), (crossings[-1][3], crossings[-1][4])
+    return crossings[0], crossings[-1]
 
 
 _VERTEX_NAMES = "ABC"
@@ -351,9 +351,8 @@ _VERTEX_NAMES = "ABC"
 
 def solve_gouraud(p: dict) -> Solved:
     """Solve Gouraud shading at one pixel: interpolate down the edges, then along the span."""
-    crossings = _crossings(p)
-    left, right = crossings[0], crossings[-1]
-    (x_left, i_left), (x_right, i_right) = _span(p)
+    left, right = _span(p)
+    x_left, i_left, x_right, i_right = left[3], left[4], right[3], right[4]
     s = (p["x"] - x_left) / (x_right - x_left)
     intensity = i_left + (i_right - i_left) * s
     steps = tuple(_edge_step(p, crossing, side)
@@ -416,7 +415,7 @@ def _gouraud_figure(p: dict, solution: bool):
     pixel = np.array([[p["x"], y]], dtype=float)
     sketch.rings(view, pixel, "edge")
     if solution:
-        (x_left, i_left), (x_right, i_right) = _span(p)
+        (*_, x_left, i_left), (*_, x_right, i_right) = _span(p)
         ends = np.array([[x_left, y], [x_right, y]])
         sketch.segment(view, ends[0], ends[1], "output", width=3)
         sketch.dots(view, ends, "output", radius=4)

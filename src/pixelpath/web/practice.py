@@ -21,7 +21,6 @@ Examples
 from __future__ import annotations
 
 import base64
-import functools
 import math
 import random
 from typing import Any
@@ -152,14 +151,6 @@ def _typed_values(data: dict[str, Any]) -> dict[str, str | float]:
     return values
 
 
-@functools.cache
-def _markdown() -> Any:
-    from markdown_it import MarkdownIt
-
-    # Raw HTML in the Markdown is shown as text, never passed on to the page.
-    return MarkdownIt("commonmark", {"html": False}).enable("table")
-
-
 def markdown_html(text: str, figure_name: str = "", figure: str | None = None) -> str:
     r"""Render an exercise's Markdown as HTML the playground's pages can show.
 
@@ -176,7 +167,10 @@ def markdown_html(text: str, figure_name: str = "", figure: str | None = None) -
     >>> markdown_html("| a |\n|--:|\n| 1 |").count('class="align-right"')
     2
     """
-    renderer = _markdown()
+    from pixelpath.exercises.exporting import markdown_parser
+
+    # Raw HTML in the Markdown is shown as text, never passed on to the page.
+    renderer = markdown_parser()
     tokens = renderer.parse(text)
     for token in _walk(tokens):
         style = token.attrs.pop("style", None)
