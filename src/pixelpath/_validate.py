@@ -5,6 +5,7 @@ Each message names the argument and shows what came in.
 
 from __future__ import annotations
 
+import math
 import numbers
 from typing import Any
 
@@ -32,7 +33,7 @@ def real(value: Any, name: str, *, positive: bool = False, minimum: float | None
     if isinstance(value, bool) or not isinstance(value, numbers.Real):
         raise TypeError(f"{name} must be a real number, got {_describe(value)}")
     result = float(value)
-    if not np.isfinite(result):
+    if not math.isfinite(result):
         raise ValueError(f"{name} must be finite, got {result}")
     if positive and result <= 0.0:
         raise ValueError(f"{name} must be positive, got {result}")
@@ -57,13 +58,13 @@ def float_array(value: Any, name: str, shape: tuple[int | None, ...]) -> np.ndar
         array = np.array(value, dtype=np.float64)
     except (TypeError, ValueError):
         raise TypeError(f"{name} must be an array of numbers, got {_describe(value)}") from None
-    sizes = ["n" if n is None else str(n) for n in shape]
-    expected = "(" + ", ".join(sizes) + ("," if len(sizes) == 1 else "") + ")"
     if array.ndim != len(shape) or any(
         n is not None and n != m for n, m in zip(shape, array.shape, strict=True)
     ):
+        sizes = ["n" if n is None else str(n) for n in shape]
+        expected = "(" + ", ".join(sizes) + ("," if len(sizes) == 1 else "") + ")"
         raise ValueError(f"{name} must have shape {expected}, got shape {array.shape}")
-    if not np.all(np.isfinite(array)):
+    if not np.isfinite(array).all():
         bad = np.argwhere(~np.isfinite(array))[0]
         raise ValueError(f"{name} must be finite, got {array[tuple(bad)]} at index {tuple(bad)}")
     return array
@@ -80,15 +81,46 @@ def unit_rows(vectors: np.ndarray) -> np.ndarray:
     Rows already of unit length (to 4 ulp) are kept as they are, so normalizing twice gives the
     same bits and records survive ``to_dict``/``from_dict`` round trips exactly.
     """
-    lengths = np.linalg.norm(vectors, axis=-1, keepdims=True)
+    lengths = row_lengths(vectors)
     unit = np.abs(lengths - 1.0) <= 4.0 * np.finfo(np.float64).eps
     return np.where(unit, vectors, vectors / np.where(lengths == 0.0, 1.0, lengths))
+
+
+def row_lengths(vectors: np.ndarray) -> np.ndarray:
+    """Return the lengths of (..., 3) vectors, shaped (..., 1).
+
+    The bits of ``np.linalg.norm(vectors, axis=-1, keepdims=True)`` (the same squares, summed
+    x, y, then z), at a fifth of its time: NumPy reduces a length-3 axis slowly.
+
+    Examples
+    --------
+    >>> from pixelpath._validate import row_lengths
+    >>> row_lengths(np.array([[3.0, 4.0, 0.0], [0.0, 0.0, 2.0]])).tolist()
+    [[5.0], [2.0]]
+    """
+    x, y, z = vectors[..., 0], vectors[..., 1], vectors[..., 2]
+    return np.sqrt((x * x + y * y) + z * z)[..., None]
+
+
+def cross3(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Return the cross product of two 3-vectors, as ``np.cross`` computes it, bit for bit.
+
+    ``np.cross`` spends some 60 microseconds on two 3-vectors preparing its axes.
+
+    Examples
+    --------
+    >>> from pixelpath._validate import cross3
+    >>> cross3(np.array([1.0, 0.0, 0.0]), np.array([0.0, 1.0, 0.0])).tolist()
+    [0.0, 0.0, 1.0]
+    """
+    (a0, a1, a2), (b0, b1, b2) = a.tolist(), b.tolist()
+    return np.array([a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0])
 
 
 def unit_vector3(value: Any, name: str) -> np.ndarray:
     """Return ``value`` normalized to unit length; a zero vector is a ValueError."""
     vector = float_array(value, name, (3,))
-    if not np.any(vector):
+    if not vector.any():
         raise ValueError(f"{name} must not be the zero vector")
     return frozen(unit_rows(vector))
 
@@ -96,7 +128,7 @@ def unit_vector3(value: Any, name: str) -> np.ndarray:
 def colour(value: Any, name: str) -> np.ndarray:
     """Return an (r, g, b) colour; components must be finite and non-negative."""
     rgb = float_array(value, name, (3,))
-    if np.any(rgb < 0.0):
+    if (rgb < 0.0).any():
         raise ValueError(f"{name} components must be non-negative (>= 0), got {rgb.tolist()}")
     return frozen(rgb)
 

@@ -111,7 +111,7 @@ import re
 import struct
 import warnings
 from pathlib import Path
-from typing import Any
+from typing import Any, NamedTuple
 from urllib.parse import unquote
 
 import numpy as np
@@ -119,7 +119,7 @@ import numpy as np
 from pixelpath.scene.camera import Camera
 from pixelpath.scene.lights import DirectionalLight, PointLight
 from pixelpath.scene.material import Material
-from pixelpath.scene.mesh import Mesh
+from pixelpath.scene.mesh import Mesh, bounding_box
 from pixelpath.scene.scene import Scene
 from pixelpath.scene.texture import Texture, srgb_to_linear
 
@@ -271,26 +271,126 @@ def _read_checked(path: Path) -> tuple[list[Mesh], dict | None]:
     resolver = _confined_resolver(path)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # trimesh's own warnings say nothing about our file
-        loaded = _trimesh_scene(path, resolver)
+        parts = _trimesh_parts(path, resolver, gltf is not None)
     if resolver.refused:
         raise ValueError(f"{path}: refers to {resolver.refused[0]!r}, outside the file's folder")
     for name in resolver.missing:
         warnings.warn(f"{path}: {name!r} not found; using the material colour", stacklevel=3)
-    objects = _meshes(path, loaded, gltf)
+    objects = _meshes(path, parts, gltf)
     if not objects:
         raise ValueError(f"{path}: the file has no triangle meshes")
     return objects, gltf
 
 
-def _trimesh_scene(path: Path, resolver: Any) -> Any:
-    import trimesh
+class _Part(NamedTuple):
+    """One drawable part as trimesh read it: a node's geometry and where the node is."""
 
+    node: str
+    geometry: str
+    matrix: Any  # the node's world transform, 4 x 4
+    vertices: Any
+    faces: Any
+    normals: Any  # as stored in the file, or None
+    visual: Any  # trimesh's visual (its material and uv), or None
+    colors: Any  # per-vertex colours as trimesh keeps them, or None
+
+
+def _trimesh_parts(path: Path, resolver: Any, is_gltf: bool) -> list[_Part]:
     try:
-        return trimesh.load(path, force="scene", process=False, resolver=resolver)
+        return _gltf_parts(path, resolver) if is_gltf else _scene_parts(path, resolver)
     except Exception as exc:  # trimesh's parsers raise anything on a broken file
         raise ValueError(
             f"{path}: trimesh could not read this file ({type(exc).__name__}: {exc})"
         ) from None
+
+
+def _scene_parts(path: Path, resolver: Any) -> list[_Part]:
+    """Return the parts of an OBJ or PLY file, from the scene trimesh builds."""
+    import trimesh
+
+    loaded = trimesh.load(path, force="scene", process=False, resolver=resolver)
+    parts = []
+    for node in loaded.graph.nodes_geometry:
+        matrix, name = loaded.graph.get(node)
+        geometry = loaded.geometry[name]
+        if not hasattr(geometry, "faces"):
+            continue  # points and paths have nothing to shade
+        visual = geometry.visual
+        colors = getattr(visual, "vertex_attributes", {}).get("color")
+        if colors is None and getattr(visual, "kind", None) == "vertex":
+            colors = visual.vertex_colors
+        normals = geometry.vertex_normals if "vertex_normals" in geometry._cache else None
+        parts.append(
+            _Part(node, name, matrix, geometry.vertices, geometry.faces, normals, visual, colors)
+        )
+    return parts
+
+
+def _gltf_parts(path: Path, resolver: Any) -> list[_Part]:
+    """Return the parts of a glTF file, from what trimesh's glTF reader returns.
+
+    The reader's own output (arrays, visuals and the node graph's edges) is used as it is:
+    building trimesh's Trimesh and Scene objects from it would double the time to load.
+    """
+    from trimesh.exchange.gltf import load_glb, load_gltf
+    from trimesh.visual.color import to_rgba
+
+    reader = load_glb if path.suffix.lower() == ".glb" else load_gltf
+    with open(path, "rb") as file:
+        loaded = reader(file_obj=file, resolver=resolver)
+    geometries = loaded["geometry"]
+    parent: dict[str, tuple[str, np.ndarray]] = {}
+    named: dict[str, str] = {}
+    order: dict[str, None] = {}  # nodes in the order trimesh's scene graph lists them
+    for edge in loaded["graph"]:
+        above, node = edge["frame_from"], edge["frame_to"]
+        order.update({above: None, node: None})
+        parent[node] = (above, edge.get("matrix", _IDENTITY))
+        if "geometry" in edge:
+            named[node] = edge["geometry"]
+    parts = []
+    for node in order:
+        name = named.get(node)
+        kwargs = geometries.get(name) if name is not None else None
+        if kwargs is None or "faces" not in kwargs:
+            continue  # no geometry, or points and lines: nothing to shade
+        visual = kwargs.get("visual")
+        colors = kwargs.get("vertex_colors")
+        if visual is not None:
+            colors = visual.vertex_attributes.get("color")
+        elif colors is not None:
+            colors = to_rgba(colors)  # as trimesh's Trimesh would keep them
+        normals = kwargs.get("vertex_normals")
+        parts.append(
+            _Part(
+                node,
+                name,
+                _world_matrix(parent, node),
+                kwargs["vertices"],
+                kwargs["faces"],
+                normals,
+                visual,
+                colors,
+            )
+        )
+    return parts
+
+
+_IDENTITY = np.eye(4)
+
+
+def _world_matrix(parent: dict[str, tuple[str, np.ndarray]], node: str) -> np.ndarray:
+    """Return ``node``'s world transform as trimesh's scene graph computes it, to the bit."""
+    from trimesh.transformations import fix_rigid
+
+    chain = []
+    while node in parent:
+        node, matrix = parent[node]
+        chain.append(matrix)
+    if len(chain) > 1:  # trimesh drops identities and multiplies the rest, root first
+        chain = [m for m in reversed(chain) if np.abs(m - _IDENTITY).max() > 1e-8] or [_IDENTITY]
+    matrix = np.linalg.multi_dot(chain) if len(chain) > 1 else chain[0]
+    return fix_rigid(matrix, max_deviance=1e-5)  # trimesh repairs near-rigid transforms
 
 
 def _make_resolver_class() -> type:
@@ -425,8 +525,7 @@ def _check_accessors(path: Path, gltf: dict, binary_length: int | None) -> None:
         length = view.get("byteLength")
         if not isinstance(length, int) or not isinstance(need, int) or need > length:
             raise ValueError(
-                f"{path}: accessor {index} claims {count} elements, more than its bufferView "
-                f"holds"
+                f"{path}: accessor {index} claims {count} elements, more than its bufferView holds"
             )
         buffer = view.get("buffer")
         if not isinstance(buffer, int) or not 0 <= buffer < len(buffers):
@@ -442,49 +541,43 @@ def _check_accessors(path: Path, gltf: dict, binary_length: int | None) -> None:
 # --- meshes and materials ---------------------------------------------------------------------
 
 
-def _meshes(path: Path, loaded: Any, gltf: dict | None) -> list[Mesh]:
+def _meshes(path: Path, parts: list[_Part], gltf: dict | None) -> list[Mesh]:
     node_names = {n.get("name") for n in (gltf or {}).get("nodes", []) if isinstance(n, dict)}
     meshes = []
     # Parts share trimesh's material and image objects: each is mapped (and each picture
     # decoded) once, and parts sharing a picture share one Texture, packed once to render.
     shared: dict[tuple, Any] = {}
-    for node in loaded.graph.nodes_geometry:
-        matrix, geometry_name = loaded.graph.get(node)
-        geometry = loaded.geometry[geometry_name]
-        if not hasattr(geometry, "faces") or len(geometry.faces) == 0:
-            continue  # points and paths have nothing to shade
-        name = node if gltf is None or node in node_names else geometry_name
+    for part in parts:
+        if len(part.faces) == 0:
+            continue
+        name = part.node if gltf is None or part.node in node_names else part.geometry
         try:
-            matrix = np.asarray(matrix, dtype=np.float64)
-            meshes.append(_mesh(path, geometry, matrix, name, gltf, shared))
+            meshes.append(_mesh(path, part, name, gltf, shared))
         except (ValueError, TypeError) as exc:
             raise type(exc)(f"{path}: part {name!r}: {exc}") from None
     return meshes
 
 
-def _mesh(
-    path: Path, geometry: Any, matrix: np.ndarray, name: str, gltf: dict | None, shared: dict
-) -> Mesh:
-    vertices = np.asarray(geometry.vertices, dtype=np.float64)
-    faces = np.asarray(geometry.faces, dtype=np.int64)
-    if not np.all(np.isfinite(vertices)):
-        raise ValueError("vertex positions are not all finite (NaN or infinity)")
-    if faces.size and (faces.min() < 0 or faces.max() >= len(vertices)):
-        raise ValueError(f"a face refers to a vertex beyond the {len(vertices)} there are")
+def _mesh(path: Path, part: _Part, name: str, gltf: dict | None, shared: dict) -> Mesh:
+    vertices = np.asarray(part.vertices, dtype=np.float64)
+    faces = np.asarray(part.faces, dtype=np.int64)
+    if vertices.ndim != 2 or vertices.shape[1] != 3 or faces.ndim != 2 or faces.shape[1] != 3:
+        raise ValueError(f"vertices {vertices.shape} and faces {faces.shape} are not triangles")
     normals = None
-    if "vertex_normals" in geometry._cache:  # stored in the file: computing would be a guess
-        normals = np.asarray(geometry.vertex_normals, dtype=np.float64)
+    if part.normals is not None and np.shape(part.normals) == vertices.shape:
+        # stored in the file: computing them would be a guess
+        normals = np.asarray(part.normals, dtype=np.float64)
         normals = normals if np.all(np.isfinite(normals)) else None
+    matrix = np.asarray(part.matrix, dtype=np.float64)
     linear, shift = matrix[:3, :3], matrix[:3, 3]
     vertices = vertices @ linear.T + shift
     if normals is not None:
         normals = normals @ np.linalg.inv(linear)  # the inverse transpose, row by row
     if np.linalg.det(linear) < 0.0:  # a mirroring node: keep faces counter-clockwise outside
         faces = faces[:, ::-1]
-    visual = geometry.visual
-    material = _material(path, visual, gltf, shared)
-    uv = _uv(visual, len(vertices))
-    colors = _vertex_colors(visual, len(vertices), linear=gltf is not None)
+    material = _material(path, part.visual, gltf, shared)
+    uv = _uv(part.visual, len(vertices))
+    colors = _vertex_colors(part.colors, len(vertices), linear=gltf is not None)
     return Mesh(vertices, faces, material, normals, colors, uv, name)
 
 
@@ -496,11 +589,8 @@ def _uv(visual: Any, count: int) -> np.ndarray | None:
     return uv if np.all(np.isfinite(uv)) else None
 
 
-def _vertex_colors(visual: Any, count: int, *, linear: bool) -> np.ndarray | None:
+def _vertex_colors(colors: Any, count: int, *, linear: bool) -> np.ndarray | None:
     """Per-vertex colours in linear light: glTF's COLOR_0 as stored, others decoded from sRGB."""
-    colors = getattr(visual, "vertex_attributes", {}).get("color")
-    if colors is None and getattr(visual, "kind", None) == "vertex":
-        colors = visual.vertex_colors
     if colors is None or len(colors) != count:
         return None
     colors = np.asarray(colors)
@@ -536,7 +626,7 @@ def _pbr_material(path: Path, source: Any, gltf: dict | None, shared: dict) -> M
         rgba = rgba / 255.0  # trimesh keeps the factor as 8-bit RGBA
     metallic = 1.0 if source.metallicFactor is None else float(source.metallicFactor)
     roughness = 1.0 if source.roughnessFactor is None else float(source.roughnessFactor)
-    metallic, roughness = (float(np.clip(x, 0.0, 1.0)) for x in (metallic, roughness))
+    metallic, roughness = (_fraction(x) for x in (metallic, roughness))
     mode = (source.alphaMode or "OPAQUE").upper()
     alpha_cutoff = _alpha_cutoff(source, mode)
     texture = _texture(path, source.baseColorTexture, shared, keep_alpha=mode != "OPAQUE")
@@ -552,15 +642,21 @@ def _pbr_material(path: Path, source: Any, gltf: dict | None, shared: dict) -> M
         kd=kd,
         ks=(1.0 - roughness) ** 2 * (0.25 + 0.75 * metallic),
         shininess=_shininess(roughness),
-        transparency=float(np.clip(1.0 - rgba[3], 0.0, 1.0)) if mode == "BLEND" else 0.0,
+        transparency=_fraction(1.0 - rgba[3]) if mode == "BLEND" else 0.0,
         name=source.name if isinstance(source.name, str) else None,
         texture=texture,
         texture_filter=texture_filter,
         texture_wrap=texture_wrap,
         double_sided=bool(source.doubleSided),
-        alpha=float(np.clip(rgba[3], 0.0, 1.0)) if mode == "MASK" else 1.0,
+        alpha=_fraction(rgba[3]) if mode == "MASK" else 1.0,
         alpha_cutoff=alpha_cutoff,
     )
+
+
+def _fraction(value: Any) -> float:
+    """Return ``value`` as a float clamped to [0, 1] (NaN stays NaN, as with ``np.clip``)."""
+    value = float(value)
+    return value if math.isnan(value) else min(max(value, 0.0), 1.0)
 
 
 # BLEND is drawn as MASK with this cutoff: a texel at least half opaque is drawn, others cut.
@@ -592,7 +688,7 @@ def _shininess(roughness: float) -> float:
     """Phong exponent of a GGX roughness, ``2 / r^4 - 2`` (Blinn's mapping), kept in [1, 1000]."""
     if roughness <= 0.0:
         return 1000.0
-    return float(np.clip(2.0 / roughness**4 - 2.0, 1.0, 1000.0))
+    return min(max(2.0 / roughness**4 - 2.0, 1.0), 1000.0)
 
 
 def _simple_material(path: Path, source: Any, shared: dict) -> Material:
@@ -602,7 +698,7 @@ def _simple_material(path: Path, source: Any, shared: dict) -> Material:
     ka_color = _mtl_color(raw.get("ka"), (0.0, 0.0, 0.0))
     ks_color = _mtl_color(raw.get("ks"), (0.0, 0.0, 0.0))
     ns = _mtl_number(raw.get("ns"), 0.0)
-    opacity = float(np.clip(_mtl_number(raw.get("d"), 1.0), 0.0, 1.0))
+    opacity = _fraction(_mtl_number(raw.get("d"), 1.0))
     ka = float(np.mean(ka_color))
     return Material(
         color=srgb_to_linear(kd_color),
@@ -673,8 +769,14 @@ def _refuse_lost_texture(path: Path, source: Any, gltf: dict | None) -> None:
 # glTF sampler codes (the values of WebGL's constants)
 _WRAPS = {10497: "repeat", 33071: "clamp", 33648: "mirror"}
 _NEAREST, _LINEAR = 9728, 9729
-_MIN_FILTERS = {_NEAREST: "nearest", _LINEAR: "bilinear", 9984: "trilinear",
-                9985: "trilinear", 9986: "trilinear", 9987: "trilinear"}
+_MIN_FILTERS = {
+    _NEAREST: "nearest",
+    _LINEAR: "bilinear",
+    9984: "trilinear",
+    9985: "trilinear",
+    9986: "trilinear",
+    9987: "trilinear",
+}
 
 
 def _sampler(path: Path, source: Any, gltf: dict | None, shared: dict) -> tuple[str, str]:
@@ -738,7 +840,8 @@ def _gltf_material_index(gltf: dict | None, name: Any) -> int | None:
     if not isinstance(materials, list):
         return None
     found = [
-        i for i, material in enumerate(materials)
+        i
+        for i, material in enumerate(materials)
         if isinstance(material, dict) and material.get("name") == name
     ]
     return found[0] if len(found) == 1 else None
@@ -752,8 +855,7 @@ def _sampler_json(gltf: dict, ref: Any, where: str) -> dict:
     texture = _item(textures, ref.get("index"), where, "baseColorTexture index", "textures")
     if texture.get("sampler") is None:
         return {}
-    return _item(gltf.get("samplers"), texture.get("sampler"), where, "texture sampler",
-                 "samplers")
+    return _item(gltf.get("samplers"), texture.get("sampler"), where, "texture sampler", "samplers")
 
 
 def _item(items: Any, index: Any, where: str, what: str, kind: str) -> dict:
@@ -775,8 +877,7 @@ def _code(sampler: dict, key: str, codes: dict, default: int | None, name: Any) 
         return default
     if not _is_int(value) or value not in codes:
         raise ValueError(
-            f"material {name!r}: sampler {key} {value!r} is not one of "
-            f"{', '.join(map(str, codes))}"
+            f"material {name!r}: sampler {key} {value!r} is not one of {', '.join(map(str, codes))}"
         )
     return value
 
@@ -801,8 +902,7 @@ def _missing_image_file(path: Path, gltf: Any, ref: Any) -> bool:
 
 
 def _bounds_of(objects: list[Mesh]) -> np.ndarray:
-    points = np.vstack([mesh.vertices for mesh in objects])
-    return np.stack([points.min(axis=0), points.max(axis=0)])
+    return bounding_box(np.vstack([mesh.vertices for mesh in objects]))
 
 
 def framing_camera(bounds: Any, size: tuple[int, int] = DEFAULT_SIZE, fov: float = 45.0) -> Camera:
@@ -836,8 +936,13 @@ def framing_camera(bounds: Any, size: tuple[int, int] = DEFAULT_SIZE, fov: float
     distance = framing_distance(bounds, back, size, fov)
     near, far = depth_range(distance, radius)
     return Camera(
-        eye=center + distance * back, target=center, fov=fov, width=size[0], height=size[1],
-        near=near, far=far,
+        eye=center + distance * back,
+        target=center,
+        fov=fov,
+        width=size[0],
+        height=size[1],
+        near=near,
+        far=far,
     )
 
 
@@ -913,9 +1018,11 @@ def _world_matrices(gltf: dict) -> dict[int, np.ndarray]:
     nodes = gltf.get("nodes", [])
     scenes = gltf.get("scenes", [])
     index = gltf.get("scene", 0)
-    roots = scenes[index].get("nodes", []) if isinstance(index, int) and 0 <= index < len(
-        scenes
-    ) and isinstance(scenes[index], dict) else range(len(nodes))
+    roots = (
+        scenes[index].get("nodes", [])
+        if isinstance(index, int) and 0 <= index < len(scenes) and isinstance(scenes[index], dict)
+        else range(len(nodes))
+    )
     world: dict[int, np.ndarray] = {}
     stack = [(root, np.eye(4)) for root in roots]
     while stack:
@@ -965,9 +1072,15 @@ def _camera(spec: dict, matrix: np.ndarray, bounds: np.ndarray, size: Any) -> Ca
         if "projection" not in Camera.__dataclass_fields__:  # orthographic cameras not yet built
             return None
         return Camera(
-            eye=eye, target=target, up=up, width=width, height=height,
-            near=max(float(ortho.get("znear", 0.0)), 1e-6), far=float(ortho["zfar"]),
-            projection="orthographic", view_height=2.0 * float(ortho["ymag"]),
+            eye=eye,
+            target=target,
+            up=up,
+            width=width,
+            height=height,
+            near=max(float(ortho.get("znear", 0.0)), 1e-6),
+            far=float(ortho["zfar"]),
+            projection="orthographic",
+            view_height=2.0 * float(ortho["ymag"]),
         )
     perspective = spec["perspective"]
     aspect = perspective.get("aspectRatio")
@@ -977,8 +1090,14 @@ def _camera(spec: dict, matrix: np.ndarray, bounds: np.ndarray, size: Any) -> Ca
     near = float(perspective["znear"])
     far = float(perspective.get("zfar") or max(2.0 * reach, near * 2.0))
     return Camera(
-        eye=eye, target=target, up=up, fov=math.degrees(float(perspective["yfov"])),
-        width=size[0], height=size[1], near=near, far=far,
+        eye=eye,
+        target=target,
+        up=up,
+        fov=math.degrees(float(perspective["yfov"])),
+        width=size[0],
+        height=size[1],
+        near=near,
+        far=far,
     )
 
 

@@ -137,7 +137,7 @@ class Camera(Record):
         if distance == 0.0:
             raise ValueError(f"eye and target must differ, both are {self.eye.tolist()}")
         w = backward / distance
-        right = np.cross(self.up, w)
+        right = v.cross3(self.up, w)
         length = float(np.linalg.norm(right))
         if length <= 1e-12 * max(float(np.linalg.norm(self.up)), 1e-300):
             raise ValueError(
@@ -145,7 +145,7 @@ class Camera(Record):
                 f"{(-w).tolist()}"
             )
         u = right / length
-        return u, np.cross(w, u), w
+        return u, v.cross3(w, u), w
 
     def view_matrix(self) -> np.ndarray:
         """Return the (4, 4) world-to-camera matrix (camera at the origin, looking down -Z).
@@ -244,5 +244,7 @@ def _projection(projection: Any, view_height: Any) -> dict[str, Any]:
         return {"projection": projection, "view_height": None}
     if view_height is None:
         raise ValueError("projection='orthographic' needs view_height (world units), got None")
-    return {"projection": projection,
-            "view_height": v.real(view_height, "view_height", positive=True)}
+    return {
+        "projection": projection,
+        "view_height": v.real(view_height, "view_height", positive=True),
+    }
