@@ -105,6 +105,7 @@ with the file's path:
 from __future__ import annotations
 
 import importlib.util
+import io
 import json
 import math
 import re
@@ -267,11 +268,12 @@ def _read_checked(path: Path) -> tuple[list[Mesh], dict | None]:
     suffix = path.suffix.lower()
     if suffix == ".stl":  # one mesh, no materials: pixelpath's own reader merges the soup
         return [Mesh.load(path, _plain_material())], None
-    gltf = _checked_gltf(path) if suffix in (".glb", ".gltf") else None
+    data = path.read_bytes() if suffix in (".glb", ".gltf") else None  # read once, for both
+    gltf = _checked_gltf(path, data) if data is not None else None
     resolver = _confined_resolver(path)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # trimesh's own warnings say nothing about our file
-        parts = _trimesh_parts(path, resolver, gltf is not None)
+        parts = _trimesh_parts(path, resolver, data)
     if resolver.refused:
         raise ValueError(f"{path}: refers to {resolver.refused[0]!r}, outside the file's folder")
     for name in resolver.missing:
@@ -295,9 +297,11 @@ class _Part(NamedTuple):
     colors: Any  # per-vertex colours as trimesh keeps them, or None
 
 
-def _trimesh_parts(path: Path, resolver: Any, is_gltf: bool) -> list[_Part]:
+def _trimesh_parts(path: Path, resolver: Any, gltf_data: bytes | None) -> list[_Part]:
     try:
-        return _gltf_parts(path, resolver) if is_gltf else _scene_parts(path, resolver)
+        if gltf_data is not None:
+            return _gltf_parts(path, resolver, gltf_data)
+        return _scene_parts(path, resolver)
     except Exception as exc:  # trimesh's parsers raise anything on a broken file
         raise ValueError(
             f"{path}: trimesh could not read this file ({type(exc).__name__}: {exc})"
@@ -326,7 +330,7 @@ def _scene_parts(path: Path, resolver: Any) -> list[_Part]:
     return parts
 
 
-def _gltf_parts(path: Path, resolver: Any) -> list[_Part]:
+def _gltf_parts(path: Path, resolver: Any, data: bytes) -> list[_Part]:
     """Return the parts of a glTF file, from what trimesh's glTF reader returns.
 
     The reader's own output (arrays, visuals and the node graph's edges) is used as it is:
@@ -336,8 +340,7 @@ def _gltf_parts(path: Path, resolver: Any) -> list[_Part]:
     from trimesh.visual.color import to_rgba
 
     reader = load_glb if path.suffix.lower() == ".glb" else load_gltf
-    with open(path, "rb") as file:
-        loaded = reader(file_obj=file, resolver=resolver)
+    loaded = reader(file_obj=io.BytesIO(data), resolver=resolver)
     geometries = loaded["geometry"]
     parent: dict[str, tuple[str, np.ndarray]] = {}
     named: dict[str, str] = {}
@@ -435,9 +438,8 @@ def _outside(uri: str, folder: Path) -> bool:
 # --- the glTF JSON, checked before trimesh reads anything ------------------------------------
 
 
-def _checked_gltf(path: Path) -> dict:
-    """Return the glTF JSON of ``path`` after the URI, extension and size checks."""
-    data = path.read_bytes()
+def _checked_gltf(path: Path, data: bytes) -> dict:
+    """Return the glTF JSON in ``data``, the bytes of ``path``, after the URI and size checks."""
     header, binary = _glb_parts(path, data) if path.suffix.lower() == ".glb" else (data, None)
     try:
         gltf = json.loads(header)
