@@ -144,7 +144,11 @@ def test_the_alpha_tested_is_material_x_vertex_x_texture(quad, drawn, method):
     assert image.object_id[16, 16] == (0 if drawn else 1)
 
 
-@pytest.mark.parametrize("method", EVERY_METHOD)
+# BSP splits the 5120-triangle icosphere: a minute or more without Numba's JIT, so the fast
+# passes leave it to the main one (which runs every test).
+@pytest.mark.parametrize(
+    "method", [pytest.param(m, marks=pytest.mark.slow) if m == "bsp" else m for m in EVERY_METHOD]
+)
 def test_untextured_objects_below_their_cutoff_vanish(method):
     # A sphere's alpha is its material's: below the cutoff it is cut away everywhere (the ray
     # tracer's analytic sphere as the rasterizer's icosphere), above it it is drawn.
