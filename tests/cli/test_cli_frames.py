@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import numpy as np
 import pytest
 
 import pixelpath as pp
@@ -16,8 +17,10 @@ def _showcase():
 
 
 def _expected(frame, folder):
-    pp.render(_showcase().at_frame(frame)).save(folder / "expected.png")
-    return (folder / "expected.png").read_bytes()
+    """The file of ``frame`` as Image.save writes it, at the frames' PNG level (1)."""
+    from pixelpath.frames.work import encode
+
+    return encode(pp.render(_showcase().at_frame(frame)), ".png", None, png_level=1)
 
 
 def test_showcase_turntable_frames_out_of_the_box(tmp_path, monkeypatch):
@@ -48,14 +51,33 @@ def test_a_plain_render_draws_frame_zero(tmp_path):
     assert main(["render", "showcase", "-o", str(tmp_path / "plain.png"), *SIZE, "-q"]) == 0
     assert main(["render", "showcase", "--frames", "0", "-o", str(tmp_path / "f0.png"),
                  *SIZE, "-q"]) == 0
-    assert (tmp_path / "plain.png").read_bytes() == (tmp_path / "f0.png").read_bytes()
+    plain, frame = (pp.io.read_image(tmp_path / name) for name in ("plain.png", "f0.png"))
+    assert np.array_equal(plain, frame)  # the same pixels, by another PNG encoder
+
+
+def test_png_level_sets_the_compression_of_frames_and_of_a_single_image(tmp_path):
+    for level in ("0", "9"):
+        assert main(["render", "showcase", "--frames", "0,1", "-o", str(tmp_path / "f{frame}.png"),
+                     *SIZE, "-q", "--png-level", level]) == 0
+        assert main(["render", "showcase", "-o", str(tmp_path / f"one{level}.png"), *SIZE, "-q",
+                     "--png-level", level]) == 0
+        assert (tmp_path / f"one{level}.png").read_bytes() == (tmp_path / "f0.png").read_bytes()
+    assert len((tmp_path / "one0.png").read_bytes()) > 3 * 40 * 25  # stored, not compressed
+    assert len((tmp_path / "one9.png").read_bytes()) < 3 * 40 * 25
+
+
+@pytest.mark.parametrize("level", ["10", "-1", "fast"])
+def test_a_bad_png_level_is_refused(level, capsys):
+    with pytest.raises(SystemExit):
+        main(["render", "showcase", "-o", "x.png", "--png-level", level])
+    assert "--png-level" in capsys.readouterr().err
 
 
 def test_tiles_on_one_worker_equal_the_plain_render(tmp_path):
     assert main(["render", "showcase", "-o", str(tmp_path / "tiled.png"), "--tiles", "3x2",
-                 "--workers", "1", "--ssaa", "2", *SIZE, "-q"]) == 0
+                 "--workers", "1", "--ssaa", "2", *SIZE, "-q", "--png-level", "1"]) == 0
     assert main(["render", "showcase", "-o", str(tmp_path / "plain.png"), "--ssaa", "2",
-                 *SIZE, "-q"]) == 0
+                 *SIZE, "-q", "--png-level", "1"]) == 0
     assert (tmp_path / "tiled.png").read_bytes() == (tmp_path / "plain.png").read_bytes()
 
 

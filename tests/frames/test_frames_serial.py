@@ -30,7 +30,8 @@ def test_frames_equal_render_of_each_frame():
 
 def test_files_are_the_bytes_image_save_writes(tmp_path):
     scene = animated_scene()
-    paths = pp.render_frames(scene, [0, 3], out=tmp_path / "out" / "f_{frame:02d}.png")
+    out = tmp_path / "out" / "f_{frame:02d}.png"
+    paths = pp.render_frames(scene, [0, 3], out=out, png_level=None)  # Pillow's
     assert [path.name for path in paths] == ["f_00.png", "f_03.png"]
     for frame, path in zip([0, 3], paths, strict=True):
         pp.render(scene.at_frame(frame)).save(tmp_path / "expected.png")
@@ -47,7 +48,7 @@ def test_tiles_stitch_to_the_untiled_frame(method, tmp_path):
     assert np.array_equal(tiled.depth, whole.depth)
     assert np.array_equal(tiled.object_id, whole.object_id)
     path = pp.render_frames(
-        scene, [4], out=tmp_path / "t.png", method=method, ssaa=2, tiles=(3, 4)
+        scene, [4], out=tmp_path / "t.png", method=method, ssaa=2, tiles=(3, 4), png_level=None
     )[0]
     whole.save(tmp_path / "w.png")
     assert path.read_bytes() == (tmp_path / "w.png").read_bytes()

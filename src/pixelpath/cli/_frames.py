@@ -58,10 +58,33 @@ def add_frame_options(parser: argparse.ArgumentParser) -> None:
         help="send the work to the Dask scheduler at this address (tcp://host:8786)",
     )
     group.add_argument(
+        "--png-level",
+        type=parse_png_level,
+        metavar="0-9",
+        help="zlib compression of PNG files, by pixelpath's PNG encoder: 0 none, 1 fastest "
+        "(the default for --frames: at 640x400 3 ms a frame, files 40%% larger than a single "
+        "image's), 6 (11 ms, 10%% larger), 9 smallest and slowest; without it a single image "
+        "is written by Pillow's encoder (32 ms)",
+    )
+    group.add_argument(
         "--resume",
         action="store_true",
         help="skip frames whose file is already complete (each is read back to make sure)",
     )
+
+
+def parse_png_level(text: str) -> int:
+    """Return ``--png-level``: an int from 0 to 9.
+
+    Examples
+    --------
+    >>> from pixelpath.cli._frames import parse_png_level
+    >>> parse_png_level("1")
+    1
+    """
+    if not text.strip().isdigit() or not 0 <= int(text) <= 9:
+        raise argparse.ArgumentTypeError(f"must be a whole number from 0 to 9, got {text!r}")
+    return int(text)
 
 
 def wants_frames(args: argparse.Namespace) -> bool:
@@ -73,6 +96,7 @@ def wants_frames(args: argparse.Namespace) -> bool:
 def run_frames(args: argparse.Namespace, scene: Any) -> int:
     """Render the requested frames (or tiles) and write them; return the exit status."""
     from pixelpath.frames import parse_frames, parse_tiles, plan_frames, run_plan
+    from pixelpath.frames.plan import FRAMES_PNG_LEVEL
 
     if args.explain:
         raise CommandError("--explain describes one image; leave out the frame options")
@@ -89,6 +113,7 @@ def run_frames(args: argparse.Namespace, scene: Any) -> int:
         tiles=tiles,
         resume=args.resume,
         gamma=args.gamma,
+        png_level=FRAMES_PNG_LEVEL if args.png_level is None else args.png_level,
         options=render_options(args),
     )
     start = time.perf_counter()

@@ -263,8 +263,15 @@ def render_to_file(
             fresnel=getattr(args, "fresnel", False),
         )
     image, report = result if explain else (result, None)
+    alpha = getattr(args, "transparent", False)
     try:
-        image.save(output, gamma=args.gamma, alpha=getattr(args, "transparent", False))
+        if getattr(args, "png_level", None) is None:
+            image.save(output, gamma=args.gamma, alpha=alpha)
+        else:  # the bytes Image.save writes, at another level of compression
+            from pixelpath.frames.work import encode
+            from pixelpath.io.images import write_bytes
+
+            write_bytes(output, encode(image, output.suffix, args.gamma, alpha, args.png_level))
     except ValueError as exc:  # an image format without alpha
         raise CommandError(str(exc)) from None
     for path in write_aovs(image, output, getattr(args, "aov", ())):

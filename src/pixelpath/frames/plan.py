@@ -23,6 +23,12 @@ from pixelpath.scene import Scene
 
 Region = tuple[int, int, int, int]
 
+# PNG compression of many frames: pixelpath's encoder at zlib's level 1 writes a 640×400
+# showcase frame in 3 ms (87 kB) where Image.save (Pillow's encoder, level 6) takes 32 ms
+# (61 kB): with encoding as long as rendering, the encoder sets the frame rate. A higher level
+# (``png_level=6``, ``--png-level 6``: 11 ms, 66 kB) makes files a quarter smaller.
+FRAMES_PNG_LEVEL = 1
+
 # The render() options a frame may use; region, explain and progress belong to the run.
 RENDER_OPTIONS = (
     "method",
@@ -57,6 +63,9 @@ class FramePlan:
         Keyword arguments for :func:`pixelpath.render`.
     gamma : float, "srgb", "linear" or None
         Display encoding of the files (None: the scene's ``encoding``).
+    png_level : int or None
+        zlib compression level of PNG files, 0 to 9, for pixelpath's PNG encoder
+        (:func:`pixelpath.io.images.encode_png`); None for Pillow's, as ``Image.save``.
     """
 
     scene: Scene
@@ -66,6 +75,7 @@ class FramePlan:
     regions: tuple[Region, ...]
     options: dict[str, Any]
     gamma: float | str | None = None
+    png_level: int | None = None
 
     @property
     def jobs(self) -> int:
@@ -87,6 +97,7 @@ def plan_frames(
     tiles: tuple[int, int] = (1, 1),
     resume: bool = False,
     gamma: float | None = None,
+    png_level: int | None = FRAMES_PNG_LEVEL,
     options: dict[str, Any] | None = None,
 ) -> FramePlan:
     """Check a multi-frame request and return its :class:`FramePlan`.
@@ -108,11 +119,14 @@ def plan_frames(
     >>> plan.todo, plan.paths[16].name, plan.regions
     ((0, 8, 16), 'spin_16.png', ((0, 0, 20, 30), (20, 0, 40, 30)))
     """
+    from pixelpath.io.images import png_level_of
+
     if not isinstance(scene, Scene):
         raise TypeError(f"scene must be a pixelpath Scene, got {type(scene).__name__}")
     chosen = frame_numbers(frames, scene)
     options = render_options(options or {})
     gamma = checked_gamma(gamma)
+    png_level = None if png_level is None else png_level_of(png_level)
     paths = None if out is None else output_paths(out, chosen)
     if resume and paths is None:
         raise ValueError("resume=True needs out= (frames complete on disk are skipped)")
@@ -127,7 +141,7 @@ def plan_frames(
             for frame in chosen
             if not frame_is_complete(paths[frame], camera.width, camera.height)
         )
-    return FramePlan(scene, chosen, todo, paths, regions, options, gamma)
+    return FramePlan(scene, chosen, todo, paths, regions, options, gamma, png_level)
 
 
 def parse_frames(text: str) -> list[int] | None:
@@ -279,9 +293,7 @@ def tile_regions(width: int, height: int, tiles: Any) -> tuple[Region, ...]:
     xs = np.linspace(0, width, int(columns) + 1).round().astype(int).tolist()
     ys = np.linspace(0, height, int(rows) + 1).round().astype(int).tolist()
     return tuple(
-        (x0, y0, x1, y1)
-        for y0, y1 in itertools.pairwise(ys)
-        for x0, x1 in itertools.pairwise(xs)
+        (x0, y0, x1, y1) for y0, y1 in itertools.pairwise(ys) for x0, x1 in itertools.pairwise(xs)
     )
 
 

@@ -41,19 +41,27 @@ def render_frame(
 
 
 def frame_file(
-    scene: Scene, frame: int, options: dict[str, Any], suffix: str, gamma: float | None
+    scene: Scene,
+    frame: int,
+    options: dict[str, Any],
+    suffix: str,
+    gamma: float | None,
+    png_level: int | None = None,
 ) -> bytes:
     """Return the bytes of ``frame``'s image file (format by ``suffix``, e.g. ``".png"``).
+
+    ``png_level`` is the PNG compression level (0-9) of pixelpath's PNG encoder; default
+    Pillow's encoder, as :func:`pixelpath.io.images.encode_image`.
 
     Examples
     --------
     >>> import pixelpath as pp
     >>> from pixelpath.frames import frame_file
     >>> scene = pp.Scene(pp.Camera(eye=(0, 0, 5), target=(0, 0, 0), width=8, height=6))
-    >>> frame_file(scene, 0, {}, ".png", None)[1:4]
+    >>> frame_file(scene, 0, {}, ".png", None, png_level=1)[1:4]
     b'PNG'
     """
-    return encode(render_frame(scene, frame, options), suffix, gamma)
+    return encode(render_frame(scene, frame, options), suffix, gamma, png_level=png_level)
 
 
 def in_turn(function: Callable, scene: Scene, calls: Sequence[tuple]) -> list:
@@ -76,6 +84,8 @@ def in_turn(function: Callable, scene: Scene, calls: Sequence[tuple]) -> list:
 def warm_up(options: dict[str, Any]) -> None:
     """Render a tiny scene of every kind of object with ``options``, compiling what they need.
 
+    The kernels that encode files' pixels (:func:`pixelpath.io.images.to_uint8`) too.
+
     Numba compiles a kernel for the types of its arguments, not their values, so this compiles
     (or loads from the disk cache) every kernel that frames rendered with ``options`` call.
 
@@ -84,6 +94,7 @@ def warm_up(options: dict[str, Any]) -> None:
     >>> from pixelpath.frames.work import warm_up
     >>> warm_up({"shading": "gouraud"})
     """
+    from pixelpath.io.images import to_uint8
     from pixelpath.renderer import render
     from pixelpath.scene import Box, Camera, DirectionalLight, Plane, PointLight, Sphere
     from pixelpath.scene.procedural import icosphere
@@ -99,6 +110,8 @@ def warm_up(options: dict[str, Any]) -> None:
         [PointLight((2, 3, 4)), DirectionalLight((-1, -1, -1))],
     )
     render(scene, **options)
+    to_uint8(np.zeros((1, 1, 3), np.float32))  # and the 8-bit encoding of the files
+    to_uint8(np.zeros((1, 1, 3), np.float32), "srgb")
 
 
 def view_files(job: ViewJob, index: int) -> None:
@@ -120,14 +133,34 @@ def view_files(job: ViewJob, index: int) -> None:
     job.output.write(index, job.render(index))
 
 
-def encode(image: Image, suffix: str, gamma: float | str | None, alpha: bool = False) -> bytes:
-    """Return ``image`` encoded as ``Image.save(path, gamma, alpha)`` would write it."""
+def encode(
+    image: Image,
+    suffix: str,
+    gamma: float | str | None,
+    alpha: bool = False,
+    png_level: int | None = None,
+) -> bytes:
+    """Return ``image`` encoded as ``Image.save(path, gamma, alpha)`` would write it.
+
+    ``png_level`` (0-9) encodes a PNG with pixelpath's encoder at that zlib level, as
+    :func:`pixelpath.io.images.encode_image`; by default Pillow's, as ``Image.save``.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from pixelpath import Image
+    >>> from pixelpath.frames.work import encode
+    >>> encode(Image(np.zeros((2, 2, 3))), ".png", None, png_level=1)[1:4]
+    b'PNG'
+    """
     from pixelpath.io.images import encode_image
 
     gamma = image.encoding if gamma is None else gamma
     if not alpha:
-        return encode_image(image.rgb, suffix, gamma=gamma)
-    return encode_image(image.foreground(), suffix, gamma=gamma, alpha=image.alpha)
+        return encode_image(image.rgb, suffix, gamma=gamma, png_level=png_level)
+    return encode_image(
+        image.foreground(), suffix, gamma=gamma, alpha=image.alpha, png_level=png_level
+    )
 
 
 def stitch(tiles: Sequence[Image], regions: Sequence[tuple[int, int, int, int]]) -> Image:
@@ -158,5 +191,12 @@ def stitch(tiles: Sequence[Image], regions: Sequence[tuple[int, int, int, int]])
         alpha[y0:y1, x0:x1] = tile.alpha
         normal[y0:y1, x0:x1] = tile.normal
     first = tiles[0]
-    return Image(rgb, depth, object_id, alpha=alpha, normal=normal,
-                 background=first._background, encoding=first.encoding)
+    return Image(
+        rgb,
+        depth,
+        object_id,
+        alpha=alpha,
+        normal=normal,
+        background=first._background,
+        encoding=first.encoding,
+    )
