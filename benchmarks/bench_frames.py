@@ -1,9 +1,14 @@
 """Frames per second of the showcase turntable: one process beside local Dask clusters.
 
-Renders frames of the bundled showcase's turntable (640×400, z-buffer, Phong shading) to PNG
-files three ways, in the same run:
+First, where one frame's time goes, each step timed alone over ``--breakdown`` frames (30;
+medians): render (``render_frame``), convert (``to_uint8``, floats to 8 bits), encode (the
+PNG file's bytes, at ``--png-level``, and Pillow's encoder at its default level as
+``Image.save`` writes), write (the atomic file write). Then renders frames of the bundled
+showcase's turntable (640×400, z-buffer, Phong shading) to PNG files (``--png-level``, default
+the frames' 1) three ways, in the same run (``--runs serial`` for the first alone):
 
-- serially in this process, Numba's threads on every core (``render_frames(..., client=None)``);
+- serially in this process, Numba's threads on every core (``render_frames(..., client=None)``),
+  while writer threads encode and write the frames already rendered;
 - on a local Dask cluster of 1 worker process and of 2 worker processes, one Numba thread each
   (workers warmed and the scene scattered before the clock starts: that cost is printed apart);
 
@@ -19,7 +24,7 @@ its workers warm up): run it with an empty compile cache, where an installed pac
 the kernels it was built with (``PIXELPATH_PRECOMPILED=0`` compiles them instead)::
 
     python benchmarks/bench_frames.py [--frames 120] [--size 640x400] [--rounds 3]
-        [--empty-tasks 2000]
+        [--empty-tasks 2000] [--png-level 1] [--breakdown 30] [--runs serial]
     PIXELPATH_CACHE_DIR=$(mktemp -d) python benchmarks/bench_frames.py --cold
     PIXELPATH_PRECOMPILED=0 PIXELPATH_CACHE_DIR=$(mktemp -d) \\
         python benchmarks/bench_frames.py --cold
@@ -41,13 +46,64 @@ def showcase(size: str):
     return load_scene_sized("showcase", size)
 
 
+PNG_LEVEL = 1  # set from --png-level
+
+
 def serial(scene, frames: range, folder: Path) -> float:
     import pixelpath as pp
 
-    pp.render_frames(scene, [0], out=folder / "warm_{frame}.png")  # compile/load kernels here
+    out = folder / "warm_{frame}.png"
+    pp.render_frames(scene, [0], out=out, png_level=PNG_LEVEL)  # compile/load kernels here
     start = time.perf_counter()
-    pp.render_frames(scene, frames, out=folder / "serial_{frame:03d}.png")
+    pp.render_frames(scene, frames, out=folder / "serial_{frame:03d}.png", png_level=PNG_LEVEL)
     return time.perf_counter() - start
+
+
+def breakdown(scene, count: int, folder: Path) -> None:
+    """Print the median milliseconds of each step of a frame, each timed alone."""
+    import io
+
+    from PIL import Image as PILImage
+
+    from pixelpath.frames.work import render_frame
+    from pixelpath.io.images import encode_png, to_uint8, write_bytes
+
+    def pillow(pixels):
+        buffer = io.BytesIO()
+        PILImage.fromarray(pixels).save(buffer, format="PNG")
+        return buffer.getvalue()
+
+    steps: dict[str, list[float]] = {}
+    sizes: dict[str, list[int]] = {}
+
+    def timed(name, function, *args):
+        start = time.perf_counter()
+        result = function(*args)
+        steps.setdefault(name, []).append((time.perf_counter() - start) * 1e3)
+        return result
+
+    render_frame(scene, 0, {})  # compile/load kernels here
+    to_uint8(render_frame(scene, 0, {}).rgb)
+    level = PNG_LEVEL
+    for frame in range(count):
+        image = timed("render", render_frame, scene, frame, {})
+        pixels = timed("convert", to_uint8, image.rgb, image.encoding)
+        data = timed("encode", encode_png, pixels, level) if level is not None else None
+        pillows = timed("encode, Pillow (Image.save)", pillow, pixels)
+        timed("write", write_bytes, folder / f"b_{frame:03d}.png", data or pillows)
+        sizes.setdefault("encode", []).append(len(data or pillows))
+        sizes.setdefault("encode, Pillow (Image.save)", []).append(len(pillows))
+    print(f"one frame's steps, each timed alone (medians of {count} frames):")
+    labels = {"encode": f"encode, PNG level {level}"} if level is not None else {}
+    for name, times in steps.items():
+        size = f"{statistics.median(sizes[name]) / 1e3:7.1f} kB" if name in sizes else ""
+        print(f"  {labels.get(name, name):32} {statistics.median(times):7.2f} ms {size}")
+    steps.pop("encode, Pillow (Image.save)")
+    total = sum(statistics.median(times) for times in steps.values())
+    print(
+        f"  {'render + convert + encode + write':32} {total:7.2f} ms "
+        f"({1e3 / total:.1f} frames/s one after another, on one thread but the render's)"
+    )
 
 
 def on_cluster(scene, frames: range, folder: Path, workers: int) -> tuple[float, float]:
@@ -59,9 +115,10 @@ def on_cluster(scene, frames: range, folder: Path, workers: int) -> tuple[float,
     with local_client(workers, numba_threads=1) as client:
         warm_workers(client, {})
         ready = time.perf_counter() - start
-        pp.render_frames(scene, [0], client, out=folder / "warm_{frame}.png")
+        out = folder / f"w{workers}_{{frame:03d}}.png"
+        pp.render_frames(scene, [0], client, out=folder / "warm_{frame}.png", png_level=PNG_LEVEL)
         start = time.perf_counter()
-        pp.render_frames(scene, frames, client, out=folder / f"w{workers}_{{frame:03d}}.png")
+        pp.render_frames(scene, frames, client, out=out, png_level=PNG_LEVEL)
         return ready, time.perf_counter() - start
 
 
@@ -149,14 +206,33 @@ def main() -> None:
     parser.add_argument("--rounds", type=int, default=3, help="rounds of all three runs")
     parser.add_argument("--empty-tasks", type=int, default=2000)
     parser.add_argument("--cold", action="store_true", help="time a cold cluster instead")
+    parser.add_argument(
+        "--png-level", default="1", help="PNG compression 0-9, or 'pillow' for Image.save's"
+    )
+    parser.add_argument("--breakdown", type=int, default=30, help="frames timed step by step")
+    parser.add_argument("--runs", choices=("all", "serial"), default="all")
     args = parser.parse_args()
+    global PNG_LEVEL
+    PNG_LEVEL = None if args.png_level == "pillow" else int(args.png_level)
     scene = showcase(args.size)
     if args.cold:
         cold(scene)
         return
     frames = range(args.frames)
     cores = len(os.sched_getaffinity(0))
-    print(f"showcase turntable, {args.frames} frames at {args.size}, PNG files, {cores} cores")
+    print(
+        f"showcase turntable, {args.frames} frames at {args.size}, PNG files "
+        f"(level {args.png_level}), {cores} cores"
+    )
+    if args.breakdown:
+        with tempfile.TemporaryDirectory() as folder:
+            breakdown(scene, args.breakdown, Path(folder))
+    if args.runs == "serial":
+        with tempfile.TemporaryDirectory() as folder:
+            runs = [args.frames / serial(scene, frames, Path(folder)) for _ in range(args.rounds)]
+        rates = ", ".join(f"{rate:.1f}" for rate in runs)
+        print(f"serial, frames/s: median {statistics.median(runs):.1f} of {rates}")
+        return
     rounds = []
     with tempfile.TemporaryDirectory() as folder:
         for order in rotations(RUNS, args.rounds):
