@@ -81,10 +81,19 @@ def _neighbours(x, size, wrap):
     """Return the texels (i0, i1) on either side of texel coordinate x, and x's fraction past i0.
 
     ``repeat``, by far the commonest, wraps in floating point: an integer modulo (Python's,
-    for negative indices) per texel was most of a bilinear lookup's time.
+    for negative indices) per texel was most of a bilinear lookup's time. A side that is a
+    power of two (every level of a power-of-two picture) wraps with a mask instead, which
+    gives the same texels: there the float quotient by ``size`` is exact, so the float
+    wrap is the true modulo, as the mask is (two's complement), and a NaN or huge ``x``, whose
+    integer part is the same out-of-range value either way, lands on texel 0 both ways. It
+    saves the division and second rounding that were a third of a lookup's time.
     """
     floor_x = math.floor(x)
     fraction = x - floor_x
+    if wrap == REPEAT and (size & (size - 1)) == 0:
+        mask = size - 1
+        i0 = np.intp(floor_x) & mask
+        return i0, (i0 + 1) & mask, fraction
     if wrap == REPEAT:
         # Clamped as well: far from 0 the float quotient may round across a period's edge.
         i0 = min(max(np.intp(floor_x - size * math.floor(floor_x / size)), 0), size - 1)
