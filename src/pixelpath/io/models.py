@@ -1,14 +1,18 @@
 """Model files (glTF/GLB, OBJ+MTL, PLY, STL) read through trimesh into a ready-to-render Scene.
 
 trimesh does all the parsing; this module checks the file before trimesh sees it, walks the
-scene graph trimesh builds and maps what it finds onto pixelpath's scene model.
+node graph trimesh reads and maps what it finds onto pixelpath's scene model. For glTF it takes
+the arrays, materials and node edges straight from trimesh's glTF reader (building trimesh's
+mesh and scene objects from them would double the time to load), composing each node's world
+transform as trimesh's scene graph does, to the bit.
 
 What a model file gives (:func:`read_model`)
 --------------------------------------------
 - **Objects**: one :class:`~pixelpath.scene.Mesh` per glTF node and primitive (per material
   group for OBJ), named after the glTF node, else its mesh, with the node's world transform
-  applied. The scene graph is walked node by node (``scene.graph.nodes_geometry``), never
-  through ``Scene.dump()``, which drops glTF ``COLOR_0`` stored beside a material.
+  applied. The graph is walked node by node (in the order of trimesh's
+  ``scene.graph.nodes_geometry``), never through ``Scene.dump()``, which drops glTF
+  ``COLOR_0`` stored beside a material.
 - **Texture coordinates**: pixelpath's uv have v up, (0, 0) the bottom-left of the image.
   trimesh already flips glTF's v when it loads a file (OBJ's is v up already), so its uv are
   used as they are (the tests pin this with a 2 x 2 texture in a hand-written glTF).
