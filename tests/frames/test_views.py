@@ -232,3 +232,47 @@ def test_the_views_page_s_loader_example_lands_on_the_surface(tmp_path, monkeypa
     mesh = trimesh.load(DUCK, force="mesh")
     distance = abs(trimesh.proximity.signed_distance(mesh, [names["point"]])[0])
     assert distance < 1e-3 * mesh.scale  # the point lies on the model's surface
+
+
+def test_png_level_sets_the_pictures_compression_and_keeps_their_pixels(tmp_path):
+    scene = pp.Scene(
+        pp.Camera(eye=(0, 0, 5), target=(0, 0, 0), width=40, height=30),
+        [pp.Sphere((0, 0, 0), 1.0)],
+        [pp.PointLight((2, 3, 4))],
+    )
+    folders = {}
+    for level in (0, 1, 9, None):
+        folders[level] = tmp_path / f"level{level}"
+        pp.render_views(scene, 3, folders[level], "mask", png_level=level, transparent=True)
+    sizes = {level: len((folder / "images" / "view_0001.png").read_bytes())
+             for level, folder in folders.items()}
+    assert sizes[0] > 40 * 30 * 4 > sizes[1] >= sizes[9]
+    for folder in folders.values():
+        for name in ("images/view_0002.png", "masks/view_0002.png"):
+            assert np.array_equal(_pixels(folder / name), _pixels(folders[None] / name))
+    assert not list(tmp_path.rglob("*.tmp"))
+    with pytest.raises(ValueError, match="png_level must be an int from 0 to 9"):
+        pp.render_views(scene, 3, tmp_path / "bad", png_level=10)
+
+
+def test_a_failed_write_of_a_view_reaches_the_caller(tmp_path, monkeypatch):
+    from pixelpath.frames.views import ViewOutput
+
+    def broken(self, image, kind):
+        raise OSError("disk full")
+
+    monkeypatch.setattr(ViewOutput, "encode", broken)
+    scene = pp.Scene(pp.Camera(eye=(0, 0, 5), target=(0, 0, 0), width=8, height=6),
+                     [pp.Sphere((0, 0, 0), 1.0)])
+    with pytest.raises(OSError, match="disk full"):
+        pp.render_views(scene, 4, tmp_path / "views")
+    assert not (tmp_path / "views" / "transforms.json").exists()
+
+
+def test_views_png_level_option(tmp_path):
+    folder = tmp_path / "duck"
+    assert main(["views", str(DUCK), "-o", str(folder), "-n", "2", "--size", "32x24",
+                 "--png-level", "9", "-q"]) == 0
+    pp.render_views(DUCK, 2, tmp_path / "api", size=(32, 24), png_level=9)
+    assert _files(folder)["images/view_0001.png"] == _files(tmp_path / "api")[
+        "images/view_0001.png"]

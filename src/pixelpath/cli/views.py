@@ -8,13 +8,14 @@ import time
 from typing import Any
 
 from pixelpath.cli._common import CommandError, add_command, compile_kernels, console, progress
-from pixelpath.cli._frames import cluster_for, render_options, since
+from pixelpath.cli._frames import cluster_for, parse_png_level, render_options, since
 from pixelpath.cli.render import (
     add_shading_options,
     parse_aovs_option,
     parse_size,
     scene_path,
 )
+from pixelpath.frames.plan import FRAMES_PNG_LEVEL
 from pixelpath.frames.poses import LAYOUTS
 from pixelpath.frames.views import VIEW_AOVS
 
@@ -80,6 +81,14 @@ def register(subparsers: Any) -> None:
     parser.add_argument(
         "--transparent", action="store_true", help="RGBA images, the background transparent"
     )
+    parser.add_argument(
+        "--png-level",
+        type=parse_png_level,
+        default=FRAMES_PNG_LEVEL,
+        metavar="0-9",
+        help="zlib compression of the PNG files: 0 none, 1 fastest (default: at 640x400 3 ms "
+        "a picture, files 40%% larger than Pillow's default), 6 (11 ms, 10%% larger), 9 smallest",
+    )
     cluster = parser.add_argument_group("clusters (Dask) and reruns")
     cluster.add_argument(
         "--workers", type=int, metavar="N", help="a local Dask cluster of N worker processes"
@@ -124,6 +133,7 @@ def run(args: argparse.Namespace) -> int:
         fov=args.fov,
         transparent=args.transparent,
         gamma=args.gamma,
+        png_level=args.png_level,
         resume=args.resume,
         overwrite=args.overwrite,
         options=render_options(args),

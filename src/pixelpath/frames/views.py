@@ -31,6 +31,7 @@ once every view is on disk: a folder holding ``transforms.json`` holds a whole d
 from __future__ import annotations
 
 import dataclasses
+import functools
 import io
 import json
 import math
@@ -44,10 +45,17 @@ from typing import Any
 import numpy as np
 
 from pixelpath.frames import poses as _poses
-from pixelpath.frames.plan import check_tile_size, checked_gamma, render_options
+from pixelpath.frames.plan import (
+    FRAMES_PNG_LEVEL,
+    check_tile_size,
+    checked_gamma,
+    render_options,
+)
 from pixelpath.frames.poses import ViewCameras
+from pixelpath.frames.writer import FrameWriter
 from pixelpath.image import Image
 from pixelpath.io.aovs import parse_aovs
+from pixelpath.io.images import png_level_of
 from pixelpath.scene import Camera, Scene
 
 __all__ = [
@@ -96,6 +104,8 @@ class ViewOutput:
         RGBA pictures whose alpha is the coverage.
     gamma : float, "srgb", "linear" or None
         Display encoding of the pictures (None: the scene's ``encoding``).
+    png_level : int or None
+        zlib level of the pictures' PNG files with pixelpath's encoder (None: Pillow's).
     """
 
     folder: str
@@ -103,6 +113,7 @@ class ViewOutput:
     aovs: tuple[str, ...] = ()
     transparent: bool = False
     gamma: float | str | None = None
+    png_level: int | None = None
 
     def relative(self, index: int, kind: str) -> str:
         """Return the path of view ``index``'s ``kind`` file, relative to the folder.
@@ -133,13 +144,22 @@ class ViewOutput:
             path.parent.mkdir(parents=True, exist_ok=True)
             write_bytes(path, self.encode(image, kind))
 
+    def submit(self, index: int, image: Image, writer: FrameWriter) -> None:
+        """Hand view ``index``'s files to ``writer``'s threads, to encode and write them."""
+        for kind in self.kinds():
+            path = self.path(index, kind)
+            path.parent.mkdir(parents=True, exist_ok=True)
+            writer.submit(path, functools.partial(self.encode, image, kind))
+
     def encode(self, image: Image, kind: str) -> bytes:
         """Return the bytes of the ``kind`` file of ``image``."""
         from pixelpath.frames.work import encode
         from pixelpath.io.aovs import encode_aov
 
         if kind == "image":
-            return encode(image, ".png", self.gamma, alpha=self.transparent)
+            return encode(
+                image, ".png", self.gamma, alpha=self.transparent, png_level=self.png_level
+            )
         if kind == "depth":
             buffer = io.BytesIO()
             depth = image.depth
@@ -259,6 +279,7 @@ def render_views(
     fov: float | None = None,
     transparent: bool = False,
     gamma: float | str | None = None,
+    png_level: int | None = FRAMES_PNG_LEVEL,
     resume: bool = False,
     overwrite: bool = False,
     progress: Callable[[int], None] | None = None,
@@ -300,6 +321,10 @@ def render_views(
         RGBA pictures, the background transparent.
     gamma : float, "srgb" or "linear", optional
         Display encoding of the pictures (default: the scene's).
+    png_level : int or None
+        zlib compression level of the pictures, 0 to 9, with pixelpath's PNG encoder
+        (default 1, fast, as :func:`pixelpath.render_frames`); None for Pillow's encoder,
+        the bytes ``Image.save`` writes.
     resume : bool
         Keep the views already complete on disk (each file read back) and render the rest.
     overwrite : bool
@@ -335,9 +360,23 @@ def render_views(
     (32, 'depth/view_0001.npy')
     """
     plan = plan_views(
-        scene_or_path, n, out, aovs, layout=layout, seed=seed, elevation=elevation,
-        hemisphere=hemisphere, distance=distance, size=size, fov=fov, transparent=transparent,
-        gamma=gamma, resume=resume, overwrite=overwrite, options=options,
+        scene_or_path,
+        n,
+        out,
+        aovs,
+        layout=layout,
+        seed=seed,
+        elevation=elevation,
+        hemisphere=hemisphere,
+        distance=distance,
+        size=size,
+        fov=fov,
+        transparent=transparent,
+        gamma=gamma,
+        png_level=png_level,
+        resume=resume,
+        overwrite=overwrite,
+        options=options,
     )
     run_views(plan, client, progress)
     return plan.job.cameras.poses()
@@ -358,6 +397,7 @@ def plan_views(
     fov: float | None = None,
     transparent: bool = False,
     gamma: float | str | None = None,
+    png_level: int | None = FRAMES_PNG_LEVEL,
     resume: bool = False,
     overwrite: bool = False,
     options: dict[str, Any] | None = None,
@@ -378,7 +418,8 @@ def plan_views(
     )
     cameras = _poses.place_cameras(scene, directions, size, fov=fov, distance=distance)
     gamma = checked_gamma(gamma)
-    output = ViewOutput(os.fspath(out), len(cameras), chosen, bool(transparent), gamma)
+    png_level = None if png_level is None else png_level_of(png_level)
+    output = ViewOutput(os.fspath(out), len(cameras), chosen, bool(transparent), gamma, png_level)
     check_tile_size(((0, 0, *size),), options.get("ssaa", 1), "view", "ask for smaller views")
     job = ViewJob(scene, cameras, options, output)
     _check_render(job)
@@ -425,15 +466,36 @@ def run_views(
     """
     from pixelpath.frames import work
     from pixelpath.frames.run import run_tasks
-    from pixelpath.io.images import write_bytes
 
     folder = Path(plan.job.output.folder)
     _prepare(folder, plan)
+    if client is None:  # writer threads encode and write a view while the next renders
+        with FrameWriter() as writer:
+            tasks = [(work.render_view, index, 0, ()) for index in plan.todo]
+
+            def add(index: int, part: int, image: Image) -> None:
+                plan.job.output.submit(index, image, writer)
+
+            run_tasks(plan.job, plan.job.options, tasks, add, None, progress)
+        return _finish(folder, plan)
     tasks = [(work.view_files, index, 0, ()) for index in plan.todo]
     run_tasks(
-        plan.job, plan.job.options, tasks, _ignore, client, progress,
-        most_per_batch=MOST_VIEWS_PER_TASK, least_per_batch=_least_per_task(client, len(tasks)),
+        plan.job,
+        plan.job.options,
+        tasks,
+        _ignore,
+        client,
+        progress,
+        most_per_batch=MOST_VIEWS_PER_TASK,
+        least_per_batch=_least_per_task(client, len(tasks)),
     )
+    return _finish(folder, plan)
+
+
+def _finish(folder: Path, plan: ViewPlan) -> Path:
+    """Remove what dead workers left half-written; write ``transforms.json``; return its path."""
+    from pixelpath.io.images import write_bytes
+
     for leftover in _in_view_folders(folder, _HALF_WRITTEN):  # from a worker that died
         leftover.unlink(missing_ok=True)
     path = folder / "transforms.json"
