@@ -59,6 +59,30 @@ def serial(scene, frames: range, folder: Path) -> float:
     return time.perf_counter() - start
 
 
+def serial_only(scene, frames: range, rounds: int) -> None:
+    """Print the serial run's frames/s and process CPU per frame, with files and without."""
+    import pixelpath as pp
+
+    for label, out in (("PNG files", "serial_{frame:03d}.png"), ("no files (images kept)", None)):
+        rates, cpu = [], []
+        with tempfile.TemporaryDirectory() as folder:
+            for _ in range(rounds):
+                if out is None:
+                    start, used = time.perf_counter(), time.process_time()
+                    pp.render_frames(scene, frames)
+                    seconds = time.perf_counter() - start
+                else:
+                    used = time.process_time()
+                    seconds = serial(scene, frames, Path(folder))  # its warm-up frame counted
+                rates.append(len(frames) / seconds)
+                cpu.append((time.process_time() - used) / len(frames) * 1e3)
+        print(
+            f"serial, {label}: {statistics.median(rates):.1f} frames/s, "
+            f"{statistics.median(cpu):.1f} ms of CPU a frame (medians of "
+            f"{', '.join(f'{rate:.1f}' for rate in rates)} frames/s)"
+        )
+
+
 def breakdown(scene, count: int, folder: Path) -> None:
     """Print the median milliseconds of each step of a frame, each timed alone."""
     import io
@@ -228,10 +252,7 @@ def main() -> None:
         with tempfile.TemporaryDirectory() as folder:
             breakdown(scene, args.breakdown, Path(folder))
     if args.runs == "serial":
-        with tempfile.TemporaryDirectory() as folder:
-            runs = [args.frames / serial(scene, frames, Path(folder)) for _ in range(args.rounds)]
-        rates = ", ".join(f"{rate:.1f}" for rate in runs)
-        print(f"serial, frames/s: median {statistics.median(runs):.1f} of {rates}")
+        serial_only(scene, frames, args.rounds)
         return
     rounds = []
     with tempfile.TemporaryDirectory() as folder:
