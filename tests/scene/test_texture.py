@@ -370,3 +370,32 @@ def test_surface_tables_pack_each_texture_once():
                                         [0, 3, tk.BILINEAR, tk.MIRROR]]
     assert tables.objects.tolist() == [[0, 0], [1, 1], [-1, 0], [0, 0]]
     assert tables.decode[128] == pytest.approx(srgb_to_linear(128 / 255))
+
+
+def test_packed_texels_are_the_levels_and_shared_without_a_copy():
+    one = Texture(np.random.default_rng(3).integers(0, 256, (6, 5, 4), dtype=np.uint8))
+    two = Texture(np.random.default_rng(4).integers(0, 256, (2, 3, 3), dtype=np.uint8))
+    levels = [level.copy() for level in one.levels]
+    alone = surface_tables([Mesh(QUAD, [[0, 1, 2, 3]], Material(texture=one), uv=QUAD_UV)])
+    assert alone.texels is one._packed[0]  # one texture: its own packed words, no copy
+    assert not alone.texels.flags.writeable
+    both = surface_tables([Mesh(QUAD, [[0, 1, 2, 3]], Material(texture=t), uv=QUAD_UV)
+                           for t in (one, two)])
+    for texture, rows in ((one, both.levels[:4]), (two, both.levels[4:])):
+        for level, (first, width, height) in zip(texture.levels, rows.tolist(), strict=True):
+            words = both.texels[first:first + width * height].reshape(height, width)
+            channels = np.stack([(words >> shift) & 255 for shift in (0, 8, 16, 24)], axis=2)
+            assert np.array_equal(channels, level)
+    assert all(np.array_equal(a, b) for a, b in zip(levels, one.levels, strict=True))
+
+
+@pytest.mark.parametrize("size", [1, 2, 4, 512, 3, 6])
+def test_repeat_wrap_is_the_true_modulo(size):
+    # Powers of two wrap with a mask, other sides in floating point: both the true modulo
+    # for coordinates far beyond the picture and below it.
+    x = np.concatenate([np.linspace(-3000.3, 3000.7, 1001), [-1e15 - 0.5, 1e15 + 0.25]])
+    for value in x:
+        i0, i1, fraction = tk._neighbours(value, size, tk.REPEAT)
+        floor = int(np.floor(value))
+        assert (i0, i1) == (floor % size, (floor + 1) % size)
+        assert fraction == value - floor

@@ -3,8 +3,9 @@
 A scene's textures are packed by :func:`pixelpath.scene.texture.surface_tables` into one
 :class:`SurfaceTables` record:
 
-* ``texels`` (N, 4) uint8: every mip level of every texture, rows of texels one after the
-  other, colour sRGB-encoded, alpha linear;
+* ``texels`` (N,) uint32: every mip level of every texture, rows of texels one after the
+  other, one word a texel whose bytes, lowest first, are its red, green, blue (sRGB-encoded)
+  and alpha (linear): one load a texel where four bytes cost three or four;
 * ``levels`` (K, 3) intp: first texel, width and height of each level;
 * ``textures`` (M, 4) intp: first level, number of levels, filter and wrap of each texture;
 * ``objects`` (O, 2) intp: per scene object, its texture (-1 for none, or when it has no
@@ -68,12 +69,13 @@ def wrapped(index, size, wrap):
 def _texel(tables, start, width, col, row):
     """Linear (r, g, b, a) of texel (col, row) of the level at ``start`` and ``width`` texels wide.
 
-    Every array is indexed in full (``texels[k, 0]``, not ``texels[k][0]``): a row view per
-    texel would cost a reference count update on the shared table, per lookup.
+    Every array is indexed in full (``texels[k]``, not a row view): a view per texel would
+    cost a reference count update on the shared table, per lookup.
     """
-    k = start + row * width + col
-    decode, texels = tables.decode, tables.texels
-    return decode[texels[k, 0]], decode[texels[k, 1]], decode[texels[k, 2]], texels[k, 3] / 255.0
+    word = tables.texels[start + row * width + col]
+    decode = tables.decode
+    return (decode[word & 255], decode[(word >> 8) & 255], decode[(word >> 16) & 255],
+            (word >> 24) / 255.0)
 
 
 @njit(inline="always")
@@ -255,7 +257,8 @@ def tiny_tables() -> SurfaceTables:
     """
     from pixelpath.scene.texture import decode_table
 
-    texels = np.full((5, 4), 255, dtype=np.uint8)
+    texels = np.full(5, 0xFFFFFFFF, dtype=np.uint32)
+    texels.flags.writeable = False  # as surface_tables packs them
     return SurfaceTables(
         texels,
         np.array([[0, 2, 2], [4, 1, 1]], dtype=np.intp),

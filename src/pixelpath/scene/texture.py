@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import functools
 import os
+import sys
 import warnings
 from pathlib import Path
 from typing import Any
@@ -188,6 +189,41 @@ class Texture:
         return _decoded(self.levels[level])
 
     @functools.cached_property
+    def _packed(self) -> tuple[np.ndarray, list[tuple[int, int, int]]]:
+        """Every level as the kernels read it, packed once: (texels, levels).
+
+        ``texels`` (N,) uint32, read-only: the levels' texels one after the other, one word
+        each (:func:`_words`); ``levels``: each level's first texel, width and height.
+        :func:`surface_tables` hands it to the kernels as it is when a scene has one texture
+        (no copy per scene or camera position), and joins these otherwise. Where the words
+        hold the bytes in the levels' order (a little-endian machine), :attr:`levels` become
+        views of them, so the texture keeps its texels once.
+        """
+        rows = []
+        start = 0
+        for level in self.levels:
+            rows.append((start, level.shape[1], level.shape[0]))
+            start += level.shape[0] * level.shape[1]
+        words = np.empty(start, dtype=np.uint32)
+        for (first, width, height), level in zip(rows, self.levels, strict=True):
+            words[first:first + width * height] = _words(level)
+        _frozen(words)
+        if sys.byteorder == "little":
+            views = tuple(
+                _frozen(words[first:first + width * height].view(np.uint8)
+                        .reshape(height, width, 4))
+                for first, width, height in rows
+            )
+            self.__dict__["levels"] = views
+            self.__dict__["_base"] = views[0]
+        return words, rows
+
+    def __getstate__(self) -> dict[str, Any]:
+        state = dict(self.__dict__)
+        state.pop("_packed", None)  # packed again where it is next used
+        return state
+
+    @functools.cached_property
     def lowest_alpha(self) -> float:
         """The smallest alpha of the base level's texels, in [0, 1] (1 for an opaque picture).
 
@@ -220,6 +256,15 @@ _WIDE_MODES = ("I;16", "I;16B", "I;16L", "I", "F")
 def _frozen(array: np.ndarray) -> np.ndarray:
     array.flags.writeable = False
     return array
+
+
+def _words(level: np.ndarray) -> np.ndarray:
+    """(h, w, 4) uint8 RGBA as (h w,) uint32, bytes r, g, b, a from the lowest up."""
+    level = np.ascontiguousarray(level, dtype=np.uint8).reshape(-1, 4)
+    if sys.byteorder == "little":
+        return level.view(np.uint32).reshape(-1)
+    channels = level.astype(np.uint32)
+    return channels[:, 0] | channels[:, 1] << 8 | channels[:, 2] << 16 | channels[:, 3] << 24
 
 
 def _is_pil_image(value: Any) -> bool:
@@ -359,11 +404,11 @@ def surface_tables(objects: Any):
     Returns
     -------
     SurfaceTables
-        See :mod:`pixelpath.scene._texture_kernels`; a texture's levels are packed once
-        however many objects use it. An object's alpha cutoff is kept only where its alpha
-        can fall below it (the material's ``alpha`` × the lowest vertex-colour alpha × the
-        texture's :attr:`Texture.lowest_alpha`): an alpha-tested material whose texture and
-        colours are opaque costs no test.
+        See :mod:`pixelpath.scene._texture_kernels`; a texture's levels are packed once,
+        and kept on the texture, however many objects and scenes use it. An object's alpha
+        cutoff is kept only where its alpha can fall below it (the material's ``alpha`` × the
+        lowest vertex-colour alpha × the texture's :attr:`Texture.lowest_alpha`): an
+        alpha-tested material whose texture and colours are opaque costs no test.
 
     Examples
     --------
@@ -391,11 +436,12 @@ def surface_tables(objects: Any):
         index = -1
         if texture is not None and getattr(obj, "uv", None) is not None:
             if id(texture) not in level_ranges:
-                level_ranges[id(texture)] = (len(level_rows), len(texture.levels))
-                for level in texture.levels:
-                    level_rows.append([texel_count, level.shape[1], level.shape[0]])
-                    pixels.append(level.reshape(-1, 4))
-                    texel_count += level.shape[0] * level.shape[1]
+                texels, levels = texture._packed
+                level_ranges[id(texture)] = (len(level_rows), len(levels))
+                level_rows.extend([texel_count + first, width, height]
+                                  for first, width, height in levels)
+                pixels.append(texels)
+                texel_count += len(texels)
             key = (id(texture), material.texture_filter, material.texture_wrap)
             if key not in samplers:
                 samplers[key] = len(sampler_rows)
@@ -408,8 +454,12 @@ def surface_tables(objects: Any):
         object_rows.append([index, colors is not None])
         alpha_rows.append([material.alpha, _cutoff(material, texture if index >= 0 else None,
                                                    colors)])
+    if len(pixels) == 1:
+        texels = pixels[0]  # the texture's own packed levels: no copy
+    else:
+        texels = _frozen(np.concatenate(pixels) if pixels else np.zeros(0, dtype=np.uint32))
     return tk.SurfaceTables(
-        np.concatenate(pixels) if pixels else np.zeros((0, 4), dtype=np.uint8),
+        texels,
         np.array(level_rows, dtype=np.intp).reshape(-1, 3),
         np.array(sampler_rows, dtype=np.intp).reshape(-1, 4),
         np.array(object_rows, dtype=np.intp).reshape(-1, 2),
