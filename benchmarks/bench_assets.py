@@ -14,6 +14,10 @@
 Usage::
 
     python benchmarks/bench_assets.py [--frames 10] [--size 1024] [--models DIR]
+                                      [--only zbuffer|raytrace|loading ...]
+
+``--only`` runs the named parts alone (``zbuffer`` and ``raytrace``: part 1's two renderers,
+``zbuffer`` with llvmpipe beside it; ``loading``: part 2).
 """
 
 from __future__ import annotations
@@ -32,6 +36,7 @@ import pixelpath as pp
 from pixelpath.scene.texture import linear_to_srgb
 
 MODELS = Path(__file__).resolve().parents[1] / "tests" / "data" / "models"
+PARTS = ("zbuffer", "raytrace", "loading")
 
 
 def spherical_uv(mesh: pp.Mesh) -> np.ndarray:
@@ -124,6 +129,8 @@ def main() -> None:
     parser.add_argument("--frames", type=int, default=10, help="timed frames per renderer")
     parser.add_argument("--size", type=int, default=1024, help="raster image side in pixels")
     parser.add_argument("--models", type=Path, default=MODELS, help="folder of model files")
+    parser.add_argument("--only", nargs="+", choices=PARTS, default=PARTS,
+                        help="the parts to run (default: all)")
     args = parser.parse_args()
 
     import numba
@@ -131,6 +138,9 @@ def main() -> None:
     print(f"pixelpath {pp.__version__}: numba {numba.__version__}, "
           f"{numba.get_num_threads()} threads; {os.cpu_count()} CPUs; "
           f"LP_NUM_THREADS={os.environ.get('LP_NUM_THREADS', 'default')}")
+    if "loading" in args.only and len(args.only) == 1:
+        bench_loading(args.models, repeats=max(args.frames, 5))
+        return
     label, bunny = load_model("stanford-bunny.obj")
     cases = []
     duck_label, duck_mesh = duck()
@@ -138,12 +148,15 @@ def main() -> None:
                                              duck_mesh.uv, args.size)))
     cases.append((label, *textured_pair(label, bunny, procedural_texture(2048),
                                         spherical_uv(bunny), args.size)))
-    for name, textured, plain in cases:
-        bench_texturing(name, textured, plain, args.size, args.frames)
-    for name, textured, plain in cases:
-        bench_texturing(name, textured, plain, args.size // 2, max(args.frames // 2, 3),
-                        method="raytrace")
-    bench_loading(args.models, repeats=max(args.frames, 5))
+    if "zbuffer" in args.only:
+        for name, textured, plain in cases:
+            bench_texturing(name, textured, plain, args.size, args.frames)
+    if "raytrace" in args.only:
+        for name, textured, plain in cases:
+            bench_texturing(name, textured, plain, args.size // 2, max(args.frames // 2, 3),
+                            method="raytrace")
+    if "loading" in args.only:
+        bench_loading(args.models, repeats=max(args.frames, 5))
 
 
 if __name__ == "__main__":
