@@ -88,3 +88,17 @@ def test_a_gamma_whose_steps_crowd_takes_the_general_path():
 def test_bad_gammas_are_refused(gamma):
     with pytest.raises(ValueError, match="gamma must be"):
         to_uint8(np.zeros(3, np.float32), gamma)
+
+
+@pytest.mark.parametrize("gamma", [None, "srgb", 2.2])
+def test_the_kernels_called_directly_agree(gamma):
+    # also as plain Python under NUMBA_DISABLE_JIT=1, where to_uint8 takes NumPy's path
+    from pixelpath.io import _kernels
+
+    values = _edges()
+    out = np.empty(values.shape, np.uint8)
+    if gamma is None:
+        _kernels.linear_codes(values, out)
+    else:
+        _kernels.table_codes(values.view(np.int32), *images.code_table(gamma), out)
+    assert np.array_equal(out, _reference(values, gamma))
