@@ -78,7 +78,7 @@ GROUPS: dict[str, tuple[str, float]] = {
     "raytrace": ("pixelpath.raytrace._whitted_kernels:warmup", 36.0),
     "octree": ("pixelpath.hsr._kernels.octree:warmup", 9.0),
     "lines": ("pixelpath.raster._line_kernels:warmup", 3.0),
-    # 8-bit encoding of float32 pictures (to_uint8): compiled on first use, as clip and color.
+    # 8-bit encoding of float32 pictures (to_uint8); built with the render groups (BUILT_GROUPS).
     "images": ("pixelpath.io._kernels:warmup", 1.0),
 }
 
