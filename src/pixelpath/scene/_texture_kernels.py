@@ -192,6 +192,23 @@ def colored(tables, obj):
 
 
 @njit(inline="always")
+def base_color(tables, materials, obj, colors, a, b, c, w0, w1, w2):
+    """:func:`surface_color` before the texture: the material's colour × the vertex colours.
+
+    Multiplied by :func:`sample` at the texture coordinates, channel by channel, it gives
+    :func:`surface_color`'s values bit for bit (the same products in the same order).
+    """
+    r, g, bl = materials[obj, 0], materials[obj, 1], materials[obj, 2]
+    alpha = tables.alpha[obj, BASE_ALPHA]
+    if tables.objects[obj, HAS_COLORS]:
+        r *= w0 * colors[a, 0] + w1 * colors[b, 0] + w2 * colors[c, 0]
+        g *= w0 * colors[a, 1] + w1 * colors[b, 1] + w2 * colors[c, 1]
+        bl *= w0 * colors[a, 2] + w1 * colors[b, 2] + w2 * colors[c, 2]
+        alpha *= w0 * colors[a, 3] + w1 * colors[b, 3] + w2 * colors[c, 3]
+    return r, g, bl, alpha
+
+
+@njit(inline="always")
 def surface_color(tables, materials, obj, uv, colors, a, b, c, w0, w1, w2, dudx, dvdx, dudy,
                   dvdy):
     """Surface colour (r, g, b, alpha) at barycentric weights (w0, w1, w2) of vertices a, b, c.
@@ -201,13 +218,7 @@ def surface_color(tables, materials, obj, uv, colors, a, b, c, w0, w1, w2, dudx,
     (dudx, dvdx) and (dudy, dvdy) are how far (u, v) moves over one pixel across and down the
     image: the longer, in texels, is the footprint that sets the mip level.
     """
-    r, g, bl = materials[obj, 0], materials[obj, 1], materials[obj, 2]
-    alpha = tables.alpha[obj, BASE_ALPHA]
-    if tables.objects[obj, HAS_COLORS]:
-        r *= w0 * colors[a, 0] + w1 * colors[b, 0] + w2 * colors[c, 0]
-        g *= w0 * colors[a, 1] + w1 * colors[b, 1] + w2 * colors[c, 1]
-        bl *= w0 * colors[a, 2] + w1 * colors[b, 2] + w2 * colors[c, 2]
-        alpha *= w0 * colors[a, 3] + w1 * colors[b, 3] + w2 * colors[c, 3]
+    r, g, bl, alpha = base_color(tables, materials, obj, colors, a, b, c, w0, w1, w2)
     texture = tables.objects[obj, TEXTURE]
     if texture >= 0:
         u = w0 * uv[a, 0] + w1 * uv[b, 0] + w2 * uv[c, 0]
