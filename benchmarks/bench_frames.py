@@ -90,11 +90,11 @@ def breakdown(scene, count: int, folder: Path) -> None:
     from PIL import Image as PILImage
 
     from pixelpath.frames.work import render_frame
-    from pixelpath.io.images import encode_png, to_uint8, write_bytes
+    from pixelpath.io.images import to_uint8, write_bytes
 
-    def pillow(pixels):
+    def pillow(pixels, level=6):
         buffer = io.BytesIO()
-        PILImage.fromarray(pixels).save(buffer, format="PNG")
+        PILImage.fromarray(pixels).save(buffer, format="PNG", compress_level=level)
         return buffer.getvalue()
 
     steps: dict[str, list[float]] = {}
@@ -112,7 +112,7 @@ def breakdown(scene, count: int, folder: Path) -> None:
     for frame in range(count):
         image = timed("render", render_frame, scene, frame, {})
         pixels = timed("convert", to_uint8, image.rgb, image.encoding)
-        data = timed("encode", encode_png, pixels, level) if level is not None else None
+        data = timed("encode", pillow, pixels, level) if level is not None else None
         pillows = timed("encode, Pillow (Image.save)", pillow, pixels)
         timed("write", write_bytes, folder / f"b_{frame:03d}.png", data or pillows)
         sizes.setdefault("encode", []).append(len(data or pillows))
@@ -231,7 +231,7 @@ def main() -> None:
     parser.add_argument("--empty-tasks", type=int, default=2000)
     parser.add_argument("--cold", action="store_true", help="time a cold cluster instead")
     parser.add_argument(
-        "--png-level", default="1", help="PNG compression 0-9, or 'pillow' for Image.save's"
+        "--png-level", default="1", help="PNG compression 0-9, or 'pillow' for Image.save's default"
     )
     parser.add_argument("--breakdown", type=int, default=30, help="frames timed step by step")
     parser.add_argument("--runs", choices=("all", "serial"), default="all")

@@ -23,10 +23,9 @@ from pixelpath.scene import Scene
 
 Region = tuple[int, int, int, int]
 
-# PNG compression of many frames: pixelpath's encoder at zlib's level 1 writes a 640×400
-# showcase frame in 3 ms (87 kB) where Image.save (Pillow's encoder, level 6) takes 32 ms
-# (61 kB): with encoding as long as rendering, the encoder sets the frame rate. A higher level
-# (``png_level=6``, ``--png-level 6``: 11 ms, 66 kB) makes files a quarter smaller.
+# PNG compression of many frames: Pillow at zlib's level 1 encodes a 640×400 showcase frame in
+# 7.7 ms (91 kB) where Image.save's level 6 takes 21 ms (61 kB), twice as long as rendering
+# it. A higher level (``png_level=6``, ``--png-level 6``) makes files a third smaller.
 FRAMES_PNG_LEVEL = 1
 
 # The render() options a frame may use; region, explain and progress belong to the run.
@@ -64,8 +63,7 @@ class FramePlan:
     gamma : float, "srgb", "linear" or None
         Display encoding of the files (None: the scene's ``encoding``).
     png_level : int or None
-        zlib compression level of PNG files, 0 to 9, for pixelpath's PNG encoder
-        (:func:`pixelpath.io.images.encode_png`); None for Pillow's, as ``Image.save``.
+        zlib compression level of PNG files, 0 to 9 (None: 6, as ``Image.save``).
     """
 
     scene: Scene

@@ -105,7 +105,7 @@ class ViewOutput:
     gamma : float, "srgb", "linear" or None
         Display encoding of the pictures (None: the scene's ``encoding``).
     png_level : int or None
-        zlib level of the pictures' PNG files with pixelpath's encoder (None: Pillow's).
+        zlib compression level of the pictures' PNG files (None: 6, as ``Image.save``).
     """
 
     folder: str

@@ -159,8 +159,8 @@ def encode(
 ) -> bytes:
     """Return ``image`` encoded as ``Image.save(path, gamma, alpha)`` would write it.
 
-    ``png_level`` (0-9) encodes a PNG with pixelpath's encoder at that zlib level, as
-    :func:`pixelpath.io.images.encode_image`; by default Pillow's, as ``Image.save``.
+    ``png_level`` (0-9) is a PNG's zlib compression level, as in
+    :func:`pixelpath.io.images.encode_image`; by default 6, as ``Image.save``.
 
     Examples
     --------
