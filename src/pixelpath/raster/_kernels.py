@@ -78,7 +78,7 @@ from pixelpath.scene._texture_kernels import (
     TEXTURE,
     base_color,
     mip_level,
-    sample,
+    sample_level,
     texel_footprint,
     tiny_tables,
 )
@@ -113,6 +113,7 @@ class PhongBatch(NamedTuple):
     lookups: np.ndarray  # (3, w) u, v and footprint of a row's texture lookups, in order
     lookup_columns: np.ndarray  # (w,) intp: the pixel column of each lookup
     lookup_textures: np.ndarray  # (w,) intp: the texture each lookup reads
+    lookup_levels: np.ndarray  # (w,) intp: the mip level each lookup reads first
 
 
 class Surfaces(NamedTuple):
@@ -205,6 +206,7 @@ def _new_batch(width):
         np.empty((3, width)),
         np.empty(width, dtype=np.intp),
         np.empty(width, dtype=np.intp),
+        np.empty(width, dtype=np.intp),
     )
 
 
@@ -275,7 +277,7 @@ def _shade_row(j, x0, y0, triangle_id, inv_depth, surfaces, out, batch):
     if s.uv.shape[0] > 0 or s.vertex_colors.shape[0] > 0:
         _row_surface_colors(j, x0, ids, s.info, s.setup, s.triangles, s.uv, s.vertex_colors,
                             s.tables, s.materials, s.coloured, batch.row_colors, batch.lookups,
-                            batch.lookup_columns, batch.lookup_textures)
+                            batch.lookup_columns, batch.lookup_textures, batch.lookup_levels)
     for i in range(ids.shape[0]):
         t = ids[i]
         if t < 0:
@@ -371,18 +373,20 @@ def texture_coordinates(terms, uv, a, b, c):
 
 @njit(refcount=False)
 def _row_surface_colors(j, x0, ids, info, setup, triangles, uv, vertex_colors, tables,
-                        materials, coloured, out, lookups, lookup_columns, lookup_textures):
+                        materials, coloured, out, lookups, lookup_columns, lookup_textures,
+                        lookup_levels):
     """Write the surface colour (r, g, b) of row j's pixels that show a coloured object.
 
     One call per row, compiled without reference counting: the lookups' arrays are handed
     on per pixel without the atomic count updates a counted kernel makes at each call.
 
-    Two loops: the first writes each pixel's colour before the texture
+    Three loops: the first writes each pixel's colour before the texture
     (:func:`~pixelpath.scene._texture_kernels.base_color`) and lists its texture lookup
-    (u, v, footprint) in ``lookups``; the second makes the lookups and multiplies them in.
-    The products are :func:`~pixelpath.scene._texture_kernels.surface_color`'s, bit for bit;
-    split in two, each loop's pixels are independent of each other, and the processor
-    overlaps them (a sixth less time a textured pixel than one loop doing both).
+    (u, v, footprint) in ``lookups``; the second chooses their mip levels (the footprint's
+    place is taken by the blend); the third makes the lookups and multiplies them in. The
+    products are :func:`~pixelpath.scene._texture_kernels.surface_color`'s, bit for bit;
+    split so, each loop's pixels are independent of each other, and the processor overlaps
+    them (a fifth less time a textured pixel of the bunny than one loop doing it all).
     """
     y = j + 0.5
     count = 0
@@ -409,8 +413,10 @@ def _row_surface_colors(j, x0, ids, info, setup, triangles, uv, vertex_colors, t
             lookup_textures[count] = texture
             count += 1
     for q in range(count):
-        tr, tg, tb, _ = sample(tables, lookup_textures[q], lookups[0, q], lookups[1, q],
-                               lookups[2, q])
+        lookup_levels[q], lookups[2, q] = mip_level(tables, lookup_textures[q], lookups[2, q])
+    for q in range(count):
+        tr, tg, tb, _ = sample_level(tables, lookup_textures[q], lookups[0, q], lookups[1, q],
+                                     lookup_levels[q], lookups[2, q])
         i = lookup_columns[q]
         out[i, 0] *= tr
         out[i, 1] *= tg

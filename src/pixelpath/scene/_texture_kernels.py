@@ -165,13 +165,19 @@ def sample(tables, texture, u, v, footprint):
     around it on the level :func:`mip_level` chooses, and ``trilinear`` blends two such
     lookups on consecutive levels when the pixel falls between them.
     """
+    level, blend = mip_level(tables, texture, footprint)
+    return sample_level(tables, texture, u, v, level, blend)
+
+
+@njit(inline="always")
+def sample_level(tables, texture, u, v, level, blend):
+    """:func:`sample` once :func:`mip_level` has chosen the ``level`` and ``blend``."""
     first, wrap = tables.textures[texture, 0], tables.textures[texture, 3]
     if tables.textures[texture, 2] == NEAREST:
         width, height = tables.levels[first, 1], tables.levels[first, 2]
         col = _neighbours(u * width, width, wrap)[0]
         row = _neighbours((1.0 - v) * height, height, wrap)[0]
         return _texel(tables, tables.levels[first, 0], width, col, row)
-    level, blend = mip_level(tables, texture, footprint)
     a = _bilinear(tables, first + level, wrap, u, v)
     if blend == 0.0:
         return a
