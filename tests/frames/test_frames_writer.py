@@ -42,11 +42,11 @@ def test_a_bad_level_is_refused_before_any_work(level, tmp_path):
 
 
 def test_the_next_frame_renders_while_the_last_is_encoded(tmp_path, monkeypatch):
-    from pixelpath.frames import run
+    from pixelpath.io import images
 
     rendered = [threading.Event() for _ in range(4)]
     overlapped = []
-    render_frame, encode = work.render_frame, run.encode_image
+    render_frame, encode = work.render_frame, images.encode_image
 
     def render_and_tell(scene, frame, *args):
         rendered[frame].set()
@@ -58,7 +58,7 @@ def test_the_next_frame_renders_while_the_last_is_encoded(tmp_path, monkeypatch)
         return encode(image, *args, **kwargs)
 
     monkeypatch.setattr(work, "render_frame", render_and_tell)
-    monkeypatch.setattr(run, "encode_image", encode_after_the_next_render)
+    monkeypatch.setattr(images, "encode_image", encode_after_the_next_render)
     with FrameWriter(1) as writer:  # one writer: frames are encoded in order
         monkeypatch.setattr("pixelpath.frames.run.FrameWriter", lambda: writer)
         pp.render_frames(animated_scene(), range(4), out=tmp_path / "f_{frame}.png")
@@ -66,9 +66,9 @@ def test_the_next_frame_renders_while_the_last_is_encoded(tmp_path, monkeypatch)
 
 
 def test_an_error_in_a_writer_reaches_the_caller(tmp_path, monkeypatch):
-    from pixelpath.frames import run
+    from pixelpath.io import images
 
-    encode = run.encode_image
+    encode = images.encode_image
     calls = []
 
     def fail_on_the_second(image, *args, **kwargs):
@@ -77,7 +77,7 @@ def test_an_error_in_a_writer_reaches_the_caller(tmp_path, monkeypatch):
             raise OSError("disk full")
         return encode(image, *args, **kwargs)
 
-    monkeypatch.setattr(run, "encode_image", fail_on_the_second)
+    monkeypatch.setattr(images, "encode_image", fail_on_the_second)
     with pytest.raises(OSError, match="disk full"):
         pp.render_frames(animated_scene(), range(6), out=tmp_path / "f_{frame}.png")
     assert not list(tmp_path.glob(".*.tmp"))

@@ -17,7 +17,6 @@ when :func:`render_frames` returns.
 
 from __future__ import annotations
 
-import functools
 import os
 import uuid
 from collections.abc import Callable, Iterable
@@ -28,7 +27,6 @@ from pixelpath.frames import work
 from pixelpath.frames.plan import FRAMES_PNG_LEVEL, FramePlan, plan_frames
 from pixelpath.frames.writer import FrameWriter
 from pixelpath.image import Image
-from pixelpath.io.images import encode_image
 from pixelpath.scene import Scene
 
 Progress = Callable[[int], None]
@@ -214,14 +212,8 @@ class _Frames:
         if path is None:
             self.images[frame] = image
             return
-        # Only the picture waits for its writer, not the frame's other buffers (depth, ...).
-        gamma = image.encoding if self.plan.gamma is None else self.plan.gamma
-        self.writer.submit(
-            path,
-            functools.partial(
-                encode_image, image.rgb, path.suffix, gamma=gamma, png_level=self.plan.png_level
-            ),
-        )
+        encoder = work.picture_encoder(image, path.suffix, self.plan.gamma, self.plan.png_level)
+        self.writer.submit(path, encoder)
 
 
 def _run_on(

@@ -322,9 +322,8 @@ def render_views(
     gamma : float, "srgb" or "linear", optional
         Display encoding of the pictures (default: the scene's).
     png_level : int or None
-        zlib compression level of the pictures, 0 to 9, with pixelpath's PNG encoder
-        (default 1, fast, as :func:`pixelpath.render_frames`); None for Pillow's encoder,
-        the bytes ``Image.save`` writes.
+        zlib compression level of the pictures, 0 to 9 (default 1, fast, as
+        :func:`pixelpath.render_frames`); None: 6, the bytes ``Image.save`` writes.
     resume : bool
         Keep the views already complete on disk (each file read back) and render the rest.
     overwrite : bool

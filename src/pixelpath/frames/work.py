@@ -7,6 +7,7 @@ frame rendered on a worker is the frame rendered here, to the byte.
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, Any
 
@@ -50,8 +51,8 @@ def frame_file(
 ) -> bytes:
     """Return the bytes of ``frame``'s image file (format by ``suffix``, e.g. ``".png"``).
 
-    ``png_level`` is the PNG compression level (0-9) of pixelpath's PNG encoder; default
-    Pillow's encoder, as :func:`pixelpath.io.images.encode_image`.
+    ``png_level`` is a PNG's zlib compression level (0-9), as in
+    :func:`pixelpath.io.images.encode_image`; by default 6, as ``Image.save``.
 
     Examples
     --------
@@ -172,12 +173,37 @@ def encode(
     """
     from pixelpath.io.images import encode_image
 
-    gamma = image.encoding if gamma is None else gamma
     if not alpha:
-        return encode_image(image.rgb, suffix, gamma=gamma, png_level=png_level)
+        return picture_encoder(image, suffix, gamma, png_level)()
     return encode_image(
-        image.foreground(), suffix, gamma=gamma, alpha=image.alpha, png_level=png_level
+        image.foreground(),
+        suffix,
+        gamma=image.encoding if gamma is None else gamma,
+        alpha=image.alpha,
+        png_level=png_level,
     )
+
+
+def picture_encoder(
+    image: Image, suffix: str, gamma: float | str | None, png_level: int | None = None
+) -> Callable[[], bytes]:
+    """Return a call that encodes ``image``'s picture as :func:`encode` does (no alpha).
+
+    The call holds the picture's pixels only, not the image's other buffers (depth, ...):
+    what a frame waiting for a writer thread keeps in memory.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from pixelpath import Image
+    >>> from pixelpath.frames.work import picture_encoder
+    >>> picture_encoder(Image(np.zeros((2, 2, 3))), ".png", None)()[1:4]
+    b'PNG'
+    """
+    from pixelpath.io.images import encode_image
+
+    gamma = image.encoding if gamma is None else gamma
+    return functools.partial(encode_image, image.rgb, suffix, gamma=gamma, png_level=png_level)
 
 
 def stitch(tiles: Sequence[Image], regions: Sequence[tuple[int, int, int, int]]) -> Image:

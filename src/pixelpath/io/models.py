@@ -362,11 +362,11 @@ def _gltf_parts(path: Path, resolver: Any, data: bytes) -> list[_Part]:
         if kwargs is None or "faces" not in kwargs:
             continue  # no geometry, or points and lines: nothing to shade
         visual = kwargs.get("visual")
-        colors = kwargs.get("vertex_colors")
-        if visual is not None:
+        if visual is not None:  # COLOR_0 beside a material
             colors = visual.vertex_attributes.get("color")
-        elif colors is not None:
-            colors = to_rgba(colors)  # as trimesh's Trimesh would keep them
+        else:  # COLOR_0 alone, as trimesh's Trimesh would keep it
+            colors = kwargs.get("vertex_colors")
+            colors = None if colors is None else to_rgba(colors)
         normals = kwargs.get("vertex_normals")
         parts.append(
             _Part(
