@@ -3,13 +3,15 @@
 * Primary rays: one ray through each pixel centre of a 1024×1024 view of the Stanford bunny
   (69,451 triangles, from ../shared/data/meshes; an icosphere of 81,920 triangles when absent),
   nearest hits by ``pixelpath.raytrace.intersect`` beside Embree (the ``embreex`` package,
-  directly and through trimesh's ``RayMeshIntersector``), in Mrays/s, and the fraction of rays
+  directly and through trimesh's ``RayMeshIntersector``), in Mrays/s: pixelpath on one thread
+  (Embree's single ``run`` call traces on one) and on all of Numba's, and the fraction of rays
   on which pixelpath and Embree report the same triangle (or both a miss). The tree is built
   before timing; its build time is reported on its own line.
 * The shadowed bunny: ``render(method="raytrace")`` at 1024² with one point light, a diffuse
   material and one sample per pixel (primary and shadow rays, shading, the image), beside
-  Mitsuba 3's ``scalar_rgb`` variant with the ``direct`` integrator (one emitter sample, one
-  sample per pixel); Mitsuba's scene loading and kernel set-up are outside its timing.
+  Mitsuba 3's ``scalar_rgb`` and ``llvm_ad_rgb`` variants with the ``direct`` integrator (one
+  emitter sample, one sample per pixel; the LLVM variant needs LLVM 16 or newer, see
+  ``mitsuba_renders``); Mitsuba's scene loading and kernel set-up are outside its timing.
 * The bundled showcase (a chrome and a glass sphere among analytic and mesh objects) at
   1024×768 with ``max_depth=5``.
 
@@ -34,6 +36,7 @@ import statistics
 import time
 from pathlib import Path
 
+import numba
 import numpy as np
 
 import pixelpath as pp
@@ -127,13 +130,21 @@ def bench_primary(mesh: pp.Mesh, size: int, repeat: int) -> None:
         f"  BVH build (binned SAH)  {1000 * build:8.1f} ms  ({stats['nodes']:,} nodes, depth "
         f"{stats['depth']}, SAH cost {stats['SAH cost']:.1f})"
     )
-    seconds, (_, face) = best_of(repeat, lambda: intersect(mesh, origins, directions))
+    threads = numba.get_num_threads()
+    numba.set_num_threads(1)
+    one_thread, (_, face) = best_of(repeat, lambda: intersect(mesh, origins, directions))
+    numba.set_num_threads(threads)
+    seconds, (_, all_face) = best_of(repeat, lambda: intersect(mesh, origins, directions))
+    assert np.array_equal(face, all_face)
     hits = int(np.count_nonzero(face >= 0))
     print(
-        f"  pixelpath intersect     {count / seconds / 1e6:8.2f} Mrays/s  ({1000 * seconds:.0f} "
-        f"ms, {hits:,} hits)"
+        f"  pixelpath, 1 thread     {count / one_thread / 1e6:8.2f} Mrays/s  "
+        f"({1000 * one_thread:.0f} ms, {hits:,} hits)"
     )
-    rate = count / seconds
+    print(
+        f"  pixelpath, {threads} threads    {count / seconds / 1e6:8.2f} Mrays/s  "
+        f"({1000 * seconds:.0f} ms: {one_thread / seconds:.2f}x one thread's rate)"
+    )
     if importlib.util.find_spec("embreex") is None:
         print("  Embree skipped: embreex is not installed (pip install embreex)")
         return
@@ -155,7 +166,10 @@ def bench_primary(mesh: pp.Mesh, size: int, repeat: int) -> None:
         f"  Embree (embreex)        {count / e_seconds / 1e6:8.2f} Mrays/s  "
         f"({1000 * e_seconds:.0f} ms); same face on {same:.2%} of the rays"
     )
-    print(f"  ratio pixelpath / Embree rate: {rate / (count / e_seconds):.2f}")
+    print(
+        f"  per core, pixelpath's time / Embree's: {one_thread / e_seconds:.2f} (Embree traces "
+        f"on one thread; all pixelpath's threads: {seconds / e_seconds:.2f})"
+    )
     if importlib.util.find_spec("trimesh") is None:
         print("  trimesh skipped: trimesh is not installed")
         return
@@ -167,7 +181,8 @@ def bench_primary(mesh: pp.Mesh, size: int, repeat: int) -> None:
     t_seconds, _ = best_of(repeat, lambda: intersector.intersects_first(origins, directions))
     print(
         f"  trimesh (Embree)        {count / t_seconds / 1e6:8.2f} Mrays/s  "
-        f"({1000 * t_seconds:.0f} ms); ratio pixelpath / trimesh {rate / (count / t_seconds):.2f}"
+        f"({1000 * t_seconds:.0f} ms); pixelpath's time ({threads} threads) / trimesh's "
+        f"{seconds / t_seconds:.2f}"
     )
 
 
@@ -181,43 +196,62 @@ def bench_shadowed(mesh: pp.Mesh, path: Path | None, size: int, repeat: int) -> 
     bunny = pp.Mesh(mesh.vertices, mesh.faces, material=diffuse, normals=mesh.normals)
     scene = pp.Scene(camera, [bunny], [pp.PointLight(light)], ambient=0.0)
     render = lambda: pp.render(scene, "raytrace", max_depth=0)  # noqa: E731
-    mitsuba = mitsuba_scene(mesh, path, camera, light, size)
-    calls = [render] if mitsuba is None else [render, lambda: mitsuba[0].render(mitsuba[1], spp=1)]
-    timings = interleaved(repeat, calls)
-    ours = timings[0]
+    ours = interleaved(repeat, [render])[0]
+    report_render("pixelpath raytrace", ours)
     image = ours.result
     print(
-        f"  pixelpath raytrace      {1000 * ours.best:8.0f} ms  (median "
-        f"{1000 * ours.median:.0f} ms, CPU {1000 * ours.best_cpu:.0f} ms; "
-        f"{int((image.object_id >= 0).sum()):,} pixels on the bunny, "
-        f"{image.stats['shadow rays']:,} shadow rays)"
+        f"    {int((image.object_id >= 0).sum()):,} pixels on the bunny, "
+        f"{image.stats['shadow rays']:,} shadow rays"
     )
-    if mitsuba is None:
-        return
-    theirs = timings[1]
+    for variant, mitsuba in mitsuba_renders(path, camera, light, size):
+        # Each variant takes turns with pixelpath in a block of its own: switching Mitsuba's
+        # variant between calls would cost its render about 80 ms.
+        ours, theirs = interleaved(repeat, [render, mitsuba])
+        report_render("pixelpath raytrace", ours)
+        report_render(f"Mitsuba 3 {variant}", theirs)
+        print(
+            f"    ratio pixelpath / Mitsuba time: {ours.best / theirs.best:.2f} (medians: "
+            f"{ours.median / theirs.median:.2f}; CPU time: {ours.best_cpu / theirs.best_cpu:.2f})"
+        )
+
+
+def report_render(label: str, timing: Timing) -> None:
     print(
-        f"  Mitsuba 3 scalar_rgb    {1000 * theirs.best:8.0f} ms  (median "
-        f"{1000 * theirs.median:.0f} ms, CPU {1000 * theirs.best_cpu:.0f} ms; direct "
-        "integrator, 1 spp)"
-    )
-    print(
-        f"  ratio pixelpath / Mitsuba time: {ours.best / theirs.best:.2f} (medians: "
-        f"{ours.median / theirs.median:.2f}; CPU time: {ours.best_cpu / theirs.best_cpu:.2f})"
+        f"  {label:<23} {1000 * timing.best:8.0f} ms  (median {1000 * timing.median:.0f} ms, "
+        f"CPU {1000 * timing.best_cpu:.0f} ms)"
     )
 
 
-def mitsuba_scene(mesh, path, camera, light, size):
-    """Mitsuba's module and the same view of the mesh, or None (with the reason printed)."""
+def mitsuba_renders(path, camera, light, size):
+    """Yield (variant, render call) for Mitsuba 3's variants that run here, each set in turn.
+
+    ``scalar_rgb`` traces one ray at a time; ``llvm_ad_rgb`` compiles its integrator with
+    Dr.Jit into vectorized code on all cores, and needs LLVM 16 or newer (on Debian 12:
+    ``apt install libllvm19`` and ``DRJIT_LIBLLVM_PATH=/usr/lib/x86_64-linux-gnu/libLLVM-19.so``).
+    The call renders the same view of the mesh with the ``direct`` integrator and reads the
+    image back; variants that cannot run are skipped with the reason printed.
+    """
     if importlib.util.find_spec("mitsuba") is None:
         print("  Mitsuba skipped: mitsuba is not installed (pip install mitsuba)")
-        return None
-    import mitsuba as mi
-
-    mi.set_variant("scalar_rgb")
+        return
     if path is None:
         print("  Mitsuba skipped: it loads the mesh from a file and the bunny file is absent")
-        return None
-    scene = mi.load_dict({
+        return
+    import mitsuba as mi
+
+    for variant in ("scalar_rgb", "llvm_ad_rgb"):
+        try:
+            mi.set_variant(variant)
+        except Exception as error:  # Dr.Jit reports a missing or old LLVM in several ways
+            print(f"  Mitsuba {variant} skipped: {error}")
+            continue
+        scene = mi.load_dict(mitsuba_scene_dict(mi, path, camera, light, size))
+        yield variant, lambda scene=scene: np.array(mi.render(scene, spp=1))
+
+
+def mitsuba_scene_dict(mi, path, camera, light, size) -> dict:
+    """The shadowed bunny as a Mitsuba scene description (for the variant set now)."""
+    return {
         "type": "scene",
         "integrator": {"type": "direct", "emitter_samples": 1, "bsdf_samples": 0},
         "sensor": {
@@ -240,8 +274,7 @@ def mitsuba_scene(mesh, path, camera, light, size):
             "bsdf": {"type": "diffuse", "reflectance": {"type": "rgb", "value": [0.8] * 3}},
         },
         "light": {"type": "point", "position": list(map(float, light)), "intensity": 1.0},
-    })
-    return mi, scene
+    }
 
 
 def bench_showcase(width: int, height: int, repeat: int) -> None:

@@ -148,10 +148,15 @@ def instance(value: Any, name: str, kinds: type | tuple[type, ...]) -> Any:
     return value
 
 
-def finite_array(value: Any, name: str, last: int | None = None) -> np.ndarray:
-    """Return a finite float64 copy of ``value``, of any shape, or ``(..., last)`` when given."""
+def finite_array(
+    value: Any, name: str, last: int | None = None, *, copy: bool = True
+) -> np.ndarray:
+    """Return a finite float64 copy of ``value``, of any shape, or ``(..., last)`` when given.
+
+    With ``copy=False`` a float64 array comes back as it is, for callers that only read it.
+    """
     if isinstance(value, np.ndarray) and value.dtype.kind in "iufb":
-        array = value.astype(np.float64)
+        array = value.astype(np.float64, copy=copy)
     else:
         try:
             if isinstance(value, str | bytes) or np.asarray(value).dtype.kind not in "iufb":

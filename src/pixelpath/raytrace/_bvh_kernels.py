@@ -25,7 +25,7 @@ from pixelpath.raytrace._hit_kernels import (
     reflect_many,
     refract_many,
 )
-from pixelpath.raytrace._traversal_kernels import any_triangle, intersect_many
+from pixelpath.raytrace._traversal_kernels import LANES, any_triangle, intersect_many
 
 BINS = 16  # SAH bins per axis
 MAX_LEAF = 8  # a node holding more triangles than this is split even when a leaf costs less
@@ -213,13 +213,14 @@ def warmup() -> None:
     source = np.zeros(1, dtype=np.intp)
     rays = np.array([[0.2, 0.2, 1.0]])
     down = np.array([[0.0, 0.0, -1.0]])
-    t = np.empty(1)
-    index = np.empty(1, dtype=np.intp)
-    no_skip = np.zeros(0, dtype=np.bool_)
-    intersect_many(bounds, links, tris, source, no_skip, False, rays, down, depth, np.intp(0),
-                   np.intp(1), t, index)
+    levels = depth + 1
+    intersect_many(bounds, links, tris, source, source, rays, down, np.intp(0), np.intp(1),
+                   np.empty((LANES, 9)), np.empty(LANES, dtype=np.intp),
+                   np.empty(levels, dtype=np.intp), np.empty(levels), np.empty((levels, LANES)),
+                   np.zeros(0, dtype=np.bool_), np.empty(1), np.empty(1, dtype=np.intp))
     stack = np.empty(depth + 1, dtype=np.intp)
     any_triangle(bounds, links, tris, np.zeros(1), 0.2, 0.2, 1.0, 0.0, 0.0, -1.0, 0.0, 2.0, stack)
+    t = np.empty(1)
     ray_sphere_many(rays, down, np.zeros((1, 3)), np.ones(1), t)
     ray_plane_many(rays, down, np.zeros((1, 3)), -down, t)
     refract_many(down, -down, np.ones(1), np.empty((1, 3)))

@@ -465,20 +465,30 @@ def any_triangles4(bounds, links, tris, pass_through, rays, lanes, t_min, hit, s
     return nodes, tests
 
 
-@njit
-def intersect_many(bounds, links, tris, source, skip, cull, origins, directions, depth, start,
-                   stop, t_out, index_out):
-    """Write the nearest hit of rays start..stop-1 of (N, 3): t (inf on a miss), leaf index.
+@njit(refcount=False)
+def intersect_many(bounds, links, tris, source, labels, origins, directions, start, stop, packet,
+                   hit, stack, stack_t, lane_t, no_skip, t_out, label_out):
+    """Write the nearest hit of rays start..stop-1 of (N, 3): its t and its triangle's label.
 
-    Serial: the caller runs disjoint ranges of rays from several threads.
+    t is inf on a miss; the label of the triangle at leaf position i is ``labels[i]`` (MISS on
+    a miss).
+
+    Runs of ``LANES`` consecutive rays are traced as a packet (:func:`closest_triangles4`):
+    neighbouring pixels' rays, or any rays given in a coherent order, walk the tree once
+    together, and rays that do not fit a packet are traced one by one inside it. The other
+    arguments are the packet search's scratch (``packet`` (LANES, 9), ``hit`` (LANES,), the
+    stacks; ``no_skip`` an empty bool array). Serial: the caller runs disjoint ranges of rays
+    from several threads, each with its own scratch.
     """
-    stack = np.empty(depth + 1, dtype=np.intp)
-    stack_t = np.empty(depth + 1)
-    for r in range(start, stop):
-        t, i, _, _, _, _ = closest_triangle(
-            bounds, links, tris, source, skip, cull, origins[r, 0], origins[r, 1],
-            origins[r, 2], directions[r, 0], directions[r, 1], directions[r, 2], 0.0,
-            math.inf, stack, stack_t,
-        )
-        t_out[r] = t
-        index_out[r] = i
+    for first in range(start, stop, LANES):
+        lanes = min(LANES, stop - first)
+        for r in range(lanes):
+            for axis in range(3):
+                packet[r, axis] = origins[first + r, axis]
+                packet[r, 3 + axis] = directions[first + r, axis]
+            packet[r, 6] = math.inf
+        closest_triangles4(bounds, links, tris, source, no_skip, False, packet, lanes, 0.0, hit,
+                           stack, stack_t, lane_t)
+        for r in range(lanes):
+            t_out[first + r] = packet[r, 6]
+            label_out[first + r] = MISS if hit[r] == MISS else labels[hit[r]]

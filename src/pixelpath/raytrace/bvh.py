@@ -194,30 +194,43 @@ class BVH:
         >>> bvh.intersect([0.25, 0.25, 2.0], [0, 0, -1])
         (array(2.), array(0))
         """
-        from pixelpath.raytrace._hit_kernels import slab_nan_allowed
-        from pixelpath.raytrace._traversal_kernels import intersect_many
+        return self._nearest(origins, directions, self.order)
 
-        o = v.finite_array(origins, "origins", 3)
-        d = _nonzero(v.finite_array(directions, "directions", 3), "directions")
+    def _nearest(
+        self, origins: Any, directions: Any, labels: np.ndarray
+    ) -> tuple[np.ndarray, np.ndarray]:
+        """:meth:`intersect`, giving ``labels[i]`` (-1 on a miss) for the triangle i hit.
+
+        i is the triangle's position in the leaf order.
+        """
+        from pixelpath.raytrace._hit_kernels import slab_nan_allowed
+        from pixelpath.raytrace._traversal_kernels import LANES, intersect_many
+
+        # No copies: the rays are only read (a million rays' copies and checks cost more than
+        # a fifth of their tracing).
+        o = v.finite_array(origins, "origins", 3, copy=False)
+        d = _nonzero(v.finite_array(directions, "directions", 3, copy=False), "directions")
         shape, o, d = _broadcast({"origins": o, "directions": d}, {"origins", "directions"})
         t = np.empty(len(o))
-        leaf = np.empty(len(o), dtype=np.intp)
+        label = np.empty(len(o), dtype=np.intp)
         if self.triangle_count == 0:
             t.fill(np.inf)
-            leaf.fill(-1)
+            label.fill(-1)
         else:
             no_skip = np.zeros(0, dtype=np.bool_)
+            levels = self.depth + 1
 
             def trace(start: int, stop: int) -> None:
                 with slab_nan_allowed():
                     intersect_many(
-                        self.bounds, self.links, self.corners, self.order, no_skip, False, o, d,
-                        self.depth, start, stop, t, leaf,
+                        self.bounds, self.links, self.corners, self.order, labels, o, d, start,
+                        stop, np.empty((LANES, 9)), np.empty(LANES, dtype=np.intp),
+                        np.empty(levels, dtype=np.intp), np.empty(levels),
+                        np.empty((levels, LANES)), no_skip, t, label,
                     )
 
             in_threads(trace, len(o))
-        triangle = np.where(leaf >= 0, self.order[np.maximum(leaf, 0)], -1)
-        return t.reshape(shape), triangle.reshape(shape)
+        return t.reshape(shape), label.reshape(shape)
 
 
 def _indices(triangles: Any, vertex_count: int) -> np.ndarray:
@@ -308,6 +321,4 @@ def intersect(mesh: Any, origins: Any, directions: Any) -> tuple[np.ndarray, np.
     ([1.0, 0.5], True)
     """
     bvh, triangle_face = _mesh_bvh(mesh)
-    t, triangle = bvh.intersect(origins, directions)
-    face = np.where(triangle >= 0, triangle_face[np.maximum(triangle, 0)], -1)
-    return t, face
+    return bvh._nearest(origins, directions, triangle_face[bvh.order])

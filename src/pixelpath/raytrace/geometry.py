@@ -41,7 +41,14 @@ __all__ = ["ray_plane", "ray_sphere", "reflect", "refract"]
 
 
 def _nonzero(array: np.ndarray, name: str) -> np.ndarray:
-    if np.any(~np.any(array != 0.0, axis=-1)):
+    # Column by column, stopping at the first with no zero: NumPy reduces a short last axis
+    # slowly, and rays rarely have a zero component at all.
+    zero = array[..., 0] == 0.0
+    for axis in range(1, array.shape[-1]):
+        if not zero.any():
+            return array
+        zero &= array[..., axis] == 0.0
+    if zero.any():
         raise ValueError(f"{name} must not contain a zero-length vector")
     return array
 
