@@ -32,7 +32,7 @@ def brute_force(vertices, triangles, origins, directions):
             q = np.cross(s, e1)
             v = (q @ d) * inv
             t = np.einsum("ij,ij->i", e2, q) * inv
-        hit = (det != 0) & (u >= 0) & (v >= 0) & (u + v <= 1) & (t > 0)
+            hit = (det != 0) & (u >= 0) & (v >= 0) & (u + v <= 1) & (t > 0)
         if hit.any():
             candidates = np.flatnonzero(hit)
             k = candidates[np.argmin(t[candidates])]
@@ -63,6 +63,20 @@ def test_bvh_equals_brute_force_on_random_rays(seed):
     assert np.all(np.isclose(t[different], expected_t[different], rtol=1e-9))
     assert different.mean() < 0.01
     assert 0.2 < np.isfinite(t).mean() < 1.0  # the rays both hit and miss
+
+
+def test_coherent_rays_traced_four_at_a_time_equal_brute_force():
+    # A camera's fan of rays, row by row: intersect traces runs of four neighbours as packets.
+    ball = icosphere(2).transformed(pp.scene.transform_matrix(scale=(1.0, 0.6, 0.8)))
+    xs = np.linspace(-0.9, 0.9, 23)
+    gx, gy = np.meshgrid(xs, xs)
+    directions = np.stack([gx.ravel(), gy.ravel(), -np.full(gx.size, 2.5)], axis=1)
+    origins = np.broadcast_to([0.1, 0.05, 2.5], directions.shape)
+    t, triangle = BVH.build(ball.vertices, ball.triangles).intersect(origins, directions)
+    expected_t, expected = brute_force(ball.vertices, ball.triangles, origins, directions)
+    np.testing.assert_allclose(t, expected_t, rtol=1e-9)
+    assert np.all((triangle == expected) | np.isclose(t, expected_t, rtol=1e-9))
+    assert 0.2 < np.isfinite(t).mean() < 1.0
 
 
 def _grid(n=6):
