@@ -214,10 +214,11 @@ def warmup() -> None:
     rays = np.array([[0.2, 0.2, 1.0]])
     down = np.array([[0.0, 0.0, -1.0]])
     levels = depth + 1
-    intersect_many(bounds, links, tris, source, source, rays, down, np.intp(0), np.intp(1),
-                   np.empty((LANES, 9)), np.empty(LANES, dtype=np.intp),
-                   np.empty(levels, dtype=np.intp), np.empty(levels), np.empty((levels, LANES)),
-                   np.zeros(0, dtype=np.bool_), np.empty(1), np.empty(1, dtype=np.intp))
+    intersect_many(bounds, links, tris, source, np.zeros(0, dtype=np.bool_), False, source, rays,
+                   down, np.intp(0), np.intp(1), np.empty((LANES, 9)),
+                   np.empty(LANES, dtype=np.intp), np.empty(levels, dtype=np.intp),
+                   np.empty(levels), np.empty((levels, LANES)), np.empty(1),
+                   np.empty(1, dtype=np.intp))
     stack = np.empty(depth + 1, dtype=np.intp)
     any_triangle(bounds, links, tris, np.zeros(1), 0.2, 0.2, 1.0, 0.0, 0.0, -1.0, 0.0, 2.0, stack)
     t = np.empty(1)

@@ -466,8 +466,8 @@ def any_triangles4(bounds, links, tris, pass_through, rays, lanes, t_min, hit, s
 
 
 @njit(refcount=False)
-def intersect_many(bounds, links, tris, source, labels, origins, directions, start, stop, packet,
-                   hit, stack, stack_t, lane_t, no_skip, t_out, label_out):
+def intersect_many(bounds, links, tris, source, skip, cull, labels, origins, directions, start,
+                   stop, packet, hit, stack, stack_t, lane_t, t_out, label_out):
     """Write the nearest hit of rays start..stop-1 of (N, 3): its t and its triangle's label.
 
     t is inf on a miss; the label of the triangle at leaf position i is ``labels[i]`` (MISS on
@@ -475,10 +475,11 @@ def intersect_many(bounds, links, tris, source, labels, origins, directions, sta
 
     Runs of ``LANES`` consecutive rays are traced as a packet (:func:`closest_triangles4`):
     neighbouring pixels' rays, or any rays given in a coherent order, walk the tree once
-    together, and rays that do not fit a packet are traced one by one inside it. The other
-    arguments are the packet search's scratch (``packet`` (LANES, 9), ``hit`` (LANES,), the
-    stacks; ``no_skip`` an empty bool array). Serial: the caller runs disjoint ranges of rays
-    from several threads, each with its own scratch.
+    together, and rays that do not fit a packet are traced one by one inside it. ``skip`` and
+    ``cull`` are the packet search's, passed in (not written here as a literal ``False``, for
+    which Numba would compile that search a second time, beside the tracer's), and so is its
+    scratch (``packet`` (LANES, 9), ``hit`` (LANES,), the stacks). Serial: the caller runs
+    disjoint ranges of rays from several threads, each with its own scratch.
     """
     for first in range(start, stop, LANES):
         lanes = min(LANES, stop - first)
@@ -487,7 +488,7 @@ def intersect_many(bounds, links, tris, source, labels, origins, directions, sta
                 packet[r, axis] = origins[first + r, axis]
                 packet[r, 3 + axis] = directions[first + r, axis]
             packet[r, 6] = math.inf
-        closest_triangles4(bounds, links, tris, source, no_skip, False, packet, lanes, 0.0, hit,
+        closest_triangles4(bounds, links, tris, source, skip, cull, packet, lanes, 0.0, hit,
                            stack, stack_t, lane_t)
         for r in range(lanes):
             t_out[first + r] = packet[r, 6]

@@ -223,10 +223,10 @@ class BVH:
             def trace(start: int, stop: int) -> None:
                 with slab_nan_allowed():
                     intersect_many(
-                        self.bounds, self.links, self.corners, self.order, labels, o, d, start,
-                        stop, np.empty((LANES, 9)), np.empty(LANES, dtype=np.intp),
-                        np.empty(levels, dtype=np.intp), np.empty(levels),
-                        np.empty((levels, LANES)), no_skip, t, label,
+                        self.bounds, self.links, self.corners, self.order, no_skip, False,
+                        labels, o, d, start, stop, np.empty((LANES, 9)),
+                        np.empty(LANES, dtype=np.intp), np.empty(levels, dtype=np.intp),
+                        np.empty(levels), np.empty((levels, LANES)), t, label,
                     )
 
             in_threads(trace, len(o))
