@@ -59,71 +59,134 @@ def _grow(box, k, other, j):
 
 
 @njit(inline="always")
-def _bin_of(centroids, p, axis, low, scale):
-    b = int((centroids[p, axis] - low) * scale)
+def _centroid(boxes, p, axis):
+    """Return the centre of box p of (n, 6) min/max rows along an axis: its centroid."""
+    return 0.5 * (boxes[p, axis] + boxes[p, 3 + axis])
+
+
+@njit(inline="always")
+def _bin_index(centre, low, scale):
+    """Return the bin of a centroid coordinate in a node whose centroid box starts at low."""
+    b = int((centre - low) * scale)
     return min(max(b, 0), BINS - 1)
 
 
-@njit
-def _best_split(boxes, centroids, order, start, stop, centre_box, bins, sweep, counts):
+@njit(inline="always")
+def _bin_scale(centre_boxes, c, axis):
+    """Bins per unit length along an axis of the centroid box c; 0 when it has no extent."""
+    extent = centre_boxes[c, 3 + axis] - centre_boxes[c, axis]
+    return BINS / extent if extent > 0.0 else 0.0
+
+
+@njit(inline="always")
+def _add_centroid(low, high, boxes, p):
+    """Grow a centroid box, (low, high) 3-tuples, to contain the centroid of box p."""
+    x, y, z = _centroid(boxes, p, 0), _centroid(boxes, p, 1), _centroid(boxes, p, 2)
+    low = (min(low[0], x), min(low[1], y), min(low[2], z))
+    high = (max(high[0], x), max(high[1], y), max(high[2], z))
+    return low, high
+
+
+@njit(inline="always")
+def _set_box(box, k, low, high):
+    for axis in range(3):
+        box[k, axis] = low[axis]
+        box[k, 3 + axis] = high[axis]
+
+
+@njit(refcount=False)
+def _node_boxes(boxes, start, stop, bounds, node, centre_boxes, c):
+    """Write the box of boxes[start:stop] to bounds[node], of their centroids to centre_boxes[c]."""
+    _empty_box(bounds, node)
+    low = (math.inf, math.inf, math.inf)
+    high = (-math.inf, -math.inf, -math.inf)
+    for p in range(start, stop):
+        _grow(bounds, node, boxes, p)
+        low, high = _add_centroid(low, high, boxes, p)
+    _set_box(centre_boxes, c, low, high)
+
+
+@njit(refcount=False)
+def _best_split(boxes, start, stop, centre_boxes, c, bins, counts, sweep, right_areas):
     """Return (axis, last bin of the left side, SAH sum) of the best binned split; axis -1 if none.
 
-    The SAH sum is ``A_left N_left + A_right N_right`` (half areas).
+    The primitives boxes[start:stop] (centroid box ``centre_boxes[c]``) are binned along the
+    three axes in one pass; bin b of an axis is row ``axis * BINS + b`` of ``bins`` and
+    ``counts``, which keep them for the caller. The SAH sum is ``A_left N_left + A_right
+    N_right`` (half areas).
     """
+    for b in range(3 * BINS):
+        _empty_box(bins, b)
+        counts[b] = 0
+    lows = (centre_boxes[c, 0], centre_boxes[c, 1], centre_boxes[c, 2])
+    # An axis without extent (scale 0) puts every primitive in its bin 0 and is not split.
+    scales = (
+        _bin_scale(centre_boxes, c, 0), _bin_scale(centre_boxes, c, 1),
+        _bin_scale(centre_boxes, c, 2),
+    )
+    for p in range(start, stop):
+        # The box in registers: after each store to the bins the compiler would load it again.
+        box = (boxes[p, 0], boxes[p, 1], boxes[p, 2], boxes[p, 3], boxes[p, 4], boxes[p, 5])
+        for axis in range(3):
+            centre = 0.5 * (box[axis] + box[3 + axis])
+            b = axis * BINS + _bin_index(centre, lows[axis], scales[axis])
+            counts[b] += 1
+            for field in range(3):
+                bins[b, field] = min(bins[b, field], box[field])
+                bins[b, 3 + field] = max(bins[b, 3 + field], box[3 + field])
     best_axis = -1
     best_bin = 0
     best_cost = math.inf
     for axis in range(3):
-        low = centre_box[0, axis]
-        extent = centre_box[0, 3 + axis] - low
-        if not extent > 0.0:
+        if scales[axis] == 0.0:
             continue
-        scale = BINS / extent
-        for b in range(BINS):
-            _empty_box(bins, b)
-            counts[b] = 0
-        for p in range(start, stop):
-            b = _bin_of(centroids, order[p], axis, low, scale)
-            counts[b] += 1
-            _grow(bins, b, boxes, order[p])
-        # sweep[b] becomes the box of bins b+1.. (the right side of a split after bin b),
-        # accumulated in sweep[BINS - 1]; the left side accumulates in bins[BINS].
-        _empty_box(sweep, BINS - 1)
+        first = axis * BINS
+        # right_areas[b]: the area of bins b+1.., the right side of a split after bin b, swept
+        # in sweep[0]; the left side grows in sweep[1]. Only the splits after non-empty bins
+        # are costed: a split after an empty bin costs what the one before it does, and ties
+        # go to the first.
+        _empty_box(sweep, 0)
         for b in range(BINS - 1, 0, -1):
-            _grow(sweep, BINS - 1, bins, b)
-            for field in range(6):
-                sweep[b - 1, field] = sweep[BINS - 1, field]
-        _empty_box(bins, BINS)
+            if counts[first + b] > 0:
+                _grow(sweep, 0, bins, first + b)
+            right_areas[b - 1] = _area(sweep, 0)
+        _empty_box(sweep, 1)
         left_count = 0
-        right_count = stop - start
         for b in range(BINS - 1):
-            _grow(bins, BINS, bins, b)
-            left_count += counts[b]
-            right_count -= counts[b]
-            if left_count == 0 or right_count == 0:
+            if counts[first + b] == 0:
                 continue
-            cost = _area(bins, BINS) * left_count + _area(sweep, b) * right_count
+            _grow(sweep, 1, bins, first + b)
+            left_count += counts[first + b]
+            right_count = stop - start - left_count
+            if right_count == 0:
+                break
+            cost = _area(sweep, 1) * left_count + right_areas[b] * right_count
             if cost < best_cost:
                 best_axis, best_bin, best_cost = axis, b, cost
     return best_axis, best_bin, best_cost
 
 
 @njit
-def build_bvh(boxes, centroids, order, bounds, links):
-    """Build the BVH of primitives with boxes (n, 6) and centroids (n, 3); return (nodes, depth).
+def build_bvh(boxes, order, bounds, links):
+    """Build the BVH of primitives with boxes (n, 6); return (nodes, depth).
 
-    ``order`` (n,) receives the leaf order of the primitives; ``bounds`` (2n, 6) and ``links``
-    (2n, 2) receive the nodes (the first ``nodes`` rows are used). Built depth first with an
-    explicit stack of pending nodes.
+    A primitive's centroid is the centre of its box. ``boxes`` is reordered in place into the
+    leaf order, which ``order`` (n,) receives; ``bounds`` (2n, 6) and ``links`` (2n, 2)
+    receive the nodes (the first ``nodes`` rows are used). Built depth first with an explicit
+    stack of pending nodes. A node's box, and the box of its primitives' centroids, come from
+    its parent's split (the bins on each side, the partition), so each node takes one pass
+    over its primitives to bin them and one to partition them.
     """
     n = order.shape[0]
     for p in range(n):
         order[p] = p
     pending = np.empty((n + 1, 4), dtype=np.intp)  # node, start, stop, depth
-    bins = np.empty((BINS + 1, 6))
-    sweep = np.empty((BINS, 6))
-    counts = np.zeros(BINS, dtype=np.intp)
-    centre_box = np.empty((1, 6))
+    centre_boxes = np.empty((n + 1, 6))  # the centroid box of each pending node
+    bins = np.empty((3 * BINS, 6))
+    counts = np.empty(3 * BINS, dtype=np.intp)
+    sweep = np.empty((2, 6))
+    right_areas = np.empty(BINS - 1)
+    _node_boxes(boxes, 0, n, bounds, 0, centre_boxes, 0)
     pending[0, 0], pending[0, 1], pending[0, 2], pending[0, 3] = 0, 0, n, 1
     top = 1
     used = 1
@@ -133,27 +196,30 @@ def build_bvh(boxes, centroids, order, bounds, links):
         node, start = pending[top, 0], pending[top, 1]
         stop, level = pending[top, 2], pending[top, 3]
         depth = max(depth, level)
-        _empty_box(bounds, node)
-        _empty_box(centre_box, 0)
-        for p in range(start, stop):
-            _grow(bounds, node, boxes, order[p])
-            for axis in range(3):
-                c = centroids[order[p], axis]
-                centre_box[0, axis] = min(centre_box[0, axis], c)
-                centre_box[0, 3 + axis] = max(centre_box[0, 3 + axis], c)
         count = stop - start
         middle = start
+        # The children are pushed as pending[top + 1] (the left, built first) and
+        # pending[top]; their boxes go straight to bounds[used] and bounds[used + 1].
         if count > 2:
             axis, last, cost = _best_split(
-                boxes, centroids, order, start, stop, centre_box, bins, sweep, counts
+                boxes, start, stop, centre_boxes, top, bins, counts, sweep, right_areas
             )
             area = _area(bounds, node)
             leaf_cost = float(count)
             split_cost = NODE_COST + (cost / area if area > 0.0 else leaf_cost)
             if axis >= 0 and (split_cost < leaf_cost or count > MAX_LEAF):
-                middle = _partition(centroids, order, start, stop, axis, centre_box, last)
+                _empty_box(bounds, used)
+                _empty_box(bounds, used + 1)
+                for b in range(BINS):
+                    if counts[axis * BINS + b] > 0:
+                        _grow(bounds, used + (b > last), bins, axis * BINS + b)
+                middle = _partition(
+                    boxes, order, start, stop, axis, last, centre_boxes, top + 1, top
+                )
             elif count > MAX_LEAF:
                 middle = (start + stop) // 2  # coincident centroids: any halving will do
+                _node_boxes(boxes, start, middle, bounds, used, centre_boxes, top + 1)
+                _node_boxes(boxes, middle, stop, bounds, used + 1, centre_boxes, top)
         if middle == start:
             links[node, 0] = start
             links[node, 1] = count
@@ -171,45 +237,55 @@ def build_bvh(boxes, centroids, order, bounds, links):
     return used, depth
 
 
-@njit
-def _partition(centroids, order, start, stop, axis, centre_box, last):
-    """Move the primitives of bins 0..last to the front of order[start:stop]; return the split."""
-    low = centre_box[0, axis]
-    scale = BINS / (centre_box[0, 3 + axis] - low)
+@njit(refcount=False)
+def _partition(boxes, order, start, stop, axis, last, centre_boxes, left, right):
+    """Move the primitives of bins 0..last to the front of [start, stop); return the split.
+
+    ``order`` and ``boxes`` are reordered together. The centroid box of the node, read from
+    ``centre_boxes[right]``, is replaced by those of the two sides: ``centre_boxes[left]``
+    and ``centre_boxes[right]``.
+    """
+    low = centre_boxes[right, axis]
+    scale = _bin_scale(centre_boxes, right, axis)
+    # The sides' centroid boxes, kept in registers.
+    left_low = right_low = (math.inf, math.inf, math.inf)
+    left_high = right_high = (-math.inf, -math.inf, -math.inf)
     i = start
     j = stop - 1
     while i <= j:
-        if _bin_of(centroids, order[i], axis, low, scale) <= last:
+        if _bin_index(_centroid(boxes, i, axis), low, scale) <= last:
+            left_low, left_high = _add_centroid(left_low, left_high, boxes, i)
             i += 1
         else:
+            right_low, right_high = _add_centroid(right_low, right_high, boxes, i)
             order[i], order[j] = order[j], order[i]
+            for field in range(6):
+                boxes[i, field], boxes[j, field] = boxes[j, field], boxes[i, field]
             j -= 1
+    _set_box(centre_boxes, left, left_low, left_high)
+    _set_box(centre_boxes, right, right_low, right_high)
     return i
 
 
 @njit
-def triangle_boxes(tris, boxes, centroids):
-    """Write the bounding box (T, 6) and the box centre (T, 3) of every triangle of tris (T, 9)."""
+def triangle_boxes(tris, boxes):
+    """Write the bounding box (T, 6) of every triangle of tris (T, 9)."""
     for i in range(tris.shape[0]):
         for axis in range(3):
             a, b, c = tris[i, axis], tris[i, 3 + axis], tris[i, 6 + axis]
-            low = min(a, min(b, c))
-            high = max(a, max(b, c))
-            boxes[i, axis] = low
-            boxes[i, 3 + axis] = high
-            centroids[i, axis] = 0.5 * (low + high)
+            boxes[i, axis] = min(a, min(b, c))
+            boxes[i, 3 + axis] = max(a, max(b, c))
 
 
 def warmup() -> None:
     """Compile the BVH build, both traversals and the public batch kernels on one triangle."""
     tris = np.array([[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0]])
     boxes = np.empty((1, 6))
-    centroids = np.empty((1, 3))
-    triangle_boxes(tris, boxes, centroids)
+    triangle_boxes(tris, boxes)
     order = np.empty(1, dtype=np.intp)
     bounds = np.empty((2, 6))
     links = np.empty((2, 2), dtype=np.intp)
-    _, depth = build_bvh(boxes, centroids, order, bounds, links)
+    _, depth = build_bvh(boxes, order, bounds, links)
     source = np.zeros(1, dtype=np.intp)
     rays = np.array([[0.2, 0.2, 1.0]])
     down = np.array([[0.0, 0.0, -1.0]])

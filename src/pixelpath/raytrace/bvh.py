@@ -117,13 +117,12 @@ class BVH:
         start = time.perf_counter()
         count = len(corners)
         boxes = np.empty((count, 6))
-        centroids = np.empty((count, 3))
-        _bvh_kernels.triangle_boxes(corners, boxes, centroids)
+        _bvh_kernels.triangle_boxes(corners, boxes)
         order = np.empty(count, dtype=np.intp)
         bounds = np.empty((max(2 * count, 1), 6))
         links = np.empty((max(2 * count, 1), 2), dtype=np.intp)
         used, depth = (0, 0) if count == 0 else _bvh_kernels.build_bvh(
-            boxes, centroids, order, bounds, links
+            boxes, order, bounds, links
         )
         return cls(
             bounds=np.ascontiguousarray(bounds[:used]),
