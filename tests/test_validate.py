@@ -7,12 +7,28 @@ from hypothesis import given
 from hypothesis import strategies as st
 from hypothesis.extra import numpy as hnp
 
-from pixelpath._validate import cross3, row_lengths, unit_rows
+from pixelpath._validate import all_finite, cross3, row_lengths, unit_rows
 from pixelpath.scene.mesh import bounding_box
 
 finite = st.floats(-1e150, 1e150, allow_nan=False, allow_infinity=False, allow_subnormal=True)
 vectors = hnp.arrays(np.float64, st.tuples(st.integers(1, 40), st.just(3)), elements=finite)
 vector = hnp.arrays(np.float64, 3, elements=finite)
+# rows near length 1 (kept as they are) and zero rows (left zero) beside any others
+near_unit = st.floats(0.57735026918962, 0.57735026918963)
+rows = st.one_of(
+    st.tuples(finite, finite, finite),
+    st.tuples(near_unit, near_unit, near_unit),
+    st.just((0.0, 0.0, 0.0)),
+    st.just((-0.0, 1.0, 0.0)),
+)
+any_floats = st.floats(allow_nan=True, allow_infinity=True)
+
+
+def numpys_unit_rows(points):
+    """unit_rows as it was written with NumPy's broadcasting (the reference for its bits)."""
+    lengths = np.linalg.norm(points, axis=-1, keepdims=True)
+    unit = np.abs(lengths - 1.0) <= 4.0 * np.finfo(np.float64).eps
+    return np.where(unit, points, points / np.where(lengths == 0.0, 1.0, lengths))
 
 
 @given(vectors)
@@ -27,12 +43,37 @@ def test_cross3_is_numpys_cross_bit_for_bit(a, b):
     np.testing.assert_array_equal(cross3(a, b), np.cross(a, b))
 
 
+@given(vectors, vector)
+def test_cross3_of_rows_is_numpys_cross_bit_for_bit(rows_, b):
+    np.testing.assert_array_equal(cross3(rows_, b), np.cross(rows_, b))
+    np.testing.assert_array_equal(cross3(b, rows_), np.cross(b, rows_))
+    np.testing.assert_array_equal(cross3(rows_, rows_[::-1]), np.cross(rows_, rows_[::-1]))
+
+
 @given(vectors)
 def test_unit_rows_have_unit_length_and_keep_unit_rows_as_they_are(points):
     points = points[np.linalg.norm(points, axis=1) > 1e-100]
     unit = unit_rows(points)
     np.testing.assert_allclose(np.linalg.norm(unit, axis=1), 1.0, rtol=1e-12)
     np.testing.assert_array_equal(unit_rows(unit), unit)
+
+
+@given(st.lists(rows, min_size=1, max_size=40))
+def test_unit_rows_are_numpys_broadcast_division_bit_for_bit(listed):
+    points = np.array(listed, dtype=np.float64)
+    expected = numpys_unit_rows(points)
+    np.testing.assert_array_equal(unit_rows(points), expected)
+    np.testing.assert_array_equal(unit_rows(points, row_lengths(points)), expected)
+    np.testing.assert_array_equal(unit_rows(points[0]), expected[0])
+    # the same signs of zero, which assert_array_equal does not tell apart
+    np.testing.assert_array_equal(np.signbit(unit_rows(points)), np.signbit(expected))
+    np.testing.assert_array_equal(np.signbit(unit_rows(points[0])), np.signbit(expected[0]))
+
+
+@given(hnp.arrays(np.float64, hnp.array_shapes(min_dims=0, max_dims=3, max_side=6),
+                  elements=any_floats))
+def test_all_finite_is_numpys_isfinite_all(array):
+    assert all_finite(array) == bool(np.isfinite(array).all())
 
 
 @given(vectors)

@@ -15,6 +15,11 @@ import numpy as np
 # almost always a typo that would otherwise try to allocate tens of gigabytes.
 MAX_IMAGE_SIDE = 16384
 
+# Up to this many elements (a 4 x 4 matrix) checks run on Python floats: each NumPy call costs
+# a microsecond or two whatever the size, many times the work a few floats need.
+_FEW = 16
+_UNIT_SLACK = 4.0 * float(np.finfo(np.float64).eps)  # a row this close to length 1 is kept
+
 
 def frozen(array: np.ndarray) -> np.ndarray:
     """Return ``array`` marked read-only, so records that hold it stay immutable."""
@@ -58,16 +63,34 @@ def float_array(value: Any, name: str, shape: tuple[int | None, ...]) -> np.ndar
         array = np.array(value, dtype=np.float64)
     except (TypeError, ValueError):
         raise TypeError(f"{name} must be an array of numbers, got {_describe(value)}") from None
-    if array.ndim != len(shape) or any(
-        n is not None and n != m for n, m in zip(shape, array.shape, strict=True)
+    got = array.shape
+    if got != shape and (  # an exact match needs no element-wise look (it is the usual case)
+        len(got) != len(shape)
+        or any(n is not None and n != m for n, m in zip(shape, got, strict=True))
     ):
         sizes = ["n" if n is None else str(n) for n in shape]
         expected = "(" + ", ".join(sizes) + ("," if len(sizes) == 1 else "") + ")"
         raise ValueError(f"{name} must have shape {expected}, got shape {array.shape}")
-    if not np.isfinite(array).all():
+    if not all_finite(array):
         bad = np.argwhere(~np.isfinite(array))[0]
         raise ValueError(f"{name} must be finite, got {array[tuple(bad)]} at index {tuple(bad)}")
     return array
+
+
+def all_finite(array: np.ndarray) -> bool:
+    """Return whether every element of ``array`` is finite (``np.isfinite(array).all()``).
+
+    A few elements (up to 16) are checked as Python floats, quicker than NumPy's reduction.
+
+    Examples
+    --------
+    >>> from pixelpath._validate import all_finite
+    >>> all_finite(np.array([1.0, 2.0, 3.0])), all_finite(np.array([1.0, np.nan]))
+    (True, False)
+    """
+    if array.size <= _FEW:
+        return all(map(math.isfinite, array.ravel().tolist()))
+    return bool(np.isfinite(array).all())
 
 
 def vector3(value: Any, name: str) -> np.ndarray:
@@ -75,15 +98,34 @@ def vector3(value: Any, name: str) -> np.ndarray:
     return frozen(float_array(value, name, (3,)))
 
 
-def unit_rows(vectors: np.ndarray) -> np.ndarray:
+def unit_rows(vectors: np.ndarray, lengths: np.ndarray | None = None) -> np.ndarray:
     """Return the rows of ``vectors`` scaled to unit length.
 
     Rows already of unit length (to 4 ulp) are kept as they are, so normalizing twice gives the
-    same bits and records survive ``to_dict``/``from_dict`` round trips exactly.
+    same bits and records survive ``to_dict``/``from_dict`` round trips exactly. ``vectors`` is
+    a float64 (3,) vector or (..., 3) array; the caller that has their ``row_lengths`` already
+    may pass them as ``lengths`` (used for (..., 3) arrays).
+
+    Examples
+    --------
+    >>> from pixelpath._validate import unit_rows
+    >>> unit_rows(np.array([[3.0, 0.0, 4.0], [0.0, 0.0, 0.0]])).tolist()
+    [[0.6, 0.0, 0.8], [0.0, 0.0, 0.0]]
     """
-    lengths = row_lengths(vectors)
-    unit = np.abs(lengths - 1.0) <= 4.0 * np.finfo(np.float64).eps
-    return np.where(unit, vectors, vectors / np.where(lengths == 0.0, 1.0, lengths))
+    if vectors.ndim == 1:  # one vector: the same arithmetic in Python floats, 20 times quicker
+        x, y, z = vectors.tolist()
+        length = math.sqrt((x * x + y * y) + z * z)
+        if abs(length - 1.0) <= _UNIT_SLACK or length == 0.0:
+            return vectors.copy()
+        return np.array([x / length, y / length, z / length])
+    lengths = (row_lengths(vectors) if lengths is None else lengths)[..., 0]
+    keep = (np.abs(lengths - 1.0) <= _UNIT_SLACK) | (lengths == 0.0)
+    divisor = np.where(keep, 1.0, lengths)  # x / 1.0 is x, bit for bit
+    # column by column: dividing (n, 3) by (n, 1) runs NumPy's inner loop three elements long
+    unit = np.empty(vectors.shape)
+    for axis in range(3):
+        np.divide(vectors[..., axis], divisor, out=unit[..., axis])
+    return unit
 
 
 def row_lengths(vectors: np.ndarray) -> np.ndarray:
@@ -103,24 +145,32 @@ def row_lengths(vectors: np.ndarray) -> np.ndarray:
 
 
 def cross3(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """Return the cross product of two 3-vectors, as ``np.cross`` computes it, bit for bit.
+    """Return the cross product of 3-vectors, as ``np.cross`` computes it, bit for bit.
 
-    ``np.cross`` spends some 60 microseconds on two 3-vectors preparing its axes.
+    ``a`` and ``b`` are float64 (3,) vectors or (..., 3) arrays that broadcast together.
+    ``np.cross`` spends some 30 microseconds preparing its axes; two vectors take a
+    microsecond here, in Python floats.
 
     Examples
     --------
     >>> from pixelpath._validate import cross3
     >>> cross3(np.array([1.0, 0.0, 0.0]), np.array([0.0, 1.0, 0.0])).tolist()
     [0.0, 0.0, 1.0]
+    >>> cross3(np.array([[1.0, 0.0, 0.0]]), np.array([0.0, 0.0, 1.0])).tolist()
+    [[0.0, -1.0, 0.0]]
     """
-    (a0, a1, a2), (b0, b1, b2) = a.tolist(), b.tolist()
-    return np.array([a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0])
+    if a.ndim == 1 and b.ndim == 1:
+        (a0, a1, a2), (b0, b1, b2) = a.tolist(), b.tolist()
+        return np.array([a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0])
+    a0, a1, a2 = a[..., 0], a[..., 1], a[..., 2]
+    b0, b1, b2 = b[..., 0], b[..., 1], b[..., 2]
+    return np.stack([a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0], axis=-1)
 
 
 def unit_vector3(value: Any, name: str) -> np.ndarray:
     """Return ``value`` normalized to unit length; a zero vector is a ValueError."""
     vector = float_array(value, name, (3,))
-    if not vector.any():
+    if not any(vector.tolist()):
         raise ValueError(f"{name} must not be the zero vector")
     return frozen(unit_rows(vector))
 
@@ -128,7 +178,7 @@ def unit_vector3(value: Any, name: str) -> np.ndarray:
 def colour(value: Any, name: str) -> np.ndarray:
     """Return an (r, g, b) colour; components must be finite and non-negative."""
     rgb = float_array(value, name, (3,))
-    if (rgb < 0.0).any():
+    if min(rgb.tolist()) < 0.0:
         raise ValueError(f"{name} components must be non-negative (>= 0), got {rgb.tolist()}")
     return frozen(rgb)
 
