@@ -108,8 +108,10 @@ with the file's path:
 
 from __future__ import annotations
 
+import functools
 import importlib.util
 import io
+import itertools
 import json
 import math
 import re
@@ -121,10 +123,11 @@ from urllib.parse import unquote
 
 import numpy as np
 
+from pixelpath import _validate as v
 from pixelpath.scene.camera import Camera
 from pixelpath.scene.lights import DirectionalLight, PointLight
 from pixelpath.scene.material import Material
-from pixelpath.scene.mesh import Mesh, bounding_box
+from pixelpath.scene.mesh import Mesh, bounding_box, moved
 from pixelpath.scene.scene import Scene
 from pixelpath.scene.texture import Texture, srgb_to_linear
 
@@ -400,7 +403,8 @@ def _world_matrix(parent: dict[str, tuple[str, np.ndarray]], node: str) -> np.nd
     return fix_rigid(matrix, max_deviance=1e-5)  # trimesh repairs near-rigid transforms
 
 
-def _make_resolver_class() -> type:
+@functools.cache  # built on first use, once: trimesh imports slowly, and a class costs 40 µs
+def _resolver_class() -> type:
     from trimesh.resolvers import FilePathResolver
 
     class ConfinedResolver(FilePathResolver):
@@ -427,7 +431,7 @@ def _make_resolver_class() -> type:
 
 
 def _confined_resolver(path: Path) -> Any:
-    return _make_resolver_class()(path)  # the class is built here: trimesh imports slowly
+    return _resolver_class()(path)
 
 
 def _outside(uri: str, folder: Path) -> bool:
@@ -444,7 +448,8 @@ def _outside(uri: str, folder: Path) -> bool:
 
 def _checked_gltf(path: Path, data: bytes) -> dict:
     """Return the glTF JSON in ``data``, the bytes of ``path``, after the URI and size checks."""
-    header, binary = _glb_parts(path, data) if path.suffix.lower() == ".glb" else (data, None)
+    glb = path.suffix.lower() == ".glb"
+    header, binary_length = _glb_parts(path, data) if glb else (data, None)
     try:
         gltf = json.loads(header)
     except (UnicodeDecodeError, json.JSONDecodeError) as exc:
@@ -464,26 +469,28 @@ def _checked_gltf(path: Path, data: bytes) -> dict:
                     "only data: URIs and relative paths inside it are read"
                 )
     _check_extensions(path, gltf)
-    _check_accessors(path, gltf, len(binary) if binary is not None else None)
+    _check_accessors(path, gltf, binary_length)
     return gltf
 
 
-def _glb_parts(path: Path, data: bytes) -> tuple[bytes, bytes | None]:
-    """Split a GLB into its JSON chunk and binary chunk, checking the chunk lengths."""
+def _glb_parts(path: Path, data: bytes) -> tuple[bytes, int | None]:
+    """Return a GLB's JSON chunk and its binary chunk's length (None: no binary chunk).
+
+    The chunk lengths are checked; the binary chunk is not copied (trimesh reads it).
+    """
     if len(data) < 20 or data[:4] != b"glTF":
         raise ValueError(f"{path}: not a GLB file (no 'glTF' header)")
     _, length = struct.unpack("<II", data[4:12])
     json_length, json_type = struct.unpack("<II", data[12:20])
     if length > len(data) or json_type != 0x4E4F534A or 20 + json_length > len(data):
         raise ValueError(f"{path}: truncated or corrupt GLB (the chunk lengths do not fit)")
-    rest = data[20 + json_length :]
-    binary = None
-    if len(rest) >= 8:
-        bin_length = struct.unpack("<I", rest[:4])[0]
-        if bin_length > len(rest) - 8:
+    rest = 20 + json_length  # where the binary chunk's header starts
+    binary_length = None
+    if len(data) - rest >= 8:
+        binary_length = struct.unpack_from("<I", data, rest)[0]
+        if binary_length > len(data) - rest - 8:
             raise ValueError(f"{path}: truncated GLB (the binary chunk is cut short)")
-        binary = rest[8 : 8 + bin_length]
-    return data[20 : 20 + json_length], binary
+    return data[20 : 20 + json_length], binary_length
 
 
 def _list(path: Path, gltf: dict, key: str) -> list[dict]:
@@ -497,9 +504,7 @@ def _check_extensions(path: Path, gltf: dict) -> None:
     required = gltf.get("extensionsRequired", [])
     if not isinstance(required, list):
         raise ValueError(f"{path}: glTF 'extensionsRequired' must be a list")
-    known = set(_KNOWN_REQUIRED)
-    if importlib.util.find_spec("DracoPy") is not None:  # trimesh decodes Draco with it
-        known.add("KHR_draco_mesh_compression")
+    known = _decodable_extensions()
     unsupported = [name for name in required if name not in known]
     if unsupported:
         raise ValueError(
@@ -507,6 +512,14 @@ def _check_extensions(path: Path, gltf: dict) -> None:
             "pixelpath (through trimesh) cannot decode; re-export the model without it "
             "(for example with gltf-transform)"
         )
+
+
+@functools.cache  # looking for DracoPy costs 50 µs: once per process
+def _decodable_extensions() -> frozenset[str]:
+    """Return the required glTF extensions a file may name: those trimesh can decode here."""
+    if importlib.util.find_spec("DracoPy") is not None:  # trimesh decodes Draco with it
+        return frozenset({*_KNOWN_REQUIRED, "KHR_draco_mesh_compression"})
+    return frozenset(_KNOWN_REQUIRED)
 
 
 def _check_accessors(path: Path, gltf: dict, binary_length: int | None) -> None:
@@ -576,7 +589,7 @@ def _mesh(path: Path, part: _Part, name: str, gltf: dict | None, shared: dict) -
         normals = normals if np.all(np.isfinite(normals)) else None
     matrix = np.asarray(part.matrix, dtype=np.float64)
     linear, shift = matrix[:3, :3], matrix[:3, 3]
-    vertices = vertices @ linear.T + shift
+    vertices = moved(vertices, linear, shift)
     if normals is not None:
         normals = normals @ np.linalg.inv(linear)  # the inverse transpose, row by row
     if np.linalg.det(linear) < 0.0:  # a mirroring node: keep faces counter-clockwise outside
@@ -911,6 +924,14 @@ def _bounds_of(objects: list[Mesh]) -> np.ndarray:
     return bounding_box(np.vstack([mesh.vertices for mesh in objects]))
 
 
+def _center(bounds: np.ndarray) -> np.ndarray:
+    """Return the centre of the (2, 3) box ``bounds``: ``bounds.mean(axis=0)``, bit for bit.
+
+    NumPy's mean sums the two rows, then divides by 2, at several times the cost of that sum.
+    """
+    return (bounds[0] + bounds[1]) / 2.0
+
+
 def framing_camera(bounds: Any, size: tuple[int, int] = DEFAULT_SIZE, fov: float = 45.0) -> Camera:
     """Return a camera that shows the whole box ``bounds`` from the front and a little above.
 
@@ -935,7 +956,7 @@ def framing_camera(bounds: Any, size: tuple[int, int] = DEFAULT_SIZE, fov: float
     ([0.0, 0.0, 0.0], 800, 600)
     """
     bounds = np.asarray(bounds, dtype=np.float64)
-    center = bounds.mean(axis=0)
+    center = _center(bounds)
     radius = max(float(np.linalg.norm(bounds[1] - bounds[0])) / 2.0, 1e-9)
     elevation = math.radians(ELEVATION)
     back = np.array([0.0, math.sin(elevation), math.cos(elevation)])  # from the centre to the eye
@@ -970,14 +991,16 @@ def framing_distance(
     """
     bounds = np.asarray(bounds, dtype=np.float64)
     back = np.asarray(back, dtype=np.float64)
-    right = np.cross(np.asarray(up, dtype=np.float64), back)
-    right /= np.linalg.norm(right, axis=-1, keepdims=True)
-    camera_up = np.cross(back, right)
+    right = v.cross3(np.asarray(up, dtype=np.float64), back)
+    right /= v.row_lengths(right)
+    camera_up = v.cross3(back, right)
     width, height = size
     tan_v = math.tan(math.radians(fov) / 2.0) * FILL
     tan_h = tan_v * width / height
-    corners = np.array(np.meshgrid(*bounds.T, indexing="ij")).reshape(3, -1).T
-    offset = corners - bounds.mean(axis=0)  # (8, 3), against axes (3,) or (n, 3)
+    # the box's 8 corners, x slowest, laid out column by column as np.meshgrid gave them: the
+    # products with the axes below go through BLAS, whose rounding depends on the layout
+    corners = np.array(list(zip(*itertools.product(*bounds.T.tolist()), strict=True))).T
+    offset = corners - _center(bounds)  # (8, 3), against axes (3,) or (n, 3)
     x, y, z = (np.moveaxis(offset @ axis.T, 0, -1) for axis in (right, camera_up, back))
     radius = max(float(np.linalg.norm(bounds[1] - bounds[0])) / 2.0, 1e-9)
     # a corner at (x, y, z) in the camera's frame is inside when |x| <= tan_h (d - z), ...
@@ -1011,10 +1034,14 @@ def light_rig(camera: Camera) -> list[DirectionalLight]:
     >>> [light.intensity for light in light_rig(framing_camera([[0, 0, 0], [1, 1, 1]]))]
     [0.75, 0.3, 0.25]
     """
-    right, up, back = camera.basis()
+    axes = list(zip(*(axis.tolist() for axis in camera.basis()), strict=True))
     rig = (((-0.6, 0.7, 0.8), 0.75), ((0.8, -0.1, 0.6), 0.3), ((0.2, 0.8, -0.9), 0.25))
+    # -(a right + b up + c back) in Python floats: NumPy's operations on 3-vectors cost more
     return [
-        DirectionalLight(direction=-(a * right + b * up + c * back), intensity=intensity)
+        DirectionalLight(
+            direction=[-(a * right + b * up + c * back) for right, up, back in axes],
+            intensity=intensity,
+        )
         for (a, b, c), intensity in rig
     ]
 
@@ -1044,12 +1071,17 @@ def _world_matrices(gltf: dict) -> dict[int, np.ndarray]:
 def _local_matrix(node: dict) -> np.ndarray:
     if "matrix" in node:
         return np.asarray(node["matrix"], dtype=np.float64).reshape(4, 4).T  # column-major
+    if not _TRS.intersection(node):  # what the product below gives, without its 50 µs
+        return np.eye(4)
     import trimesh.transformations as tf
 
     matrix = tf.translation_matrix(node.get("translation", (0.0, 0.0, 0.0)))
     x, y, z, w = node.get("rotation", (0.0, 0.0, 0.0, 1.0))
     matrix = matrix @ tf.quaternion_matrix((w, x, y, z))
     return matrix @ np.diag([*node.get("scale", (1.0, 1.0, 1.0)), 1.0])
+
+
+_TRS = frozenset({"translation", "rotation", "scale"})
 
 
 def _file_camera(gltf: dict, bounds: np.ndarray, size: tuple[int, int] | None) -> Camera | None:
@@ -1066,9 +1098,9 @@ def _file_camera(gltf: dict, bounds: np.ndarray, size: tuple[int, int] | None) -
 
 def _camera(spec: dict, matrix: np.ndarray, bounds: np.ndarray, size: Any) -> Camera | None:
     eye = matrix[:3, 3]
-    axes = matrix[:3, :3] / np.linalg.norm(matrix[:3, :3], axis=0)  # the node's scale is ignored
+    axes = matrix[:3, :3] / v.row_lengths(matrix[:3, :3].T)[:, 0]  # the node's scale is ignored
     forward, up = -axes[:, 2], axes[:, 1]
-    center = bounds.mean(axis=0)
+    center = _center(bounds)
     radius = float(np.linalg.norm(bounds[1] - bounds[0])) / 2.0
     reach = float(np.linalg.norm(center - eye)) + radius  # beyond it nothing is drawn
     target = eye + forward * max(float(np.dot(center - eye, forward)), 1e-3 * reach, 1e-6)
@@ -1092,7 +1124,7 @@ def _camera(spec: dict, matrix: np.ndarray, bounds: np.ndarray, size: Any) -> Ca
     aspect = perspective.get("aspectRatio")
     if size is None:
         width = round(DEFAULT_SIZE[1] * float(aspect)) if aspect else DEFAULT_SIZE[0]
-        size = (int(np.clip(width, 1, 16384)), DEFAULT_SIZE[1])
+        size = (min(max(width, 1), v.MAX_IMAGE_SIDE), DEFAULT_SIZE[1])
     near = float(perspective["znear"])
     far = float(perspective.get("zfar") or max(2.0 * reach, near * 2.0))
     return Camera(
@@ -1112,7 +1144,7 @@ def _file_lights(gltf: dict, bounds: np.ndarray) -> list[PointLight | Directiona
     defined = gltf.get("extensions", {}).get("KHR_lights_punctual", {}).get("lights", [])
     if not defined:
         return []
-    center = bounds.mean(axis=0)
+    center = _center(bounds)
     found: list[tuple[str, Any, float, Any]] = []
     for node, matrix in sorted(_world_matrices(gltf).items()):
         ref = gltf["nodes"][node].get("extensions", {}).get("KHR_lights_punctual", {})
