@@ -113,9 +113,11 @@ FOLLOWS: dict[str, str] = {"shade": "back"}
 # kernels: the report of that module counts theirs too (a file split by concern keeps one
 # warm-up, and one line in ``pixelpath warmup``, for its parts).
 COMPILED_WITH: dict[str, tuple[str, ...]] = {
+    # The texture lookups serve the tracer too; the raster's groups come first in GROUPS.
     "pixelpath.raster._kernels": (
         "pixelpath.raster._setup_kernels",
         "pixelpath.raster._scan_kernels",
+        "pixelpath.scene._texture_kernels",
     ),
     "pixelpath.raytrace._bvh_kernels": (
         "pixelpath.raytrace._hit_kernels",
