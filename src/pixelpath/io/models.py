@@ -110,15 +110,15 @@ from __future__ import annotations
 
 import functools
 import importlib.util
-import io
 import itertools
 import json
 import math
+import os
 import re
 import struct
 import warnings
 from pathlib import Path
-from typing import Any, NamedTuple
+from typing import Any, BinaryIO, NamedTuple
 from urllib.parse import unquote
 
 import numpy as np
@@ -275,12 +275,16 @@ def _read_checked(path: Path) -> tuple[list[Mesh], dict | None]:
     suffix = path.suffix.lower()
     if suffix == ".stl":  # one mesh, no materials: pixelpath's own reader merges the soup
         return [Mesh.load(path, _plain_material())], None
-    data = path.read_bytes() if suffix in (".glb", ".gltf") else None  # read once, for both
-    gltf = _checked_gltf(path, data) if data is not None else None
     resolver = _confined_resolver(path)
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")  # trimesh's own warnings say nothing about our file
-        parts = _trimesh_parts(path, resolver, data)
+    if suffix in (".glb", ".gltf"):
+        # the checks read the JSON, then trimesh reads the file from its start: a GLB's binary
+        # chunk is read once, as trimesh.load reads it
+        with path.open("rb") as file:
+            gltf = _checked_gltf(path, file)
+            file.seek(0)
+            parts = _trimesh_parts(path, resolver, file)
+    else:
+        gltf, parts = None, _trimesh_parts(path, resolver, None)
     if resolver.refused:
         raise ValueError(f"{path}: refers to {resolver.refused[0]!r}, outside the file's folder")
     for name in resolver.missing:
@@ -304,11 +308,13 @@ class _Part(NamedTuple):
     colors: Any  # per-vertex colours as trimesh keeps them, or None
 
 
-def _trimesh_parts(path: Path, resolver: Any, gltf_data: bytes | None) -> list[_Part]:
+def _trimesh_parts(path: Path, resolver: Any, gltf_file: BinaryIO | None) -> list[_Part]:
     try:
-        if gltf_data is not None:
-            return _gltf_parts(path, resolver, gltf_data)
-        return _scene_parts(path, resolver)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # trimesh's own warnings say nothing about our file
+            if gltf_file is not None:
+                return _gltf_parts(path, resolver, gltf_file)
+            return _scene_parts(path, resolver)
     except Exception as exc:  # trimesh's parsers raise anything on a broken file
         raise ValueError(
             f"{path}: trimesh could not read this file ({type(exc).__name__}: {exc})"
@@ -337,7 +343,7 @@ def _scene_parts(path: Path, resolver: Any) -> list[_Part]:
     return parts
 
 
-def _gltf_parts(path: Path, resolver: Any, data: bytes) -> list[_Part]:
+def _gltf_parts(path: Path, resolver: Any, file: BinaryIO) -> list[_Part]:
     """Return the parts of a glTF file, from what trimesh's glTF reader returns.
 
     The reader's own output (arrays, visuals and the node graph's edges) is used as it is:
@@ -347,7 +353,7 @@ def _gltf_parts(path: Path, resolver: Any, data: bytes) -> list[_Part]:
     from trimesh.visual.color import to_rgba
 
     reader = load_glb if path.suffix.lower() == ".glb" else load_gltf
-    loaded = reader(file_obj=io.BytesIO(data), resolver=resolver)
+    loaded = reader(file_obj=file, resolver=resolver)
     geometries = loaded["geometry"]
     parent: dict[str, tuple[str, np.ndarray]] = {}
     named: dict[str, str] = {}
@@ -446,10 +452,10 @@ def _outside(uri: str, folder: Path) -> bool:
 # --- the glTF JSON, checked before trimesh reads anything ------------------------------------
 
 
-def _checked_gltf(path: Path, data: bytes) -> dict:
-    """Return the glTF JSON in ``data``, the bytes of ``path``, after the URI and size checks."""
+def _checked_gltf(path: Path, file: BinaryIO) -> dict:
+    """Return the glTF JSON of ``path``, open as ``file``, after the URI and size checks."""
     glb = path.suffix.lower() == ".glb"
-    header, binary_length = _glb_parts(path, data) if glb else (data, None)
+    header, binary_length = _glb_parts(path, file) if glb else (file.read(), None)
     try:
         gltf = json.loads(header)
     except (UnicodeDecodeError, json.JSONDecodeError) as exc:
@@ -473,24 +479,28 @@ def _checked_gltf(path: Path, data: bytes) -> dict:
     return gltf
 
 
-def _glb_parts(path: Path, data: bytes) -> tuple[bytes, int | None]:
+def _glb_parts(path: Path, file: BinaryIO) -> tuple[bytes, int | None]:
     """Return a GLB's JSON chunk and its binary chunk's length (None: no binary chunk).
 
-    The chunk lengths are checked; the binary chunk is not copied (trimesh reads it).
+    The chunk lengths are checked against the file's size; the binary chunk is left unread
+    (trimesh reads it).
     """
-    if len(data) < 20 or data[:4] != b"glTF":
+    size = os.fstat(file.fileno()).st_size
+    head = file.read(20)
+    if len(head) < 20 or head[:4] != b"glTF":
         raise ValueError(f"{path}: not a GLB file (no 'glTF' header)")
-    _, length = struct.unpack("<II", data[4:12])
-    json_length, json_type = struct.unpack("<II", data[12:20])
-    if length > len(data) or json_type != 0x4E4F534A or 20 + json_length > len(data):
+    _, length = struct.unpack("<II", head[4:12])
+    json_length, json_type = struct.unpack("<II", head[12:20])
+    if length > size or json_type != 0x4E4F534A or 20 + json_length > size:
         raise ValueError(f"{path}: truncated or corrupt GLB (the chunk lengths do not fit)")
+    header = file.read(json_length)
     rest = 20 + json_length  # where the binary chunk's header starts
     binary_length = None
-    if len(data) - rest >= 8:
-        binary_length = struct.unpack_from("<I", data, rest)[0]
-        if binary_length > len(data) - rest - 8:
+    if size - rest >= 8:
+        binary_length = struct.unpack("<I", file.read(4))[0]
+        if binary_length > size - rest - 8:
             raise ValueError(f"{path}: truncated GLB (the binary chunk is cut short)")
-    return data[20 : 20 + json_length], binary_length
+    return header, binary_length
 
 
 def _list(path: Path, gltf: dict, key: str) -> list[dict]:
