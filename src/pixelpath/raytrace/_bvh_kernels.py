@@ -107,7 +107,7 @@ def _node_boxes(boxes, start, stop, bounds, node, centre_boxes, c):
 
 
 @njit(refcount=False)
-def _best_split(boxes, start, stop, centre_boxes, c, bins, counts, sweep, right_areas):
+def _best_split(boxes, start, stop, centre_boxes, c, bins, counts, sweep, right_areas, filled):
     """Return (axis, last bin of the left side, SAH sum) of the best binned split; axis -1 if none.
 
     The primitives boxes[start:stop] (centroid box ``centre_boxes[c]``) are binned along the
@@ -141,28 +141,27 @@ def _best_split(boxes, start, stop, centre_boxes, c, bins, counts, sweep, right_
         if scales[axis] == 0.0:
             continue
         first = axis * BINS
-        # right_areas[b]: the area of bins b+1.., the right side of a split after bin b, swept
-        # in sweep[0]; the left side grows in sweep[1]. Only the splits after non-empty bins
-        # are costed: a split after an empty bin costs what the one before it does, and ties
-        # go to the first.
+        # The non-empty bins, in order, go to filled[:nonempty]: only the splits after them
+        # are costed (a split after an empty bin costs what the one before it does, and ties
+        # go to the first), and only their boxes are swept.
+        nonempty = 0
+        for b in range(BINS):
+            filled[nonempty] = b
+            nonempty += counts[first + b] > 0
+        # right_areas[k]: the area of filled bins k+1.., the right side of a split after filled
+        # bin k, swept in sweep[0]; the left side grows in sweep[1].
         _empty_box(sweep, 0)
-        for b in range(BINS - 1, 0, -1):
-            if counts[first + b] > 0:
-                _grow(sweep, 0, bins, first + b)
-            right_areas[b - 1] = _area(sweep, 0)
+        for k in range(nonempty - 1, 0, -1):
+            _grow(sweep, 0, bins, first + filled[k])
+            right_areas[k - 1] = _area(sweep, 0)
         _empty_box(sweep, 1)
         left_count = 0
-        for b in range(BINS - 1):
-            if counts[first + b] == 0:
-                continue
-            _grow(sweep, 1, bins, first + b)
-            left_count += counts[first + b]
-            right_count = stop - start - left_count
-            if right_count == 0:
-                break
-            cost = _area(sweep, 1) * left_count + right_areas[b] * right_count
+        for k in range(nonempty - 1):
+            _grow(sweep, 1, bins, first + filled[k])
+            left_count += counts[first + filled[k]]
+            cost = _area(sweep, 1) * left_count + right_areas[k] * (stop - start - left_count)
             if cost < best_cost:
-                best_axis, best_bin, best_cost = axis, b, cost
+                best_axis, best_bin, best_cost = axis, filled[k], cost
     return best_axis, best_bin, best_cost
 
 
@@ -186,6 +185,7 @@ def build_bvh(boxes, order, bounds, links):
     counts = np.empty(3 * BINS, dtype=np.intp)
     sweep = np.empty((2, 6))
     right_areas = np.empty(BINS - 1)
+    filled = np.empty(BINS, dtype=np.intp)
     _node_boxes(boxes, 0, n, bounds, 0, centre_boxes, 0)
     pending[0, 0], pending[0, 1], pending[0, 2], pending[0, 3] = 0, 0, n, 1
     top = 1
@@ -202,7 +202,7 @@ def build_bvh(boxes, order, bounds, links):
         # pending[top]; their boxes go straight to bounds[used] and bounds[used + 1].
         if count > 2:
             axis, last, cost = _best_split(
-                boxes, start, stop, centre_boxes, top, bins, counts, sweep, right_areas
+                boxes, start, stop, centre_boxes, top, bins, counts, sweep, right_areas, filled
             )
             area = _area(bounds, node)
             leaf_cost = float(count)
