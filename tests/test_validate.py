@@ -7,8 +7,8 @@ from hypothesis import given
 from hypothesis import strategies as st
 from hypothesis.extra import numpy as hnp
 
-from pixelpath._validate import all_finite, cross3, row_lengths, unit_rows
-from pixelpath.scene.mesh import bounding_box
+from pixelpath._validate import all_finite, cross3, row_lengths, unit_rows, vector_length
+from pixelpath.scene.mesh import bounding_box, moved
 
 finite = st.floats(-1e150, 1e150, allow_nan=False, allow_infinity=False, allow_subnormal=True)
 vectors = hnp.arrays(np.float64, st.tuples(st.integers(1, 40), st.just(3)), elements=finite)
@@ -74,6 +74,19 @@ def test_unit_rows_are_numpys_broadcast_division_bit_for_bit(listed):
                   elements=any_floats))
 def test_all_finite_is_numpys_isfinite_all(array):
     assert all_finite(array) == bool(np.isfinite(array).all())
+
+
+@given(vectors)
+def test_vector_length_is_numpys_norm_bit_for_bit(points):
+    for vector in (points[0], points[:, 1], points.ravel()):  # contiguous, strided, longer
+        assert vector_length(vector) == float(np.linalg.norm(vector))
+
+
+@given(vectors, hnp.arrays(np.float64, (3, 3), elements=finite), vector)
+def test_moved_points_are_the_matrix_product_plus_the_shift_bit_for_bit(points, linear, shift):
+    expected = points @ linear.T + shift
+    np.testing.assert_array_equal(moved(points, linear, shift), expected)
+    np.testing.assert_array_equal(np.signbit(moved(points, linear, shift)), np.signbit(expected))
 
 
 @given(vectors)

@@ -967,7 +967,7 @@ def framing_camera(bounds: Any, size: tuple[int, int] = DEFAULT_SIZE, fov: float
     """
     bounds = np.asarray(bounds, dtype=np.float64)
     center = _center(bounds)
-    radius = max(float(np.linalg.norm(bounds[1] - bounds[0])) / 2.0, 1e-9)
+    radius = max(v.vector_length(bounds[1] - bounds[0]) / 2.0, 1e-9)
     elevation = math.radians(ELEVATION)
     back = np.array([0.0, math.sin(elevation), math.cos(elevation)])  # from the centre to the eye
     distance = framing_distance(bounds, back, size, fov)
@@ -1011,8 +1011,8 @@ def framing_distance(
     # products with the axes below go through BLAS, whose rounding depends on the layout
     corners = np.array(list(zip(*itertools.product(*bounds.T.tolist()), strict=True))).T
     offset = corners - _center(bounds)  # (8, 3), against axes (3,) or (n, 3)
-    x, y, z = (np.moveaxis(offset @ axis.T, 0, -1) for axis in (right, camera_up, back))
-    radius = max(float(np.linalg.norm(bounds[1] - bounds[0])) / 2.0, 1e-9)
+    x, y, z = ((offset @ axis.T).T for axis in (right, camera_up, back))  # (8,) or (n, 8)
+    radius = max(v.vector_length(bounds[1] - bounds[0]) / 2.0, 1e-9)
     # a corner at (x, y, z) in the camera's frame is inside when |x| <= tan_h (d - z), ...
     distance = np.max(np.maximum(z + np.abs(x) / tan_h, z + np.abs(y) / tan_v), axis=-1)
     distance = np.maximum(distance, radius * 1.01)
@@ -1111,8 +1111,8 @@ def _camera(spec: dict, matrix: np.ndarray, bounds: np.ndarray, size: Any) -> Ca
     axes = matrix[:3, :3] / v.row_lengths(matrix[:3, :3].T)[:, 0]  # the node's scale is ignored
     forward, up = -axes[:, 2], axes[:, 1]
     center = _center(bounds)
-    radius = float(np.linalg.norm(bounds[1] - bounds[0])) / 2.0
-    reach = float(np.linalg.norm(center - eye)) + radius  # beyond it nothing is drawn
+    radius = v.vector_length(bounds[1] - bounds[0]) / 2.0
+    reach = v.vector_length(center - eye) + radius  # beyond it nothing is drawn
     target = eye + forward * max(float(np.dot(center - eye, forward)), 1e-3 * reach, 1e-6)
     if spec.get("type") == "orthographic":
         ortho = spec["orthographic"]

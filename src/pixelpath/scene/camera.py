@@ -133,13 +133,13 @@ class Camera(Record):
         ([-1.0, 0.0, 0.0], [0.0, 0.0, -1.0])
         """
         backward = self.eye - self.target
-        distance = float(np.linalg.norm(backward))
+        distance = v.vector_length(backward)
         if distance == 0.0:
             raise ValueError(f"eye and target must differ, both are {self.eye.tolist()}")
         w = backward / distance
         right = v.cross3(self.up, w)
-        length = float(np.linalg.norm(right))
-        if length <= 1e-12 * max(float(np.linalg.norm(self.up)), 1e-300):
+        length = v.vector_length(right)
+        if length <= 1e-12 * max(v.vector_length(self.up), 1e-300):
             raise ValueError(
                 f"up {self.up.tolist()} must not be parallel to the viewing direction "
                 f"{(-w).tolist()}"
