@@ -365,6 +365,7 @@ def _gltf_parts(path: Path, resolver: Any, file: BinaryIO) -> list[_Part]:
         if "geometry" in edge:
             named[node] = edge["geometry"]
     parts = []
+    known: dict[tuple, Any] = {}  # what _world_matrix found, for parts under the same nodes
     for node in order:
         name = named.get(node)
         kwargs = geometries.get(name) if name is not None else None
@@ -381,7 +382,7 @@ def _gltf_parts(path: Path, resolver: Any, file: BinaryIO) -> list[_Part]:
             _Part(
                 node,
                 name,
-                _world_matrix(parent, node),
+                _world_matrix(parent, node, known),
                 kwargs["vertices"],
                 kwargs["faces"],
                 normals,
@@ -395,8 +396,15 @@ def _gltf_parts(path: Path, resolver: Any, file: BinaryIO) -> list[_Part]:
 _IDENTITY = np.eye(4)
 
 
-def _world_matrix(parent: dict[str, tuple[str, np.ndarray]], node: str) -> np.ndarray:
-    """Return ``node``'s world transform as trimesh's scene graph computes it, to the bit."""
+def _world_matrix(
+    parent: dict[str, tuple[str, np.ndarray]], node: str, known: dict[tuple, Any]
+) -> np.ndarray:
+    """Return ``node``'s world transform as trimesh's scene graph computes it, to the bit.
+
+    ``known`` keeps, for the nodes' other parts, which edge matrices are identities and the
+    transform of each chain of matrices, by the matrices' ids (they live as long as
+    ``parent``): the primitives of one glTF mesh are parts under the same node.
+    """
     from trimesh.transformations import fix_rigid
 
     chain = []
@@ -404,9 +412,20 @@ def _world_matrix(parent: dict[str, tuple[str, np.ndarray]], node: str) -> np.nd
         node, matrix = parent[node]
         chain.append(matrix)
     if len(chain) > 1:  # trimesh drops identities and multiplies the rest, root first
-        chain = [m for m in reversed(chain) if np.abs(m - _IDENTITY).max() > 1e-8] or [_IDENTITY]
-    matrix = np.linalg.multi_dot(chain) if len(chain) > 1 else chain[0]
-    return fix_rigid(matrix, max_deviance=1e-5)  # trimesh repairs near-rigid transforms
+        chain = [m for m in reversed(chain) if not _identity(m, known)] or [_IDENTITY]
+    key = ("world", *map(id, chain))
+    if key not in known:
+        matrix = np.linalg.multi_dot(chain) if len(chain) > 1 else chain[0]
+        known[key] = fix_rigid(matrix, max_deviance=1e-5)  # trimesh repairs near-rigid ones
+    return known[key]
+
+
+def _identity(matrix: np.ndarray, known: dict[tuple, Any]) -> bool:
+    """Whether trimesh's scene graph takes the edge ``matrix`` for the identity (and drops it)."""
+    key = ("identity", id(matrix))
+    if key not in known:
+        known[key] = not np.abs(matrix - _IDENTITY).max() > 1e-8
+    return known[key]
 
 
 @functools.cache  # built on first use, once: trimesh imports slowly, and a class costs 40 µs
@@ -600,14 +619,23 @@ def _mesh(path: Path, part: _Part, name: str, gltf: dict | None, shared: dict) -
     matrix = np.asarray(part.matrix, dtype=np.float64)
     linear, shift = matrix[:3, :3], matrix[:3, 3]
     vertices = moved(vertices, linear, shift)
-    if normals is not None:
-        normals = normals @ np.linalg.inv(linear)  # the inverse transpose, row by row
-    if np.linalg.det(linear) < 0.0:  # a mirroring node: keep faces counter-clockwise outside
-        faces = faces[:, ::-1]
+    # parts under one node share its matrix (the same object): invert it once
+    node = id(part.matrix)
+    if normals is not None:  # the inverse transpose, row by row
+        normals = normals @ _once(shared, ("inverse", node), np.linalg.inv, linear)
+    if _once(shared, ("det", node), np.linalg.det, linear) < 0.0:
+        faces = faces[:, ::-1]  # a mirroring node: keep faces counter-clockwise outside
     material = _material(path, part.visual, gltf, shared)
     uv = _uv(part.visual, len(vertices))
     colors = _vertex_colors(part.colors, len(vertices), linear=gltf is not None)
     return Mesh(vertices, faces, material, normals, colors, uv, name)
+
+
+def _once(shared: dict, key: tuple, function: Any, argument: Any) -> Any:
+    """Return ``function(argument)``, computed once per ``key`` in the loader's per-file cache."""
+    if key not in shared:
+        shared[key] = function(argument)
+    return shared[key]
 
 
 def _uv(visual: Any, count: int) -> np.ndarray | None:
@@ -649,13 +677,10 @@ def _material(path: Path, visual: Any, gltf: dict | None, shared: dict) -> Mater
 
 def _pbr_material(path: Path, source: Any, gltf: dict | None, shared: dict) -> Material:
     """Map a glTF metallic-roughness material onto the notes' Phong model (see the table)."""
-    factor = source.baseColorFactor
-    rgba = np.ones(4) if factor is None else np.asarray(factor, dtype=np.float64)
-    if rgba.max() > 1.0 or np.asarray(factor).dtype.kind in "ui":
-        rgba = rgba / 255.0  # trimesh keeps the factor as 8-bit RGBA
+    rgba = _base_color(source.baseColorFactor)
     metallic = 1.0 if source.metallicFactor is None else float(source.metallicFactor)
     roughness = 1.0 if source.roughnessFactor is None else float(source.roughnessFactor)
-    metallic, roughness = (_fraction(x) for x in (metallic, roughness))
+    metallic, roughness = _fraction(metallic), _fraction(roughness)
     mode = (source.alphaMode or "OPAQUE").upper()
     alpha_cutoff = _alpha_cutoff(source, mode)
     texture = _texture(path, source.baseColorTexture, shared, keep_alpha=mode != "OPAQUE")
@@ -666,7 +691,7 @@ def _pbr_material(path: Path, source: Any, gltf: dict | None, shared: dict) -> M
         texture_filter, texture_wrap = _sampler(path, source, gltf, shared)
     kd = 1.0 - 0.6 * metallic
     return Material(
-        color=np.clip(rgba[:3], 0.0, 1.0),
+        color=rgba[:3],
         ka=kd,
         kd=kd,
         ks=(1.0 - roughness) ** 2 * (0.25 + 0.75 * metallic),
@@ -680,6 +705,20 @@ def _pbr_material(path: Path, source: Any, gltf: dict | None, shared: dict) -> M
         alpha=_fraction(rgba[3]) if mode == "MASK" else 1.0,
         alpha_cutoff=alpha_cutoff,
     )
+
+
+def _base_color(factor: Any) -> np.ndarray:
+    """Return trimesh's ``baseColorFactor`` (None or 8-bit RGBA) as floats, RGB within [0, 1]."""
+    if factor is None:
+        return np.ones(4)
+    raw = np.asarray(factor)
+    if raw.dtype == np.uint8:  # as trimesh keeps it: k / 255 lies in [0, 1], nothing to clip
+        return raw / 255.0
+    rgba = raw.astype(np.float64)
+    if rgba.max() > 1.0 or raw.dtype.kind in "ui":
+        rgba = rgba / 255.0  # 8-bit values
+    rgba[:3] = np.clip(rgba[:3], 0.0, 1.0)
+    return rgba
 
 
 def _fraction(value: Any) -> float:
