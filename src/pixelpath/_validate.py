@@ -57,10 +57,15 @@ def image_side(value: Any, name: str) -> int:
     return side
 
 
-def float_array(value: Any, name: str, shape: tuple[int | None, ...]) -> np.ndarray:
-    """Return a finite float64 copy of ``value`` with the given shape (``None`` = any length)."""
+def float_array(
+    value: Any, name: str, shape: tuple[int | None, ...], *, copy: bool = True
+) -> np.ndarray:
+    """Return a finite float64 copy of ``value`` with the given shape (``None`` = any length).
+
+    With ``copy=False`` a float64 array comes back as it is, for callers that only read it.
+    """
     try:
-        array = np.array(value, dtype=np.float64)
+        array = np.array(value, dtype=np.float64) if copy else np.asarray(value, np.float64)
     except (TypeError, ValueError):
         raise TypeError(f"{name} must be an array of numbers, got {_describe(value)}") from None
     got = array.shape

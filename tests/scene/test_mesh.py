@@ -92,6 +92,16 @@ def test_given_normals_are_normalized_and_used():
     np.testing.assert_allclose(mesh.vertex_normals, [[0, 0, 1]] * 3 + [[0, 0.6, 0.8]])
 
 
+def test_given_arrays_stay_the_callers_and_the_mesh_keeps_its_own_read_only_copies():
+    vertices, normals = np.array(SQUARE, dtype=float), np.array([[0.0, 0.0, 1.0]] * 4)
+    mesh = Mesh(vertices, [[0, 1, 2, 3]], normals=normals)
+    assert vertices.flags.writeable and normals.flags.writeable
+    assert not np.shares_memory(mesh.normals, normals)
+    assert not mesh.normals.flags.writeable and not mesh.vertices.flags.writeable
+    normals[0] = (1.0, 0.0, 0.0)
+    np.testing.assert_array_equal(mesh.normals[0], [0.0, 0.0, 1.0])
+
+
 def test_degenerate_face_has_a_zero_normal_and_no_nan():
     mesh = Mesh([[0, 0, 0], [1, 0, 0], [2, 0, 0], [0, 1, 0]], [[0, 1, 2], [0, 1, 3]])
     np.testing.assert_array_equal(mesh.face_normals[0], [0, 0, 0])

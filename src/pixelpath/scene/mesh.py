@@ -333,7 +333,7 @@ def _index_list(face: Any, number: int) -> np.ndarray:
 
 
 def _given_normals(normals: Any, vertex_count: int) -> np.ndarray:
-    array = v.float_array(normals, "normals", (vertex_count, 3))
+    array = v.float_array(normals, "normals", (vertex_count, 3), copy=False)  # only read
     lengths = v.row_lengths(array)
     if not lengths.all():  # a zero vector has length 0 (and so may a tiny one): look closer
         zero = (array[:, 0] == 0.0) & (array[:, 1] == 0.0) & (array[:, 2] == 0.0)
