@@ -7,6 +7,10 @@
   (Embree's single ``run`` call traces on one) and on all of Numba's, and the fraction of rays
   on which pixelpath and Embree report the same triangle (or both a miss). The tree is built
   before timing; its build time is reported on its own line.
+* A million-triangle build: ``BVH.build`` (one thread) of a 708×708 height field (999,698
+  triangles) beside Embree's construction of a scene of the same triangles (the scene, its
+  ``TriangleMesh`` and the first ``run`` of one ray, where Embree builds its tree on all
+  cores), taking turns.
 * The shadowed bunny: ``render(method="raytrace")`` at 1024² with one point light, a diffuse
   material and one sample per pixel (primary and shadow rays, shading, the image), beside
   Mitsuba 3's ``scalar_rgb`` and ``llvm_ad_rgb`` variants with the ``direct`` integrator (one
@@ -186,6 +190,59 @@ def bench_primary(mesh: pp.Mesh, size: int, repeat: int) -> None:
     )
 
 
+def height_field(side: int = 708) -> tuple[np.ndarray, np.ndarray]:
+    """Vertices and triangles of a rippled side × side grid: 2 (side - 1)² triangles."""
+    xs = np.linspace(-1.0, 1.0, side)
+    gx, gy = np.meshgrid(xs, xs)
+    gz = 0.1 * np.sin(5 * gx) * np.cos(4 * gy)
+    vertices = np.stack([gx.ravel(), gy.ravel(), gz.ravel()], axis=1)
+    rows, cols = np.meshgrid(np.arange(side - 1), np.arange(side - 1), indexing="ij")
+    v = (rows * side + cols).ravel()
+    triangles = np.concatenate(
+        [np.stack([v, v + 1, v + side + 1], axis=1), np.stack([v, v + side + 1, v + side], axis=1)]
+    )
+    return vertices, triangles
+
+
+def bench_large_build(vertices: np.ndarray, triangles: np.ndarray, repeat: int) -> None:
+    calls = [lambda: BVH.build(vertices, triangles)]
+    embree = importlib.util.find_spec("embreex") is not None
+    if embree:
+        from embreex import rtcore_scene
+        from embreex.mesh_construction import TriangleMesh
+
+        vertices32, triangles32 = vertices.astype(np.float32), triangles.astype(np.int32)
+        origin = np.array([[0.1, 0.1, 1.0]], dtype=np.float32)
+        down = np.array([[0.0, 0.0, -1.0]], dtype=np.float32)
+
+        def embree_build() -> tuple[float, float]:
+            """Build a scene (Embree builds its tree at the first run); return the two parts."""
+            start = time.perf_counter()
+            scene = rtcore_scene.EmbreeScene()
+            TriangleMesh(scene, vertices32, triangles32)
+            mesh = time.perf_counter()
+            scene.run(origin, down, output=1)
+            return mesh - start, time.perf_counter() - mesh
+
+        calls.append(embree_build)
+    timings = interleaved(repeat, calls)
+    stats = timings[0].result.statistics()
+    print(
+        f"  BVH build, 1 thread     {1000 * timings[0].best:8.1f} ms  (CPU "
+        f"{1000 * timings[0].best_cpu:.0f} ms; {stats['nodes']:,} nodes, depth {stats['depth']}, "
+        f"SAH cost {stats['SAH cost']:.1f})"
+    )
+    if not embree:
+        print("  Embree skipped: embreex is not installed (pip install embreex)")
+        return
+    mesh, tree = timings[1].result
+    print(
+        f"  Embree scene (embreex)  {1000 * timings[1].best:8.1f} ms  (CPU "
+        f"{1000 * timings[1].best_cpu:.0f} ms; last call: TriangleMesh {1000 * mesh:.0f} ms, "
+        f"tree at the first run {1000 * tree:.0f} ms)"
+    )
+
+
 def bench_shadowed(mesh: pp.Mesh, path: Path | None, size: int, repeat: int) -> None:
     camera = framed_camera(mesh, size, size)
     low, high = mesh.bounds()
@@ -301,6 +358,9 @@ def main() -> None:
     bench_shadowed(mesh, path, args.size, args.repeat)
     print(f"\n{label}: {len(mesh.triangles):,} triangles, {args.size}² primary rays")
     bench_primary(mesh, args.size, args.repeat)
+    vertices, triangles = height_field()
+    print(f"\nheight field: {len(triangles):,} triangles, BVH construction")
+    bench_large_build(vertices, triangles, args.repeat)
     height = args.size * 3 // 4
     print(f"\nshowcase (chrome and glass spheres) at {args.size}x{height}, max_depth 5")
     bench_showcase(args.size, height, args.repeat)
