@@ -1,13 +1,14 @@
-"""Compiled colour conversions: one parallel pass over flat, interleaved pixel buffers.
+"""Compiled colour conversions: one pass over a span of flat, interleaved pixel buffers.
 
-:func:`convert_pixels` takes the pixels as flat 1-D arrays (``r0 g0 b0 r1 g1 b1 ...``), cuts them
-into chunks and runs one conversion loop per chunk, in parallel. Each loop reads a pixel, scales
-it (1/255 for uint8, 1/65535 for uint16, 1 for floats), notes whether a component is not
-finite, converts it and writes it. The arithmetic runs in the output's precision — the type of
-``scale``, from which every constant is derived (:func:`numbers`) — so a float32 image is
-converted with full-width float32 vectors, as OpenCV does, and a float64 one to full double
-precision. A pixel is
-read whole before it is written, so the output may be the input's own buffer.
+:func:`convert_span` takes the pixels as flat 1-D arrays (``r0 g0 b0 r1 g1 b1 ...``) and runs
+one conversion loop over them; :mod:`pixelpath.color.models` hands runs of a big image to it
+from several threads (serial kernels that release the GIL: a ``parallel=True`` loop took four
+times as long to compile, and started Numba's own thread pool on the first call). The loop
+reads a pixel, scales it (1/255 for uint8, 1/65535 for uint16, 1 for floats), notes whether a
+component is not finite, converts it and writes it. The arithmetic runs in the output's precision —
+the type of ``scale``, from which every constant is derived (:func:`numbers`) — so a float32 image
+is converted with full-width float32 vectors, as OpenCV does, and a float64 one to full double
+precision. A pixel is read whole before it is written, so the output may be the input's own buffer.
 
 Written this way — flat arrays indexed ``3*i + k`` from zero, no data-dependent branches
 (conditional expressions on cheap values become selects) — LLVM vectorizes the loops; indexing
@@ -32,7 +33,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from pixelpath._jit import njit, prange
+from pixelpath._jit import njit
 
 AFFINE = 0
 RGB_TO_HSV = 1
@@ -42,7 +43,7 @@ HSL_TO_RGB = 4
 RGB_TO_CMYK = 5
 CMYK_TO_RGB = 6
 
-# Pixels per parallel work item.
+# Images of at most this many pixels are converted on the calling thread alone.
 CHUNK = 8192
 
 
@@ -218,30 +219,6 @@ def convert_span(src, dst, scale, op, matrix, offset):
     return cmyk_to_rgb_span(src, dst, scale)
 
 
-@njit(parallel=True)
-def convert_pixels(src, dst, src_channels, dst_channels, scale, op, matrix, offset):
-    """Convert flat ``src`` (N·src_channels,) into flat ``dst``; return whether any is not finite.
-
-    A flag, not a count: an OR in the loops vectorizes beside float32 arithmetic, where a 64-bit
-    count does not; the caller counts the bad colours when there are some.
-    """
-    n = src.shape[0] // src_channels
-    chunks = (n + CHUNK - 1) // CHUNK
-    bad = np.zeros(chunks, dtype=np.bool_)
-    for chunk in prange(chunks):
-        lo = chunk * CHUNK
-        hi = min(n, lo + CHUNK)
-        bad[chunk] = convert_span(
-            src[src_channels * lo : src_channels * hi],
-            dst[dst_channels * lo : dst_channels * hi],
-            scale,
-            op,
-            matrix,
-            offset,
-        )
-    return bad.any()
-
-
 def warmup() -> None:
     """Compile the kernel for every pair of input and result dtypes the public API passes it."""
     matrix = np.eye(3)
@@ -258,6 +235,3 @@ def warmup() -> None:
         dst = np.zeros(3, dtype=out_dtype)
         one = out_dtype(1.0)
         convert_span(src, dst, one, AFFINE, matrix.astype(out_dtype), offset.astype(out_dtype))
-        convert_pixels(
-            src, dst, 3, 3, one, AFFINE, matrix.astype(out_dtype), offset.astype(out_dtype)
-        )

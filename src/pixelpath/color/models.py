@@ -195,7 +195,7 @@ def _apply(
             # One chunk's worth: waking the thread pool would cost more than the work.
             bad = _kernels.convert_span(flat_src, flat_dst, *args)
         else:
-            bad = _kernels.convert_pixels(flat_src, flat_dst, src.shape[-1], dst_channels, *args)
+            bad = _convert_in_threads(flat_src, flat_dst, src.shape[-1], dst_channels, args)
     if bad:
         count = np.count_nonzero(~np.isfinite(src).all(axis=-1))
         raise ValueError(
@@ -203,6 +203,26 @@ def _apply(
             "mask or replace them before converting"
         )
     return result
+
+
+def _convert_in_threads(
+    src: np.ndarray, dst: np.ndarray, src_channels: int, dst_channels: int, args: tuple
+) -> bool:
+    """Run ``convert_span`` on runs of whole pixels from several threads; whether any was bad."""
+    from pixelpath._threads import in_threads
+    from pixelpath.color import _kernels
+
+    flags = []
+
+    def convert(start: int, stop: int) -> None:
+        flags.append(_kernels.convert_span(
+            src[src_channels * start : src_channels * stop],
+            dst[dst_channels * start : dst_channels * stop],
+            *args,
+        ))
+
+    in_threads(convert, len(src) // src_channels)
+    return any(flags)
 
 
 def _same_model(
