@@ -13,11 +13,11 @@ from hypothesis import strategies as st
 from pixelpath.clip import (
     Rect,
     ZeroWidthBridgeWarning,
-    _kernels,
     clip_flat,
     clip_polygons,
     sutherland_hodgman,
 )
+from pixelpath.clip.batch import _SERIAL_VERTICES, _clip_batch
 
 WINDOW = Rect(-0.5, -0.4, 0.6, 0.5)
 
@@ -53,10 +53,26 @@ def test_results_too_big_for_their_staging_slot_are_clipped_again():
     coords = np.concatenate(polygons)
     offsets = np.array([0, 3, 12, 42])
     # slot_scale=0 gives every polygon an empty staging slot: all are clipped again in pass 3.
-    out, out_offsets, status = _kernels.clip_many(coords, offsets, WINDOW.table, 2, 0)
-    assert not status.any()
+    out, out_offsets = _clip_batch(coords, offsets, WINDOW.table, slot_scale=0)
     for i, expected in enumerate(one_by_one(polygons, WINDOW)):
         np.testing.assert_array_equal(out[out_offsets[i] : out_offsets[i + 1]], expected)
+
+
+def test_a_batch_big_enough_for_the_threads_equals_one_by_one():
+    rng = np.random.default_rng(11)
+    sizes = rng.integers(3, 12, 1500)
+    assert sizes.sum() > _SERIAL_VERTICES  # handed out in runs to the threads
+    polygons = [c + rng.uniform(-0.3, 0.3, (n, 2)) for n, c in
+                zip(sizes, rng.uniform(-1, 1, (len(sizes), 2)), strict=True)]
+    results = clip_polygons(polygons, WINDOW)
+    fates = {"empty": 0, "clipped": 0, "unchanged": 0}
+    for polygon, got, expected in zip(polygons, results, one_by_one(polygons, WINDOW),
+                                      strict=True):
+        np.testing.assert_array_equal(got, expected)
+        kind = ("empty" if len(got) == 0 else "unchanged"
+                if got.shape == polygon.shape and np.array_equal(got, polygon) else "clipped")
+        fates[kind] += 1
+    assert min(fates.values()) > 50  # every pass had work to do
 
 
 def test_flat_interface_keeps_empty_results_in_the_offsets():

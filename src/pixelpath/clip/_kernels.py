@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from pixelpath._jit import njit, prange
+from pixelpath._jit import njit
 
 LEFT, RIGHT, BOTTOM, TOP, EDGE, PLANE = 0, 1, 2, 3, 4, 5
 
@@ -361,63 +361,61 @@ def trace_stage(src, row):
     return dst[:m].copy(), flags, crossings
 
 
-@njit(parallel=True)
-def clip_many(coords, offsets, table, chunks, slot_scale=1):
-    """Clip every polygon of a flat buffer; return ``(coords, offsets, status)``.
+# A batch of polygons (clip.batch.clip_flat) is clipped in three passes, each a serial kernel
+# over a range of polygons that several threads run on disjoint ranges (a parallel=True kernel
+# took five times as long to compile); the prefix sums between passes are NumPy's.
 
-    ``chunks`` groups of polygons are shared among the threads (a few per thread balances load).
-    Three parallel passes:
 
-    1. check each polygon and sort it by its bounding box: wholly outside a rectangle boundary
-       (nothing left), wholly inside every boundary (unchanged), or to be clipped;
-    2. clip the latter, each chunk with its own scratch buffers, into staging slots of
-       ``slot_scale * (n + K)`` rows given to those polygons only (so little memory is touched);
-    3. pack every result at its final offset; a result too big for its slot, which takes a
-       subject crossing the boundaries many times, is clipped again there.
+@njit
+def sort_subjects(coords, offsets, table, start, stop, status, fate):
+    """Pass 1, polygons start..stop-1: check each and sort it by its bounding box.
+
+    ``status[i]`` gets :func:`check_subject`'s verdict; ``fate[i]`` whether the polygon lies
+    wholly outside a boundary (nothing left; also for a bad polygon), wholly inside every
+    boundary (unchanged) or is to be clipped (``STRADDLES``).
     """
-    count = offsets.shape[0] - 1
-    chunks = max(1, min(count, chunks))
-    status = np.zeros(count, dtype=np.intp)
-    fate = np.empty(count, dtype=np.intp)
-    for c in prange(chunks):
-        for i in range(c * count // chunks, (c + 1) * count // chunks):
+    for i in range(start, stop):
+        xy = coords[offsets[i] : offsets[i + 1]]
+        status[i] = check_subject(xy)
+        fate[i] = _shortcut(xy, table) if status[i] == OK else WHOLLY_OUTSIDE
+
+
+@njit
+def clip_straddling(coords, offsets, table, fate, slot, start, stop, staging, sizes):
+    """Pass 2, polygons start..stop-1: clip those that straddle a boundary; note every size.
+
+    A result goes into its staging rows ``slot[i]:slot[i + 1]`` when it fits (a subject
+    crossing the boundaries many times may not: pass 3 clips it again where it belongs).
+    """
+    a = np.empty((256, 2))
+    b = np.empty((256, 2))
+    for i in range(start, stop):
+        if fate[i] == WHOLLY_INSIDE:
+            sizes[i] = offsets[i + 1] - offsets[i]
+        elif fate[i] == STRADDLES:
+            m, a, b = _run_stages(coords[offsets[i] : offsets[i + 1]], table, a, b)
+            sizes[i] = m if m >= 3 else 0
+            if 3 <= m <= slot[i + 1] - slot[i]:
+                staging[slot[i] : slot[i] + m] = b[:m]
+        else:
+            sizes[i] = 0
+
+
+@njit
+def pack_clipped(coords, offsets, table, fate, slot, staging, sizes, out_offsets, start, stop,
+                 out):
+    """Pass 3, polygons start..stop-1: copy each result to its final place ``out_offsets[i]``."""
+    for i in range(start, stop):
+        m, first = sizes[i], out_offsets[i]
+        if fate[i] == WHOLLY_INSIDE:
+            out[first : first + m] = coords[offsets[i] : offsets[i + 1]]
+        elif m > slot[i + 1] - slot[i]:
             xy = coords[offsets[i] : offsets[i + 1]]
-            status[i] = check_subject(xy)
-            fate[i] = _shortcut(xy, table) if status[i] == OK else WHOLLY_OUTSIDE
-    slot = np.zeros(count + 1, dtype=np.intp)
-    for i in range(count):
-        room = offsets[i + 1] - offsets[i] + table.shape[0] if fate[i] == STRADDLES else 0
-        slot[i + 1] = slot[i] + slot_scale * room
-    staging = np.empty((slot[count], 2))
-    sizes = np.zeros(count, dtype=np.intp)
-    for c in prange(chunks):
-        a = np.empty((256, 2))
-        b = np.empty((256, 2))
-        for i in range(c * count // chunks, (c + 1) * count // chunks):
-            if fate[i] == WHOLLY_INSIDE:
-                sizes[i] = offsets[i + 1] - offsets[i]
-            elif fate[i] == STRADDLES:
-                m, a, b = _run_stages(coords[offsets[i] : offsets[i + 1]], table, a, b)
-                sizes[i] = m if m >= 3 else 0
-                if 3 <= m <= slot[i + 1] - slot[i]:
-                    staging[slot[i] : slot[i] + m] = b[:m]
-    out_offsets = np.zeros(count + 1, dtype=np.intp)
-    for i in range(count):
-        out_offsets[i + 1] = out_offsets[i] + sizes[i]
-    out = np.empty((out_offsets[count], 2))
-    for c in prange(chunks):
-        for i in range(c * count // chunks, (c + 1) * count // chunks):
-            m, start = sizes[i], out_offsets[i]
-            if fate[i] == WHOLLY_INSIDE:
-                out[start : start + m] = coords[offsets[i] : offsets[i + 1]]
-            elif m > slot[i + 1] - slot[i]:
-                xy = coords[offsets[i] : offsets[i + 1]]
-                scratch = 2 * xy.shape[0] + 2
-                m, _, res = _run_stages(xy, table, np.empty((scratch, 2)), np.empty((scratch, 2)))
-                out[start : start + m] = res[:m]
-            elif m > 0:
-                out[start : start + m] = staging[slot[i] : slot[i] + m]
-    return out, out_offsets, status
+            scratch = 2 * xy.shape[0] + 2
+            m, _, res = _run_stages(xy, table, np.empty((scratch, 2)), np.empty((scratch, 2)))
+            out[first : first + m] = res[:m]
+        elif m > 0:
+            out[first : first + m] = staging[slot[i] : slot[i] + m]
 
 
 def warmup() -> None:
@@ -428,4 +426,13 @@ def warmup() -> None:
     sutherland_hodgman(square, rect)
     trace_stage(square, rect[0])
     bridges(square, rect)
-    clip_many(square, np.array([0, 4], dtype=np.intp), rect, 1)
+    offsets = np.array([0, 4], dtype=np.intp)
+    status = np.zeros(1, dtype=np.intp)
+    fate = np.empty(1, dtype=np.intp)
+    sort_subjects(square, offsets, rect, 0, 1, status, fate)
+    slot = np.array([0, 8], dtype=np.intp)
+    sizes = np.zeros(1, dtype=np.intp)
+    staging = np.empty((8, 2))
+    clip_straddling(square, offsets, rect, fate, slot, 0, 1, staging, sizes)
+    pack_clipped(square, offsets, rect, fate, slot, staging, sizes, offsets, 0, 1,
+                 np.empty((4, 2)))

@@ -1,4 +1,4 @@
-"""Batch Sutherland-Hodgman: many polygons, one compiled parallel pass.
+"""Batch Sutherland-Hodgman: many polygons, compiled passes run on several threads.
 
 The polygons travel as one flat ``(V, 2)`` coordinate buffer and an ``offsets`` array of
 ``P + 1`` indices (polygon ``i`` is ``coords[offsets[i]:offsets[i + 1]]``), the layout GIS tools
@@ -21,6 +21,8 @@ __all__ = ["clip_flat", "clip_polygons"]
 
 # Chunks of polygons per thread: enough to balance cheap (outside) and costly (crossing) ones.
 _CHUNKS_PER_THREAD = 16
+# Batches of fewer vertices are clipped on the calling thread alone.
+_SERIAL_VERTICES = 4096
 
 
 def clip_flat(
@@ -61,20 +63,57 @@ def clip_flat(
     >>> offsets.tolist()
     [0, 4, 4]
     """
-    import numba
-
     if not (type(coords) is np.ndarray and coords.dtype == np.float64 and coords.ndim == 2
             and coords.shape[1] == 2 and coords.flags.c_contiguous):
         coords = _validate.polygon_array(coords, "coords")
     offsets = _check_offsets(offsets, len(coords))
     table = window.table if type(window) is Rect else as_window(window).table
-    chunks = _CHUNKS_PER_THREAD * numba.get_num_threads()
-    out, out_offsets, status = _kernels.clip_many(coords, offsets, table, chunks)
+    return _clip_batch(coords, offsets, table)
+
+
+def _clip_batch(
+    coords: np.ndarray, offsets: np.ndarray, table: np.ndarray, slot_scale: int = 1
+) -> tuple[np.ndarray, np.ndarray]:
+    """Clip checked flat polygons against a boundary table in three passes; (coords, offsets).
+
+    1. check each polygon and sort it by its bounding box: wholly outside a boundary (nothing
+       left), wholly inside every boundary (unchanged), or to be clipped;
+    2. clip the latter into staging slots of ``slot_scale * (n + K)`` rows given to those
+       polygons only (so little memory is touched);
+    3. pack every result at its final offset; a result too big for its slot, which takes a
+       subject crossing the boundaries many times, is clipped again there.
+
+    Each pass runs its kernel on runs of polygons from several threads (one, for a small
+    batch: handing it to the threads would cost more than the work).
+    """
+    import numba
+
+    from pixelpath._threads import in_threads
+
+    count = len(offsets) - 1
+    runs = 1 if len(coords) < _SERIAL_VERTICES else _CHUNKS_PER_THREAD * numba.get_num_threads()
+    status = np.zeros(count, dtype=np.intp)
+    fate = np.empty(count, dtype=np.intp)
+    in_threads(lambda start, stop: _kernels.sort_subjects(
+        coords, offsets, table, start, stop, status, fate), count, runs=runs)
     bad = np.flatnonzero(status)
     if bad.size:
         i = int(bad[0])
         polygon = coords[offsets[i] : offsets[i + 1]]
         raise _validate.subject_error(int(status[i]), f"polygon {i}", polygon)
+    room = np.where(fate == _kernels.STRADDLES, np.diff(offsets) + len(table), 0)
+    slot = np.zeros(count + 1, dtype=np.intp)
+    np.cumsum(slot_scale * room, out=slot[1:])
+    staging = np.empty((slot[-1], 2))
+    sizes = np.empty(count, dtype=np.intp)
+    in_threads(lambda start, stop: _kernels.clip_straddling(
+        coords, offsets, table, fate, slot, start, stop, staging, sizes), count, runs=runs)
+    out_offsets = np.zeros(count + 1, dtype=np.intp)
+    np.cumsum(sizes, out=out_offsets[1:])
+    out = np.empty((out_offsets[-1], 2))
+    in_threads(lambda start, stop: _kernels.pack_clipped(
+        coords, offsets, table, fate, slot, staging, sizes, out_offsets, start, stop, out),
+        count, runs=runs)
     return out, out_offsets
 
 
