@@ -1053,7 +1053,7 @@ def framing_distance(
     x, y, z = ((offset @ axis.T).T for axis in (right, camera_up, back))  # (8,) or (n, 8)
     radius = max(v.vector_length(bounds[1] - bounds[0]) / 2.0, 1e-9)
     # a corner at (x, y, z) in the camera's frame is inside when |x| <= tan_h (d - z), ...
-    distance = np.max(np.maximum(z + np.abs(x) / tan_h, z + np.abs(y) / tan_v), axis=-1)
+    distance = np.maximum(z + np.abs(x) / tan_h, z + np.abs(y) / tan_v).max(axis=-1)
     distance = np.maximum(distance, radius * 1.01)
     return float(distance) if distance.ndim == 0 else distance
 

@@ -311,7 +311,7 @@ def _faces_to_ragged(faces: Any) -> tuple[np.ndarray, np.ndarray, int]:
         table = np.asarray(faces)
     except ValueError:  # ragged: polygons of several sizes
         table = None
-    if table is not None and table.ndim == 2 and np.issubdtype(table.dtype, np.integer):
+    if table is not None and table.ndim == 2 and table.dtype.kind in "iu":  # integers
         count, size = table.shape
         offsets = np.arange(count + 1, dtype=np.intp) * size
         return offsets, np.ascontiguousarray(table, dtype=np.intp).reshape(-1), size
