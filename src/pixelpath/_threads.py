@@ -1,7 +1,8 @@
 """Run a serial kernel on parts of its work from several threads at once.
 
-The render kernels are compiled without ``parallel=True``: Numba's parallel loops cost seconds
-more to compile on a first run, for no speed a thread pool does not give. The kernels release
+No kernel is compiled with ``parallel=True``: Numba's parallel loops cost seconds more to
+compile on a first run (a batch clip's five times, a colour conversion's four), for no speed a
+thread pool does not give, and started Numba's own pool on a first call. The kernels release
 the GIL (``nogil``), so runs of the work handed to them from Python threads go on in parallel.
 """
 

@@ -234,3 +234,18 @@ def test_agrees_with_numpy_reference_for_many_points_and_coloured_lights(model):
     # The sample is not trivial: some points see no light (ambient 0.1 x Ia x C only).
     ambient_only = np.all(np.isclose(rgb, [0.03, 0.01, 0.0025]), axis=1)
     assert 0 < ambient_only.sum() < len(rgb)
+
+
+def test_many_points_shaded_on_the_threads_equal_the_points_shaded_alone():
+    # Enough points to be handed out in runs to the threads; each must get its own shade.
+    rng = np.random.default_rng(4)
+    points = rng.uniform(-2.0, 2.0, (6000, 3))
+    normals = rng.normal(size=(6000, 3))
+    lamp = point_light((1.0, 3.0, 4.0), intensity=2.0, color=(1.0, 0.8, 0.5))
+    together = shade(points, normals, (0.0, 0.0, 6.0), ORANGE, [lamp], ambient=0.2)
+    alone = np.concatenate([
+        shade(points[k : k + 1000], normals[k : k + 1000], (0.0, 0.0, 6.0), ORANGE, [lamp],
+              ambient=0.2)
+        for k in range(0, 6000, 1000)
+    ])
+    np.testing.assert_array_equal(together, alone)

@@ -37,6 +37,7 @@ __all__ = ["PhongGeometry", "PhongTerms", "phong_geometry", "phong_terms", "refl
 _COSINE_SLACK = 1e-9
 
 MODELS = ("phong", "blinn")
+_SERIAL_POINTS = 4096  # shade() shades fewer points on the calling thread alone
 
 
 def _numeric(value: Any, name: str) -> np.ndarray:
@@ -437,20 +438,19 @@ def shade(
     packed_lights = pack_lights(lights)
     packed_ambient = pack_ambient(ambient)
 
+    from pixelpath._threads import in_threads
     from pixelpath.lighting._kernels import shade_many
 
     shape = point_array.shape
     flat_points = np.ascontiguousarray(point_array.reshape(-1, 3))
     flat_normals = np.ascontiguousarray(normal_array.reshape(-1, 3))
     out = np.empty_like(flat_points)
-    shade_many(
-        flat_points,
-        flat_normals,
-        eye_array,
-        packed_material,
-        packed_lights,
-        packed_ambient,
-        model == "blinn",
-        out,
-    )
+
+    def shade_run(start: int, stop: int) -> None:
+        shade_many(flat_points, flat_normals, eye_array, packed_material, packed_lights,
+                   packed_ambient, model == "blinn", start, stop, out)
+
+    # Few points are shaded on the calling thread: handing them out would cost more.
+    count = len(flat_points)
+    in_threads(shade_run, count, runs=1 if count < _SERIAL_POINTS else None)
     return out.reshape(shape)
