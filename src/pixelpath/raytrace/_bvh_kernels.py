@@ -59,9 +59,19 @@ def _grow(box, k, other, j):
 
 
 @njit(inline="always")
+def _centre(low, high):
+    """Return a primitive's centroid along an axis, the centre of its box's extent there.
+
+    The one formula for it: the binning and the partition must put a primitive in the same
+    bin, bit for bit.
+    """
+    return 0.5 * (low + high)
+
+
+@njit(inline="always")
 def _centroid(boxes, p, axis):
-    """Return the centre of box p of (n, 6) min/max rows along an axis: its centroid."""
-    return 0.5 * (boxes[p, axis] + boxes[p, 3 + axis])
+    """Return the centroid of box p of (n, 6) min/max rows along an axis."""
+    return _centre(boxes[p, axis], boxes[p, 3 + axis])
 
 
 @njit(inline="always")
@@ -73,7 +83,7 @@ def _bin_index(centre, low, scale):
 
 @njit(inline="always")
 def _bin_scale(centre_boxes, c, axis):
-    """Bins per unit length along an axis of the centroid box c; 0 when it has no extent."""
+    """Return the bins per unit length along an axis of centroid box c (0: no extent)."""
     extent = centre_boxes[c, 3 + axis] - centre_boxes[c, axis]
     return BINS / extent if extent > 0.0 else 0.0
 
@@ -128,7 +138,7 @@ def _best_split(boxes, start, stop, centre_boxes, c, bins, counts, sweep, right_
         # The box in registers: after each store to the bins the compiler would load it again.
         box = (boxes[p, 0], boxes[p, 1], boxes[p, 2], boxes[p, 3], boxes[p, 4], boxes[p, 5])
         for axis in range(3):
-            centre = 0.5 * (box[axis] + box[3 + axis])
+            centre = _centre(box[axis], box[3 + axis])
             b = axis * BINS + _bin_index(centre, lows[axis], scales[axis])
             counts[b] += 1
             for field in range(3):
