@@ -147,6 +147,48 @@ def test_bvh_of_a_large_mesh_is_shallow_and_cheap():
     assert stats["SAH cost"] < 100
 
 
+def coincident_and_scattered():
+    """Forty copies of one triangle (coincident centroids: halved, not binned) among others."""
+    rng = np.random.default_rng(2)
+    vertices = rng.uniform(-1, 1, (60, 3))
+    triangles = rng.integers(0, 60, (200, 3))
+    triangles[50:90] = triangles[50]
+    return vertices, triangles
+
+
+@pytest.mark.parametrize(
+    ("vertices", "triangles"),
+    [
+        (icosphere(3).vertices, icosphere(3).triangles),
+        (torus(0.7, 0.25, 24, 12).vertices, torus(0.7, 0.25, 24, 12).triangles),
+        coincident_and_scattered(),
+    ],
+    ids=["icosphere", "torus", "coincident"],
+)
+def test_bvh_nodes_bound_exactly_their_triangles(vertices, triangles):
+    # The build takes a node's box from its parent's bins: it must be, bit for bit, the box of
+    # the triangles below the node, and the leaves must hold every triangle once.
+    bvh = BVH.build(vertices, triangles)
+    assert np.array_equal(np.sort(bvh.order), np.arange(len(triangles)))
+    corners = vertices[triangles][bvh.order]
+    np.testing.assert_array_equal(bvh.corners, corners.reshape(-1, 9))
+    low, high = corners.min(axis=1), corners.max(axis=1)
+    expected = np.empty_like(bvh.bounds)
+    covered = np.zeros(len(triangles), dtype=int)
+    for k in range(len(bvh.links) - 1, -1, -1):  # children come after their parent
+        first, count = bvh.links[k]
+        if count:
+            expected[k] = np.concatenate([low[first:first + count].min(0),
+                                          high[first:first + count].max(0)])
+            covered[first:first + count] += 1
+        else:
+            assert first > k
+            pair = expected[first:first + 2]
+            expected[k] = np.concatenate([pair[:, :3].min(0), pair[:, 3:].max(0)])
+    np.testing.assert_array_equal(bvh.bounds, expected)
+    assert np.all(covered == 1)
+
+
 def test_coincident_centroids_still_build():
     tri = [[0, 1, 2]] * 40
     bvh = BVH.build([[0, 0, 0], [1, 0, 0], [0, 1, 0]], tri)
