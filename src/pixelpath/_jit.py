@@ -32,15 +32,13 @@ from numba.core.compiler_lock import global_compiler_lock
 from pixelpath._cache import cache_dir, enable_cache
 from pixelpath._precompiled import cache_root
 
-__all__ = ["cache_dir", "njit", "prange"]
-
-prange = numba.prange
+__all__ = ["cache_dir", "njit"]
 
 
 def njit(function: Callable | None = None, /, **options) -> Callable:
     """Compile a kernel with the project's defaults (cached on disk, ``fastmath`` off, nogil).
 
-    Used bare (``@njit``) or with Numba options (``@njit(parallel=True)``). ``simd=True``
+    Used bare (``@njit``) or with Numba options (``@njit(error_model="numpy")``). ``simd=True``
     compiles the kernel, and the kernels it calls that are compiled with it, with LLVM's SLP
     vectorizer (without ``fastmath`` it keeps every result bit for bit).
 
