@@ -615,7 +615,7 @@ def _mesh(path: Path, part: _Part, name: str, gltf: dict | None, shared: dict) -
     if part.normals is not None and np.shape(part.normals) == vertices.shape:
         # stored in the file: computing them would be a guess
         normals = np.asarray(part.normals, dtype=np.float64)
-        normals = normals if np.all(np.isfinite(normals)) else None
+        normals = normals if v.all_finite(normals) else None
     matrix = np.asarray(part.matrix, dtype=np.float64)
     linear, shift = matrix[:3, :3], matrix[:3, 3]
     vertices = moved(vertices, linear, shift)
@@ -643,7 +643,7 @@ def _uv(visual: Any, count: int) -> np.ndarray | None:
     if uv is None or np.shape(uv) != (count, 2):
         return None
     uv = np.asarray(uv, dtype=np.float64)
-    return uv if np.all(np.isfinite(uv)) else None
+    return uv if v.all_finite(uv) else None
 
 
 def _vertex_colors(colors: Any, count: int, *, linear: bool) -> np.ndarray | None:
@@ -787,7 +787,7 @@ def _mtl_color(value: Any, default: tuple[float, ...]) -> np.ndarray:
         return np.asarray(default)
     if color.size == 1:
         color = np.repeat(color, 3)
-    if color.size < 3 or not np.all(np.isfinite(color[:3])):
+    if color.size < 3 or not v.all_finite(color[:3]):
         return np.asarray(default)
     return np.clip(color[:3], 0.0, 1.0)
 
