@@ -37,6 +37,7 @@ from pixelpath.scene.texture import linear_to_srgb
 
 MODELS = Path(__file__).resolve().parents[1] / "tests" / "data" / "models"
 PARTS = ("zbuffer", "raytrace", "loading")
+LOADING_REPEATS = 300
 
 
 def spherical_uv(mesh: pp.Mesh) -> np.ndarray:
@@ -102,7 +103,7 @@ def bench_loading(models: Path, repeats: int) -> None:
     """Print pixelpath's and trimesh's loading times of the same files."""
     import trimesh
 
-    print("\nloading (median of repeats, after one warm-up load)")
+    print(f"\nloading (median of {repeats} loads, after one warm-up load)")
     for name in ("Duck.glb", "CesiumMilkTruck.glb"):
         path = models / name
         if not path.is_file():
@@ -120,7 +121,7 @@ def bench_loading(models: Path, repeats: int) -> None:
 
         ours = seconds(pp.load_scene)
         theirs = seconds(lambda p: trimesh.load(p, process=False))
-        print(f"  {name:20s} pixelpath {ours:7.1f} ms   trimesh.load {theirs:7.1f} ms   "
+        print(f"  {name:20s} pixelpath {ours:6.2f} ms   trimesh.load {theirs:6.2f} ms   "
               f"ratio {ours / theirs:.2f} (goal: at most 1.5)")
 
 
@@ -138,8 +139,9 @@ def main() -> None:
     print(f"pixelpath {pp.__version__}: numba {numba.__version__}, "
           f"{numba.get_num_threads()} threads; {os.cpu_count()} CPUs; "
           f"LP_NUM_THREADS={os.environ.get('LP_NUM_THREADS', 'default')}")
+    loading_repeats = max(args.frames, LOADING_REPEATS)  # a load takes milliseconds
     if "loading" in args.only and len(args.only) == 1:
-        bench_loading(args.models, repeats=max(args.frames, 5))
+        bench_loading(args.models, loading_repeats)
         return
     label, bunny = load_model("stanford-bunny.obj")
     cases = []
@@ -156,7 +158,7 @@ def main() -> None:
             bench_texturing(name, textured, plain, args.size // 2, max(args.frames // 2, 3),
                             method="raytrace")
     if "loading" in args.only:
-        bench_loading(args.models, repeats=max(args.frames, 5))
+        bench_loading(args.models, loading_repeats)
 
 
 if __name__ == "__main__":
