@@ -184,20 +184,20 @@ def build_bvh(boxes, order, bounds, links):
     receive the nodes (the first ``nodes`` rows are used). Built depth first with an explicit
     stack of pending nodes. A node's box, and the box of its primitives' centroids, come from
     its parent's split (the bins on each side, the partition), so each node takes one pass
-    over its primitives to bin them and one to partition them.
+    over its primitives to bin them and one to partition them; only the root and the halves
+    of a node with coincident centroids take a pass of their own to find theirs.
     """
     n = order.shape[0]
     for p in range(n):
         order[p] = p
-    pending = np.empty((n + 1, 4), dtype=np.intp)  # node, start, stop, depth
+    pending = np.empty((n + 1, 5), dtype=np.intp)  # node, start, stop, depth, boxes known
     centre_boxes = np.empty((n + 1, 6))  # the centroid box of each pending node
     bins = np.empty((3 * BINS, 6))
     counts = np.empty(3 * BINS, dtype=np.intp)
     sweep = np.empty((2, 6))
     right_areas = np.empty(BINS - 1)
     filled = np.empty(BINS, dtype=np.intp)
-    _node_boxes(boxes, 0, n, bounds, 0, centre_boxes, 0)
-    pending[0, 0], pending[0, 1], pending[0, 2], pending[0, 3] = 0, 0, n, 1
+    pending[0, 0], pending[0, 1], pending[0, 2], pending[0, 3], pending[0, 4] = 0, 0, n, 1, 0
     top = 1
     used = 1
     depth = 0
@@ -206,10 +206,15 @@ def build_bvh(boxes, order, bounds, links):
         node, start = pending[top, 0], pending[top, 1]
         stop, level = pending[top, 2], pending[top, 3]
         depth = max(depth, level)
+        if not pending[top, 4]:
+            # Here, not where the root and the halves are made: called there with constants,
+            # _node_boxes was compiled for their literal types too (0.35 s cold each).
+            _node_boxes(boxes, start, stop, bounds, node, centre_boxes, top)
         count = stop - start
         middle = start
         # The children are pushed as pending[top + 1] (the left, built first) and
         # pending[top]; their boxes go straight to bounds[used] and bounds[used + 1].
+        known = True
         if count > 2:
             axis, last, cost = _best_split(
                 boxes, start, stop, centre_boxes, top, bins, counts, sweep, right_areas, filled
@@ -228,20 +233,17 @@ def build_bvh(boxes, order, bounds, links):
                 )
             elif count > MAX_LEAF:
                 middle = (start + stop) // 2  # coincident centroids: any halving will do
-                _node_boxes(boxes, start, middle, bounds, used, centre_boxes, top + 1)
-                _node_boxes(boxes, middle, stop, bounds, used + 1, centre_boxes, top)
+                known = False
         if middle == start:
             links[node, 0] = start
             links[node, 1] = count
             continue
         links[node, 0] = used
         links[node, 1] = 0
-        pending[top, 0], pending[top, 1], pending[top, 2], pending[top, 3] = (
-            used + 1, middle, stop, level + 1
-        )
-        pending[top + 1, 0], pending[top + 1, 1], pending[top + 1, 2], pending[top + 1, 3] = (
-            used, start, middle, level + 1
-        )
+        pending[top, 0], pending[top, 1], pending[top, 2] = used + 1, middle, stop
+        pending[top + 1, 0], pending[top + 1, 1], pending[top + 1, 2] = used, start, middle
+        for side in range(top, top + 2):
+            pending[side, 3], pending[side, 4] = level + 1, known
         top += 2
         used += 2
     return used, depth
