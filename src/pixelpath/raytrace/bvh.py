@@ -219,10 +219,12 @@ class BVH:
             levels = self.depth + 1
 
             def trace(start: int, stop: int) -> None:
+                # The packet starts as zeros: a packet of fewer than LANES rays reads (and
+                # ignores) the rows it does not fill, which must hold numbers.
                 with slab_nan_allowed():
                     intersect_many(
                         self.bounds, self.links, self.corners, self.order, no_skip, False,
-                        labels, o, d, start, stop, np.empty((LANES, 9)),
+                        labels, o, d, start, stop, np.zeros((LANES, 9)),
                         np.empty(LANES, dtype=np.intp), np.empty(levels, dtype=np.intp),
                         np.empty(levels), np.empty((levels, LANES)), t, label,
                     )
