@@ -84,7 +84,10 @@ def reference_order(tree: BSPTree, eye) -> list[int]:
     return visit(0)
 
 
-@pytest.mark.parametrize("kind", ["interpenetrating", "separate"])
+# The interpenetrating scene's tree takes 10 s to build without the JIT: the main pass only.
+@pytest.mark.parametrize(
+    "kind", [pytest.param("interpenetrating", marks=pytest.mark.slow), "separate"]
+)
 def test_traversal_matches_the_recursive_definition(kind):
     tree = build_tree(scene_of(kind, seed=8))
     rng = np.random.default_rng(8)
@@ -98,7 +101,8 @@ def polygon_areas(vertices, triangles, polygon, count) -> np.ndarray:
     return np.bincount(polygon, weights=area, minlength=count)
 
 
-@pytest.mark.parametrize("seed", [1, 2])
+# Seed 1's tree takes 14 s to build without the JIT: the main pass only.
+@pytest.mark.parametrize("seed", [pytest.param(1, marks=pytest.mark.slow), 2])
 def test_splitting_keeps_area_and_every_fragment_on_its_side(seed):
     scene = scene_of("interpenetrating", seed)
     tree = build_tree(scene)
