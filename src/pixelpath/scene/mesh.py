@@ -287,8 +287,8 @@ def _ragged_faces(faces: Any, vertex_count: int) -> tuple[np.ndarray, np.ndarray
     offsets, indices, smallest = _faces_to_ragged(faces)
     if len(offsets) == 1:
         raise ValueError("faces is empty: a mesh needs at least one face")
-    # a minimum and a maximum find whether anything is wrong, quicker than masks of every
-    # element; the masks then say where
+    # the fewest corners of a face, and the indices' minimum and maximum, tell whether anything
+    # is wrong, quicker than masks of every element; the masks then say where
     if smallest < 3:
         sizes = np.diff(offsets)
         face = int(np.argmax(sizes < 3))
