@@ -3,11 +3,19 @@
 from __future__ import annotations
 
 import numpy as np
+import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 from hypothesis.extra import numpy as hnp
 
-from pixelpath._validate import all_finite, cross3, row_lengths, unit_rows, vector_length
+from pixelpath._validate import (
+    all_finite,
+    cross3,
+    float_array,
+    row_lengths,
+    unit_rows,
+    vector_length,
+)
 from pixelpath.scene.mesh import bounding_box, moved
 
 finite = st.floats(-1e150, 1e150, allow_nan=False, allow_infinity=False, allow_subnormal=True)
@@ -102,3 +110,13 @@ def test_row_lengths_sum_the_squares_in_numpys_order():
     assert (other_order != np.linalg.norm(points, axis=-1, keepdims=True)).any()
     np.testing.assert_array_equal(row_lengths(points), np.linalg.norm(points, axis=-1,
                                                                       keepdims=True))
+
+
+def test_float_array_copies_unless_told_not_to_and_checks_either_way():
+    values = np.array([[1.0, 2.0, 3.0]])
+    assert float_array(values, "x", (None, 3), copy=False) is values
+    assert not np.shares_memory(float_array(values, "x", (None, 3)), values)
+    assert float_array([[1, 2, 3]], "x", (None, 3), copy=False).dtype == np.float64
+    values[0, 1] = np.nan
+    with pytest.raises(ValueError, match="x must be finite, got nan at index"):
+        float_array(values, "x", (None, 3), copy=False)
