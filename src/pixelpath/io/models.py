@@ -199,7 +199,11 @@ def read_model(
     >>> [obj.name for obj in scene.objects]  # doctest: +SKIP
     ['LOD3spShape']
     """
-    path = _model_path(path)
+    return _model_scene(_model_path(path), size, frame)
+
+
+def _model_scene(path: Path, size: tuple[int, int] | None = None, frame: bool = False) -> Scene:
+    """:func:`read_model` of a ``path`` already checked (an existing file of a model format)."""
     objects, gltf = _read_objects(path)
     bounds = _bounds_of(objects)
     try:
@@ -970,6 +974,8 @@ def _missing_image_file(path: Path, gltf: Any, ref: Any) -> bool:
 
 
 def _bounds_of(objects: list[Mesh]) -> np.ndarray:
+    if len(objects) == 1:  # the same box, kept by the mesh for its renders
+        return objects[0].bounds()
     return bounding_box(np.vstack([mesh.vertices for mesh in objects]))
 
 

@@ -98,9 +98,9 @@ def load_scene(path: str | Path) -> Scene:
     if not path.is_file():
         raise FileNotFoundError(f"scene file not found: {path}")
     if path.suffix.lower() in (".glb", ".gltf", ".obj", ".ply", ".stl"):
-        from pixelpath.io.models import read_model  # it builds on this package: import late
+        from pixelpath.io.models import _model_scene  # it builds on this package: import late
 
-        return read_model(path)
+        return _model_scene(path)  # read_model without checking the path a second time
     try:
         text = path.read_text(encoding="utf-8")
     except UnicodeDecodeError as exc:
