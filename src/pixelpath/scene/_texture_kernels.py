@@ -104,14 +104,7 @@ def _neighbours(x, size, wrap):
     return wrapped(i, size, wrap), wrapped(i + 1, size, wrap), fraction
 
 
-# The lookups of one level and of a pixel's levels are kernels of their own, not inlined at
-# Numba's level: typed afresh into every caller, with their helpers, they made the z-buffer's
-# kernels take 38 s of CPU to compile instead of 20, and the ray tracer's 72 s instead of 45
-# (one caller, the alpha test, 13 s alone). LLVM still inlines them into their callers: the
-# machine code is the same. They allocate nothing and only read the tables they are given, so
-# they are compiled without reference counting, which would update the shared tables' counts
-# atomically per pixel.
-@njit(refcount=False)
+@njit(inline="always")
 def _bilinear(tables, level, wrap, u, v):
     """Bilinear blend of the four texels around (u, v) on one level."""
     start, width, height = tables.levels[level, 0], tables.levels[level, 1], tables.levels[level, 2]
@@ -162,7 +155,16 @@ def mip_level(tables, texture, footprint):
     return level, lod - level
 
 
-@njit(inline="always")
+# A kernel of its own, not inlined at Numba's level into its callers (the ray tracer's
+# surface colour, every alpha test): typed afresh into each of them with the lookups it
+# inlines, it made the z-buffer's kernels take 35 s of CPU to compile instead of 31 and the
+# ray tracer's 70 s instead of 48 (one caller, the alpha test, 13 s alone). A textured hit of
+# the ray tracer pays a call for it (2-3 % of a textured frame). The rasterizer's row loop,
+# where a call per pixel cost half a textured frame, inlines the lookups themselves
+# (sample_level, mip_level): as kernels of their own they stayed calls there. The
+# lookups allocate nothing and only read the tables they are given: compiled without reference
+# counting, which would update the shared tables' counts atomically per pixel.
+@njit(refcount=False)
 def sample(tables, texture, u, v, footprint):
     """Linear (r, g, b, a) of ``texture`` at (u, v), filtered for a pixel of ``footprint`` texels.
 
@@ -174,7 +176,7 @@ def sample(tables, texture, u, v, footprint):
     return sample_level(tables, texture, u, v, level, blend)
 
 
-@njit(refcount=False)
+@njit(inline="always")
 def sample_level(tables, texture, u, v, level, blend):
     """:func:`sample` once :func:`mip_level` has chosen the ``level`` and ``blend``."""
     first, wrap = tables.textures[texture, 0], tables.textures[texture, 3]
