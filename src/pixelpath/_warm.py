@@ -55,8 +55,9 @@ __all__ = [
 # Every kernel module's warm-up, the one registry of them. Group name -> (warm-up function as
 # "module:function", seconds it took to compile on the 2-core machine pixelpath is developed
 # on; only used to share out work and to say how long a first run will take, before anything
-# was measured here). Measured 2026-11-23: clip and color alone in one process, the others in
-# cold demos and renders that compile them in two processes side by side.
+# was measured here). Measured 2026-11-23 in cold demos and renders that compile them in two
+# processes side by side; clip and color alone in one process, and the ray tracer's three
+# groups one after the other in one process, on 2026-11-26.
 GROUPS: dict[str, tuple[str, float]] = {
     "front": ("pixelpath.raster._kernels:warm_front", 9.0),
     "vertex-shading": ("pixelpath.raster._kernels:warm_vertex_shading", 1.0),
@@ -69,13 +70,13 @@ GROUPS: dict[str, tuple[str, float]] = {
     "painter": ("pixelpath.hsr._kernels.painter:warmup", 7.5),
     "bsp": ("pixelpath.hsr._kernels.bsp:warmup", 16.0),
     "lighting": ("pixelpath.lighting._kernels:warmup", 1.0),
-    "clip": ("pixelpath.clip._kernels:warmup", 35.0),
-    "color": ("pixelpath.color._kernels:warmup", 32.0),
-    "raytrace-bvh": ("pixelpath.raytrace._bvh_kernels:warmup", 9.0),
+    "clip": ("pixelpath.clip._kernels:warmup", 13.0),
+    "color": ("pixelpath.color._kernels:warmup", 12.0),
+    "raytrace-bvh": ("pixelpath.raytrace._bvh_kernels:warmup", 13.0),
     # The tracer's warm-up packs a one-pixel scene with the renderer's own code (BVH build,
     # back-face test), so it also compiles those kernels if no other process did. Its packet
     # searches (four rays at a time, vectorized) make it the longest group to compile.
-    "raytrace": ("pixelpath.raytrace._whitted_kernels:warmup", 36.0),
+    "raytrace": ("pixelpath.raytrace._whitted_kernels:warmup", 29.0),
     "octree": ("pixelpath.hsr._kernels.octree:warmup", 9.0),
     "lines": ("pixelpath.raster._line_kernels:warmup", 3.0),
     # 8-bit encoding of float32 pictures (to_uint8); built with the render groups (BUILT_GROUPS).
