@@ -6,11 +6,11 @@
   directly and through trimesh's ``RayMeshIntersector``), in Mrays/s: pixelpath on one thread
   (Embree's single ``run`` call traces on one) and on all of Numba's, and the fraction of rays
   on which pixelpath and Embree report the same triangle (or both a miss). The tree is built
-  before timing; its build time is reported on its own line.
-* A million-triangle build: ``BVH.build`` (one thread) of a 708×708 height field (999,698
-  triangles) beside Embree's construction of a scene of the same triangles (the scene, its
-  ``TriangleMesh`` and the first ``run`` of one ray, where Embree builds its tree on all
-  cores), taking turns.
+  before timing.
+* BVH builds, of the bunny and of a million triangles (a 708×708 height field, 999,698
+  triangles): ``BVH.build`` (one thread) beside Embree's construction of a scene of the same
+  triangles (the scene, its ``TriangleMesh`` and the first ``run`` of one ray, where Embree
+  builds its tree on all cores), taking turns.
 * The shadowed bunny: ``render(method="raytrace")`` at 1024² with one point light, a diffuse
   material and one sample per pixel (primary and shadow rays, shading, the image), beside
   Mitsuba 3's ``scalar_rgb`` and ``llvm_ad_rgb`` variants with the ``direct`` integrator (one
@@ -128,12 +128,6 @@ def bench_primary(mesh: pp.Mesh, size: int, repeat: int) -> None:
     camera = framed_camera(mesh, size, size)
     origins, directions = primary_rays(camera)
     count = len(origins)
-    build, bvh = best_of(repeat, lambda: BVH.build(mesh.vertices, mesh.triangles))
-    stats = bvh.statistics()
-    print(
-        f"  BVH build (binned SAH)  {1000 * build:8.1f} ms  ({stats['nodes']:,} nodes, depth "
-        f"{stats['depth']}, SAH cost {stats['SAH cost']:.1f})"
-    )
     threads = numba.get_num_threads()
     numba.set_num_threads(1)
     one_thread, (_, face) = best_of(repeat, lambda: intersect(mesh, origins, directions))
@@ -204,7 +198,8 @@ def height_field(side: int = 708) -> tuple[np.ndarray, np.ndarray]:
     return vertices, triangles
 
 
-def bench_large_build(vertices: np.ndarray, triangles: np.ndarray, repeat: int) -> None:
+def bench_build(vertices: np.ndarray, triangles: np.ndarray, repeat: int) -> None:
+    """Print ``BVH.build``'s time beside Embree's construction of the same triangles."""
     calls = [lambda: BVH.build(vertices, triangles)]
     embree = importlib.util.find_spec("embreex") is not None
     if embree:
@@ -358,9 +353,11 @@ def main() -> None:
     bench_shadowed(mesh, path, args.size, args.repeat)
     print(f"\n{label}: {len(mesh.triangles):,} triangles, {args.size}² primary rays")
     bench_primary(mesh, args.size, args.repeat)
+    print(f"\n{label}: BVH construction")
+    bench_build(mesh.vertices, mesh.triangles, args.repeat)
     vertices, triangles = height_field()
     print(f"\nheight field: {len(triangles):,} triangles, BVH construction")
-    bench_large_build(vertices, triangles, args.repeat)
+    bench_build(vertices, triangles, args.repeat)
     height = args.size * 3 // 4
     print(f"\nshowcase (chrome and glass spheres) at {args.size}x{height}, max_depth 5")
     bench_showcase(args.size, height, args.repeat)
