@@ -26,6 +26,7 @@ def in_threads(
     count: int,
     *,
     runs: int | None = None,
+    least: int = 1,
     done: Callable[[], object] | None = None,
 ) -> None:
     """Call ``work(start, stop)`` on runs of ``range(count)`` from several threads at once.
@@ -34,7 +35,9 @@ def in_threads(
     ``numba.set_num_threads`` apply), each taking runs in turn as it finishes one. The runs
     must write disjoint parts of the output. An exception in a run is raised here.
 
-    ``runs`` sets how many runs (default: a few per thread, or one on a single thread);
+    ``runs`` sets how many runs (default: a few per thread, or one on a single thread), and
+    ``least`` the fewest items a run is worth: fewer runs are made where ``count`` is small,
+    down to one, run in the calling thread (handing out little work costs more than it saves);
     ``done()`` is called in the calling thread once per run, as the runs finish in order, so a
     progress bar can follow the work without any barrier between its parts.
 
@@ -55,7 +58,7 @@ def in_threads(
     threads = numba.get_num_threads()
     if runs is None:
         runs = 1 if threads == 1 else RUNS_PER_THREAD * threads
-    runs = max(min(count, runs), 1)
+    runs = max(min(count // least, runs), 1)
     bounds = np.linspace(0, count, runs + 1).astype(int).tolist()
     if threads == 1 or runs == 1:
         results = map(work, bounds[:-1], bounds[1:])

@@ -17,7 +17,7 @@ from pixelpath.clip import (
     clip_polygons,
     sutherland_hodgman,
 )
-from pixelpath.clip.batch import _SERIAL_VERTICES, _clip_batch
+from pixelpath.clip.batch import _LEAST_POLYGONS, _clip_batch
 
 WINDOW = Rect(-0.5, -0.4, 0.6, 0.5)
 
@@ -61,7 +61,7 @@ def test_results_too_big_for_their_staging_slot_are_clipped_again():
 def test_a_batch_big_enough_for_the_threads_equals_one_by_one():
     rng = np.random.default_rng(11)
     sizes = rng.integers(3, 12, 1500)
-    assert sizes.sum() > _SERIAL_VERTICES  # handed out in runs to the threads
+    assert len(sizes) >= 2 * _LEAST_POLYGONS  # handed out in runs to the threads
     polygons = [c + rng.uniform(-0.3, 0.3, (n, 2)) for n, c in
                 zip(sizes, rng.uniform(-1, 1, (len(sizes), 2)), strict=True)]
     results = clip_polygons(polygons, WINDOW)

@@ -19,11 +19,10 @@ from pixelpath.clip.window import Rect, as_window
 
 __all__ = ["clip_flat", "clip_polygons"]
 
-# Runs of polygons per thread and pass: enough to balance cheap (outside) and costly (crossing)
-# ones; each run costs a dispatch from Python (16 a thread took a tenth longer than 4).
-_CHUNKS_PER_THREAD = 4
-# Batches of fewer vertices are clipped on the calling thread alone.
-_SERIAL_VERTICES = 4096
+# The fewest polygons worth a run of their own: a small batch is clipped on the calling thread.
+# (in_threads' four runs a thread balance cheap (outside) and costly (crossing) polygons; each
+# run costs a dispatch from Python, and 16 a thread took a tenth longer.)
+_LEAST_POLYGONS = 256
 
 
 def clip_flat(
@@ -87,16 +86,13 @@ def _clip_batch(
     Each pass runs its kernel on runs of polygons from several threads (one, for a small
     batch: handing it to the threads would cost more than the work).
     """
-    import numba
-
     from pixelpath._threads import in_threads
 
     count = len(offsets) - 1
-    runs = 1 if len(coords) < _SERIAL_VERTICES else _CHUNKS_PER_THREAD * numba.get_num_threads()
     status = np.zeros(count, dtype=np.intp)
     fate = np.empty(count, dtype=np.intp)
     in_threads(lambda start, stop: _kernels.sort_subjects(
-        coords, offsets, table, start, stop, status, fate), count, runs=runs)
+        coords, offsets, table, start, stop, status, fate), count, least=_LEAST_POLYGONS)
     bad = np.flatnonzero(status)
     if bad.size:
         i = int(bad[0])
@@ -108,13 +104,14 @@ def _clip_batch(
     staging = np.empty((slot[-1], 2))
     sizes = np.empty(count, dtype=np.intp)
     in_threads(lambda start, stop: _kernels.clip_straddling(
-        coords, offsets, table, fate, slot, start, stop, staging, sizes), count, runs=runs)
+        coords, offsets, table, fate, slot, start, stop, staging, sizes),
+        count, least=_LEAST_POLYGONS)
     out_offsets = np.zeros(count + 1, dtype=np.intp)
     np.cumsum(sizes, out=out_offsets[1:])
     out = np.empty((out_offsets[-1], 2))
     in_threads(lambda start, stop: _kernels.pack_clipped(
         coords, offsets, table, fate, slot, staging, sizes, out_offsets, start, stop, out),
-        count, runs=runs)
+        count, least=_LEAST_POLYGONS)
     return out, out_offsets
 
 

@@ -37,7 +37,7 @@ __all__ = ["PhongGeometry", "PhongTerms", "phong_geometry", "phong_terms", "refl
 _COSINE_SLACK = 1e-9
 
 MODELS = ("phong", "blinn")
-_SERIAL_POINTS = 4096  # shade() shades fewer points on the calling thread alone
+_LEAST_POINTS = 2048  # the fewest points worth a thread's run: fewer are shaded in the caller
 
 
 def _numeric(value: Any, name: str) -> np.ndarray:
@@ -450,7 +450,5 @@ def shade(
         shade_many(flat_points, flat_normals, eye_array, packed_material, packed_lights,
                    packed_ambient, model == "blinn", start, stop, out)
 
-    # Few points are shaded on the calling thread: handing them out would cost more.
-    count = len(flat_points)
-    in_threads(shade_run, count, runs=1 if count < _SERIAL_POINTS else None)
+    in_threads(shade_run, len(flat_points), least=_LEAST_POINTS)
     return out.reshape(shape)

@@ -260,9 +260,9 @@ def _indices(triangles: Any, vertex_count: int) -> np.ndarray:
 
 
 def _mesh_bvh(mesh: Any) -> tuple[BVH, np.ndarray]:
-    """Return the BVH of a mesh's triangles and the face each triangle belongs to.
+    """Return the BVH of a mesh's triangles and the face of each triangle in its leaf order.
 
-    A pixelpath ``Mesh`` (immutable) keeps its tree for later calls; other meshes (a
+    A pixelpath ``Mesh`` (immutable) keeps both for later calls; other meshes (a
     ``trimesh.Trimesh``, anything with ``vertices`` (V, 3) and triangle ``faces`` (F, 3)) are
     built each time, since they may change between calls.
     """
@@ -274,11 +274,12 @@ def _mesh_bvh(mesh: Any) -> tuple[BVH, np.ndarray]:
             f"{type(mesh).__name__}"
         )
     bvh = BVH.build(mesh.vertices, mesh.faces)
-    return bvh, np.arange(bvh.triangle_count, dtype=np.intp)
+    return bvh, bvh.order  # each face is one triangle
 
 
 def _pixelpath_mesh_bvh(mesh: Any) -> tuple[BVH, np.ndarray]:
-    return BVH._from_corners(_corners(mesh.vertices, mesh.triangles)), mesh.triangle_face
+    bvh = BVH._from_corners(_corners(mesh.vertices, mesh.triangles))
+    return bvh, mesh.triangle_face[bvh.order]
 
 
 _MESH_TREES = _IdentityCache(16)  # the trees of the last few pixelpath meshes
@@ -328,5 +329,5 @@ def intersect(mesh: Any, origins: Any, directions: Any) -> tuple[np.ndarray, np.
     >>> np.round(t, 2).tolist(), bool(face.min() >= 0)
     ([1.0, 0.5], True)
     """
-    bvh, triangle_face = _mesh_bvh(mesh)
-    return bvh._nearest(origins, directions, triangle_face[bvh.order])
+    bvh, leaf_face = _mesh_bvh(mesh)
+    return bvh._nearest(origins, directions, leaf_face)
