@@ -61,15 +61,21 @@ def add_frame_options(parser: argparse.ArgumentParser) -> None:
         "--png-level",
         type=parse_png_level,
         metavar="0-9",
-        help="zlib compression of PNG files: 0 none, 1 fastest (the default for --frames: at "
-        "640x400 7.7 ms a frame, files half as large again as a single image's), 6 (the "
-        "default for a single image: 21 ms), 9 smallest and slowest",
+        help=f"zlib compression of PNG files: {PNG_LEVELS} (default: 1 for --frames, 6 for a "
+        "single image)",
     )
     group.add_argument(
         "--resume",
         action="store_true",
         help="skip frames whose file is already complete (each is read back to make sure)",
     )
+
+
+# What --png-level's values do, for the commands that take it.
+PNG_LEVELS = (
+    "0 none, 1 fastest (at 640x400 7.7 ms a picture, files half as large again as at 6), "
+    "6 (21 ms), 9 smallest and slowest"
+)
 
 
 def parse_png_level(text: str) -> int:

@@ -8,7 +8,13 @@ import time
 from typing import Any
 
 from pixelpath.cli._common import CommandError, add_command, compile_kernels, console, progress
-from pixelpath.cli._frames import cluster_for, parse_png_level, render_options, since
+from pixelpath.cli._frames import (
+    PNG_LEVELS,
+    cluster_for,
+    parse_png_level,
+    render_options,
+    since,
+)
 from pixelpath.cli.render import (
     add_shading_options,
     parse_aovs_option,
@@ -86,8 +92,7 @@ def register(subparsers: Any) -> None:
         type=parse_png_level,
         default=FRAMES_PNG_LEVEL,
         metavar="0-9",
-        help="zlib compression of the PNG files: 0 none, 1 fastest (default: at 640x400 3 ms "
-        "a picture, files 40%% larger than Pillow's default), 6 (11 ms, 10%% larger), 9 smallest",
+        help=f"zlib compression of the PNG files: {PNG_LEVELS} (default: 1)",
     )
     cluster = parser.add_argument_group("clusters (Dask) and reruns")
     cluster.add_argument(
