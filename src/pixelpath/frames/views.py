@@ -470,7 +470,7 @@ def run_views(
     _prepare(folder, plan)
     if client is None:  # writer threads encode and write a view while the next renders
         with FrameWriter() as writer:
-            tasks = [(work.render_view, index, 0, ()) for index in plan.todo]
+            tasks = [(ViewJob.render, index, 0, ()) for index in plan.todo]
 
             def add(index: int, part: int, image: Image) -> None:
                 plan.job.output.submit(index, image, writer)

@@ -134,23 +134,6 @@ def view_files(job: ViewJob, index: int) -> None:
     job.output.write(index, job.render(index))
 
 
-def render_view(job: ViewJob, index: int) -> Image:
-    """Return view ``index`` of a dataset of views, rendered (its files not written).
-
-    Examples
-    --------
-    >>> import tempfile
-    >>> import pixelpath as pp
-    >>> from pixelpath.frames.views import plan_views
-    >>> from pixelpath.frames.work import render_view
-    >>> scene = pp.Scene(pp.Camera(eye=(0, 0, 5), target=(0, 0, 0), width=8, height=6),
-    ...                  [pp.Sphere((0, 0, 0), 1.0)])
-    >>> render_view(plan_views(scene, 3, tempfile.mkdtemp()).job, 1).shape
-    (6, 8, 3)
-    """
-    return job.render(index)
-
-
 def encode(
     image: Image,
     suffix: str,
