@@ -18,7 +18,6 @@ import numpy as np
 from pixelpath._jit import njit
 from pixelpath.raster._setup_kernels import (
     KEY_PLANE,
-    _perspective_terms,
     perspective_weights,
     scanline_span,
 )
@@ -227,11 +226,10 @@ def cut_away_at(cutouts, t, x, y):
     (:func:`pixelpath.scene._texture_kernels.cut_away`). Ask only for triangles with
     ``cutouts.masked`` set; compiled without reference counting, like the lookups.
     """
-    terms = _perspective_terms(cutouts.setup, t, x, y)
+    b0, b1, b2 = perspective_weights(cutouts.setup, t, x, y)
     triangles = cutouts.triangles
     return cut_away(cutouts.tables, cutouts.info[t, 0], cutouts.uv, cutouts.vertex_colors,
-                    triangles[t, 0], triangles[t, 1], triangles[t, 2], terms[0], terms[1],
-                    terms[2])
+                    triangles[t, 0], triangles[t, 1], triangles[t, 2], b0, b1, b2)
 
 
 @njit
@@ -243,7 +241,7 @@ def interpolate_values(first, stop, setup, triangles, values, triangle_id, out):
             t = triangle_id[j, i]
             if t < 0:
                 continue
-            b0, b1, b2 = perspective_weights(setup[t], i + 0.5, j + 0.5)
+            b0, b1, b2 = perspective_weights(setup, t, i + 0.5, j + 0.5)
             a, b, c = triangles[t, 0], triangles[t, 1], triangles[t, 2]
             for channel in range(values.shape[1]):
                 out[j, i, channel] = (

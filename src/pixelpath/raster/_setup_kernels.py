@@ -454,38 +454,19 @@ def wins_depth_test(value, t, best_value, best_t):
 
 
 @njit(inline="always")
-def perspective_weights(record, x, y):
-    """Perspective-correct barycentric weights (b0, b1, b2) of a set-up triangle at (x, y)."""
-    s1 = record[S1_PLANE] * x + record[S1_PLANE + 1] * y + record[S1_PLANE + 2]
-    s2 = record[S2_PLANE] * x + record[S2_PLANE + 1] * y + record[S2_PLANE + 2]
-    t0 = (1.0 - s1 - s2) * record[VERTEX_INVW]
-    t1 = s1 * record[VERTEX_INVW + 1]
-    t2 = s2 * record[VERTEX_INVW + 2]
+def perspective_weights(setup, t, x, y):
+    """Perspective-correct barycentric weights (b0, b1, b2) of set-up triangle t at (x, y).
+
+    The triangle is indexed in the table rather than handed over as a row of it: a row view
+    would update the table's reference count at every pixel of a counted kernel.
+    """
+    s1 = setup[t, S1_PLANE] * x + setup[t, S1_PLANE + 1] * y + setup[t, S1_PLANE + 2]
+    s2 = setup[t, S2_PLANE] * x + setup[t, S2_PLANE + 1] * y + setup[t, S2_PLANE + 2]
+    t0 = (1.0 - s1 - s2) * setup[t, VERTEX_INVW]
+    t1 = s1 * setup[t, VERTEX_INVW + 1]
+    t2 = s2 * setup[t, VERTEX_INVW + 2]
     scale = 1.0 / (t0 + t1 + t2)
     return t0 * scale, t1 * scale, t2 * scale
-
-
-@njit(inline="always")
-def _perspective_terms(setup, t, x, y):
-    """Weights and screen gradients of triangle t at pixel centre (x, y).
-
-    Returns the perspective-correct weights ``b_k = t_k / D`` (``t_k = s_k / w_k``, D their
-    sum, the interpolated 1/w), ``1 / D``, then ``d t_k / dx`` and ``d t_k / dy`` (constants:
-    the ``t_k`` are affine in screen space): 10 numbers.
-    """
-    w0, w1, w2 = setup[t, VERTEX_INVW], setup[t, VERTEX_INVW + 1], setup[t, VERTEX_INVW + 2]
-    # s1 = x1 x + y1 y + c1 and s2 = x2 x + y2 y + c2: the screen weights' planes.
-    x1, y1, c1 = setup[t, S1_PLANE], setup[t, S1_PLANE + 1], setup[t, S1_PLANE + 2]
-    x2, y2, c2 = setup[t, S2_PLANE], setup[t, S2_PLANE + 1], setup[t, S2_PLANE + 2]
-    s1 = x1 * x + y1 * y + c1
-    s2 = x2 * x + y2 * y + c2
-    t0, t1, t2 = (1.0 - s1 - s2) * w0, s1 * w1, s2 * w2
-    inv = 1.0 / (t0 + t1 + t2)
-    return (
-        t0 * inv, t1 * inv, t2 * inv, inv,
-        -(x1 + x2) * w0, x1 * w1, x2 * w2,
-        -(y1 + y2) * w0, y1 * w1, y2 * w2,
-    )
 
 
 def overlapping_pair():

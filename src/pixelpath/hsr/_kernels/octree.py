@@ -533,7 +533,7 @@ def _decide(tree, node, scan, touched, n_touched, x0, y0, band_first, triangle_i
     for k in range(n_touched):
         row, col = touched[k] // width, touched[k] % width
         t = triangle_id[row, col]
-        b0, b1, b2 = perspective_weights(scan.setup[t], x0 + col + 0.5, y0 + row + 0.5)
+        b0, b1, b2 = perspective_weights(scan.setup, t, x0 + col + 0.5, y0 + row + 0.5)
         a, b, c = scan.triangles[t, 0], scan.triangles[t, 1], scan.triangles[t, 2]
         inside = True
         for axis in range(3):
