@@ -116,6 +116,7 @@ def test_bad_requests_fail_before_any_work(options, message, tmp_path, monkeypat
     assert not list(tmp_path.iterdir())
 
 
+@pytest.mark.slow  # waits out the 5 s the connection is given
 def test_an_unreachable_scheduler_fails_within_seconds(tmp_path, capsys):
     pattern = str(tmp_path / "f_{frame}.png")
     status = main(["render", "showcase", "--frames", "0:2", "-o", pattern, *SIZE,

@@ -126,7 +126,9 @@ def test_methods_agree_with_the_zbuffer_orthographically(method, kind):
     check_agreement(_orthographic(scene_of(kind, seed=1)), method)
 
 
-@pytest.mark.parametrize("method", RASTER[1:])
+@pytest.mark.parametrize(
+    "method", [pytest.param(m, marks=pytest.mark.slow) if m == "bsp" else m for m in RASTER[1:]]
+)
 def test_methods_agree_orthographically_with_back_faces_drawn(method):
     check_agreement(_orthographic(scene_of("near", seed=3)), method, backface_cull=False)
 
