@@ -17,7 +17,11 @@
   emitter sample, one sample per pixel; the LLVM variant needs LLVM 16 or newer, see
   ``mitsuba_renders``); Mitsuba's scene loading and kernel set-up are outside its timing.
 * The bundled showcase (a chrome and a glass sphere among analytic and mesh objects) at
-  1024×768 with ``max_depth=5``.
+  1024×768 with ``max_depth=5``, beside Mitsuba 3 rendering the same shapes and lights with its
+  nearest materials (a dielectric, a mirror blended with a diffuse surface, diffuse ones), one
+  sample per pixel, with its path tracer to the same depth and with its direct integrator:
+  the first traces more rays than a Whitted tracer (it bounces off diffuse surfaces too), the
+  second fewer (no bounce), so the two bracket the work; no goal, a ratio to watch.
 
 Each figure is the best of ``--repeat`` runs after a warm-up run (compilation excluded). The
 shadowed bunny's two renderers take turns (pixelpath, Mitsuba, pixelpath, ...), so that both
@@ -37,6 +41,7 @@ import argparse
 import dataclasses
 import importlib.util
 import statistics
+import tempfile
 import time
 from pathlib import Path
 
@@ -255,7 +260,17 @@ def bench_shadowed(mesh: pp.Mesh, path: Path | None, size: int, repeat: int) -> 
         f"    {int((image.object_id >= 0).sum()):,} pixels on the bunny, "
         f"{image.stats['shadow rays']:,} shadow rays"
     )
-    for variant, mitsuba in mitsuba_renders(path, camera, light, size):
+    if path is None:
+        print("  Mitsuba skipped: it loads the mesh from a file and the bunny file is absent")
+        return
+    compare_with_mitsuba(
+        render, lambda mi: bunny_scene_dict(mi, path, camera, light, size), repeat
+    )
+
+
+def compare_with_mitsuba(render, scene_dict, repeat: int) -> None:
+    """Time ``render`` beside Mitsuba rendering ``scene_dict(mi)`` in each variant, in turns."""
+    for variant, mitsuba in mitsuba_renders(scene_dict):
         # Each variant takes turns with pixelpath in a block of its own: switching Mitsuba's
         # variant between calls would cost its render about 80 ms.
         ours, theirs = interleaved(repeat, [render, mitsuba])
@@ -274,20 +289,17 @@ def report_render(label: str, timing: Timing) -> None:
     )
 
 
-def mitsuba_renders(path, camera, light, size):
+def mitsuba_renders(scene_dict):
     """Yield (variant, render call) for Mitsuba 3's variants that run here, each set in turn.
 
     ``scalar_rgb`` traces one ray at a time; ``llvm_ad_rgb`` compiles its integrator with
     Dr.Jit into vectorized code on all cores, and needs LLVM 16 or newer (on Debian 12:
     ``apt install libllvm19`` and ``DRJIT_LIBLLVM_PATH=/usr/lib/x86_64-linux-gnu/libLLVM-19.so``).
-    The call renders the same view of the mesh with the ``direct`` integrator and reads the
-    image back; variants that cannot run are skipped with the reason printed.
+    The call renders the scene ``scene_dict(mi)`` describes, one sample per pixel, and reads
+    the image back; variants that cannot run are skipped with the reason printed.
     """
     if importlib.util.find_spec("mitsuba") is None:
         print("  Mitsuba skipped: mitsuba is not installed (pip install mitsuba)")
-        return
-    if path is None:
-        print("  Mitsuba skipped: it loads the mesh from a file and the bunny file is absent")
         return
     import mitsuba as mi
 
@@ -297,29 +309,39 @@ def mitsuba_renders(path, camera, light, size):
         except Exception as error:  # Dr.Jit reports a missing or old LLVM in several ways
             print(f"  Mitsuba {variant} skipped: {error}")
             continue
-        scene = mi.load_dict(mitsuba_scene_dict(mi, path, camera, light, size))
+        scene = mi.load_dict(scene_dict(mi))
         yield variant, lambda scene=scene: np.array(mi.render(scene, spp=1))
 
 
-def mitsuba_scene_dict(mi, path, camera, light, size) -> dict:
+def mitsuba_sensor(mi, camera: pp.Camera) -> dict:
+    """pixelpath's perspective camera as a Mitsuba sensor: one sample, a box filter."""
+    return {
+        "type": "perspective",
+        "fov": camera.fov,
+        "fov_axis": "y",
+        "near_clip": camera.near,
+        "far_clip": camera.far,
+        "to_world": mi.ScalarTransform4f().look_at(
+            origin=list(map(float, camera.eye)),
+            target=list(map(float, camera.target)),
+            up=list(map(float, camera.up)),
+        ),
+        "film": {
+            "type": "hdrfilm",
+            "width": camera.width,
+            "height": camera.height,
+            "rfilter": {"type": "box"},
+        },
+        "sampler": {"type": "independent", "sample_count": 1},
+    }
+
+
+def bunny_scene_dict(mi, path, camera, light, size) -> dict:
     """The shadowed bunny as a Mitsuba scene description (for the variant set now)."""
     return {
         "type": "scene",
         "integrator": {"type": "direct", "emitter_samples": 1, "bsdf_samples": 0},
-        "sensor": {
-            "type": "perspective",
-            "fov": camera.fov,
-            "fov_axis": "y",
-            "near_clip": camera.near,
-            "far_clip": camera.far,
-            "to_world": mi.ScalarTransform4f().look_at(
-                origin=list(map(float, camera.eye)),
-                target=list(map(float, camera.target)),
-                up=list(map(float, camera.up)),
-            ),
-            "film": {"type": "hdrfilm", "width": size, "height": size, "rfilter": {"type": "box"}},
-            "sampler": {"type": "independent", "sample_count": 1},
-        },
+        "sensor": mitsuba_sensor(mi, camera.with_size(size, size)),
         "bunny": {
             "type": "obj",
             "filename": str(path),
@@ -332,12 +354,102 @@ def mitsuba_scene_dict(mi, path, camera, light, size) -> dict:
 def bench_showcase(width: int, height: int, repeat: int) -> None:
     scene = pp.load_scene(pp.scene.bundled_scene("showcase"))
     scene = dataclasses.replace(scene, camera=scene.camera.with_size(width, height))
-    seconds, image = best_of(repeat, lambda: pp.render(scene, "raytrace", max_depth=5))
+    render = lambda: pp.render(scene, "raytrace", max_depth=SHOWCASE_DEPTH)  # noqa: E731
+    (ours,) = interleaved(repeat, [render])
+    report_render("pixelpath raytrace", ours)
+    stats = ours.result.stats
     print(
-        f"  pixelpath raytrace      {1000 * seconds:8.0f} ms  ({image.stats['reflected rays']:,} "
-        f"reflected, {image.stats['refracted rays']:,} refracted, "
-        f"{image.stats['shadow rays']:,} shadow rays)"
+        f"    {stats['reflected rays']:,} reflected, {stats['refracted rays']:,} refracted, "
+        f"{stats['shadow rays']:,} shadow rays"
     )
+    with tempfile.TemporaryDirectory() as folder:
+        for label, integrator in SHOWCASE_INTEGRATORS.items():
+            print(f"  beside Mitsuba's {label}")
+            compare_with_mitsuba(
+                render, lambda mi, i=integrator: showcase_scene_dict(mi, scene, i, folder), repeat
+            )
+
+
+# pixelpath's max_depth counts the bounces after the first hit; Mitsuba's max_depth counts
+# the segments of a path, the one to the light included: 5 bounces are a max_depth of 7. Its
+# path tracer bounces off every surface, where a Whitted tracer stops at the diffuse ones, so
+# it traces more rays than pixelpath; the direct integrator (no bounce at all) traces fewer:
+# the two bracket the work.
+SHOWCASE_DEPTH = 5
+SHOWCASE_INTEGRATORS = {
+    f"path tracer (max_depth {SHOWCASE_DEPTH + 2}, no Russian roulette)": {
+        "type": "path", "max_depth": SHOWCASE_DEPTH + 2, "rr_depth": SHOWCASE_DEPTH + 2
+    },
+    "direct integrator (one emitter sample, no bounce)": {
+        "type": "direct", "emitter_samples": 1, "bsdf_samples": 0
+    },
+}
+
+
+def showcase_scene_dict(mi, scene: pp.Scene, integrator: dict, folder: str) -> dict:
+    """A pixelpath scene as a Mitsuba scene description, meshes written as PLY into ``folder``.
+
+    Shapes map one to one (the plane a large rectangle); lights keep their colour times their
+    intensity; materials become the nearest Mitsuba BSDF (:func:`mitsuba_bsdf`). The ambient
+    term and the background colour have no counterpart and are left out.
+    """
+    shapes = {}
+    for k, shape in enumerate(scene.objects):
+        shapes[f"shape{k}"] = {**mitsuba_shape(mi, shape, Path(folder) / f"mesh{k}.ply"),
+                               "bsdf": mitsuba_bsdf(shape.material)}
+    lights = {}
+    for k, light in enumerate(scene.lights):
+        value = {"type": "rgb", "value": [float(c) * light.intensity for c in light.color]}
+        if isinstance(light, pp.PointLight):
+            lights[f"light{k}"] = {"type": "point", "position": list(map(float, light.position)),
+                                   "intensity": value}
+        else:
+            lights[f"light{k}"] = {"type": "directional",
+                                   "direction": list(map(float, light.direction)),
+                                   "irradiance": value}
+    return {"type": "scene", "integrator": integrator,
+            "sensor": mitsuba_sensor(mi, scene.camera), **shapes, **lights}
+
+
+def mitsuba_shape(mi, shape, ply: Path) -> dict:
+    """One pixelpath object as a Mitsuba shape (a mesh is written to ``ply`` first)."""
+    transform = mi.ScalarTransform4f()
+    if isinstance(shape, pp.Sphere):
+        return {"type": "sphere", "center": list(map(float, shape.center)),
+                "radius": float(shape.radius)}
+    if isinstance(shape, pp.Plane):
+        point, normal = list(map(float, shape.point)), np.asarray(shape.normal, dtype=float)
+        up = [1.0, 0.0, 0.0] if abs(normal[0]) < 0.9 else [0.0, 1.0, 0.0]
+        frame = transform.look_at(origin=point, target=list(point + normal), up=up)
+        return {"type": "rectangle", "to_world": frame.scale([1000.0, 1000.0, 1.0])}
+    if isinstance(shape, pp.Box):
+        low, high = np.asarray(shape.minimum), np.asarray(shape.maximum)
+        place = transform.translate(list((low + high) / 2)).scale(list((high - low) / 2))
+        return {"type": "cube", "to_world": place}
+    import trimesh
+
+    mesh = trimesh.Trimesh(shape.vertices, shape.triangles, vertex_normals=shape.normals,
+                           process=False)
+    mesh.export(ply)
+    return {"type": "ply", "filename": str(ply)}
+
+
+def mitsuba_bsdf(material: pp.Material) -> dict:
+    """The Mitsuba BSDF nearest a pixelpath material, for timing more than for looks.
+
+    Transparent: a smooth dielectric of the same index. Reflective: a blend of a perfect
+    mirror (weight ``reflectivity``) and a diffuse surface. Otherwise diffuse, of the
+    material's colour times ``kd`` (the Phong highlight has no counterpart).
+    """
+    diffuse = {"type": "diffuse",
+               "reflectance": {"type": "rgb", "value": [float(c) * material.kd
+                                                        for c in material.color]}}
+    if material.transparency > 0:
+        return {"type": "dielectric", "int_ior": float(material.ior)}
+    if material.reflectivity > 0:
+        return {"type": "blendbsdf", "weight": float(material.reflectivity),
+                "bsdf_0": diffuse, "bsdf_1": {"type": "conductor"}}
+    return diffuse
 
 
 def main() -> None:
