@@ -4,9 +4,15 @@ A frame's colour, depth and object-id buffers (20 bytes a pixel) are new arrays 
 because the :class:`~pixelpath.Image` owns them. Memory fresh from the system costs a page
 fault per 4 KiB page on first touch: at 1024×1024 that took 5-8 ms here, as long as shading the
 frame. So the buffers come from a small pool instead. Each is a view of a flat array over a
-pooled ``bytearray``; when the last view of it is gone (the image and every array taken from
-it), a finalizer gives the ``bytearray`` back for the next frame. Memory still in use is never
-handed out again, and only a couple of spare buffers per size are kept.
+memoryview of a pooled block of bytes; when the last view of it is gone (the image and every
+array taken from it), a finalizer gives the block back for the next frame. Memory still in use
+is never handed out again, and only a couple of spare buffers per size are kept.
+
+A new block is an uninitialized NumPy array, not a ``bytearray``, which fills itself with
+zeros: that pass touched every page of a frame's fresh buffers in the calling thread before
+the kernels wrote them (5 ms of a first 800×600 render's 20-24), where now the kernels' first
+writes fault the pages in, from every thread. The memoryview ends the chain of bases: a view
+of the flat array has the flat array as its base, so the finalizer waits for every view.
 """
 
 from __future__ import annotations
@@ -19,7 +25,7 @@ import numpy as np
 SPARES_PER_SIZE = 2
 LARGEST_KEPT = 1 << 27  # bytes; bigger buffers go back to the system
 
-_spares: dict[int, list[bytearray]] = {}
+_spares: dict[int, list[np.ndarray]] = {}
 
 
 def empty(shape: tuple[int, ...], dtype: type) -> np.ndarray:
@@ -36,21 +42,21 @@ def empty(shape: tuple[int, ...], dtype: type) -> np.ndarray:
     dtype = np.dtype(dtype)
     nbytes = math.prod(shape) * dtype.itemsize
     raw = _take(nbytes)
-    flat = np.frombuffer(raw, dtype=dtype)
+    flat = np.frombuffer(memoryview(raw), dtype=dtype)
     if nbytes <= LARGEST_KEPT:
         # Every view of flat keeps it alive, so this runs only when no array uses raw.
         weakref.finalize(flat, _give_back, raw).atexit = False
     return flat.reshape(shape)
 
 
-def _take(nbytes: int) -> bytearray:
+def _take(nbytes: int) -> np.ndarray:
     try:
         return _spares.get(nbytes, []).pop()
     except IndexError:
-        return bytearray(nbytes)
+        return np.empty(nbytes, dtype=np.uint8)
 
 
-def _give_back(raw: bytearray) -> None:
-    spares = _spares.setdefault(len(raw), [])
+def _give_back(raw: np.ndarray) -> None:
+    spares = _spares.setdefault(raw.nbytes, [])
     if len(spares) < SPARES_PER_SIZE:
         spares.append(raw)
