@@ -1,7 +1,7 @@
 """Output buffers recycled between frames.
 
-A frame's colour, depth and object-id buffers (20 bytes a pixel) are new arrays each time,
-because the :class:`~pixelpath.Image` owns them. Memory fresh from the system costs a page
+A frame's colour, depth, object-id and normal buffers (32 bytes a pixel) are new arrays each
+time, because the :class:`~pixelpath.Image` owns them. Memory fresh from the system costs a page
 fault per 4 KiB page on first touch: at 1024×1024 that took 5-8 ms here, as long as shading the
 frame. So the buffers come from a small pool instead. Each is a view of a flat array over a
 memoryview of a pooled block of bytes; when the last view of it is gone (the image and every
