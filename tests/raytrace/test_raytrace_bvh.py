@@ -214,3 +214,26 @@ def test_intersect_rejects_bad_input(mesh, origins, directions, error, message):
     target = {"cube": pp.Box((-1, -1, -1), (1, 1, 1)).to_mesh(), "bad faces": BadFaces()}.get(mesh)
     with pytest.raises(error, match=message):
         intersect(target, origins, directions)
+
+
+@pytest.mark.parametrize("ray", [0, 5, 4097, 9998])  # in the first, a middle and the last packet
+@pytest.mark.parametrize(
+    ("which", "value", "message"),
+    [
+        ("origins", np.nan, "origins must be finite, got NaN"),
+        ("origins", -np.inf, "origins must be finite, got infinite values"),
+        ("directions", np.inf, "directions must be finite, got infinite values"),
+        ("directions", 0.0, "directions must not contain a zero-length vector"),
+    ],
+)
+def test_one_bad_ray_among_many_is_reported(ray, which, value, message):
+    # The kernel checks the rays as it reads them, from several threads; the message is the
+    # one the checks before tracing gave.
+    rng = np.random.default_rng(ray)
+    rays = {"origins": rng.normal(size=(9999, 3)) * 3, "directions": rng.normal(size=(9999, 3))}
+    rays[which][ray] = value
+    given = {name: array.copy() for name, array in rays.items()}
+    with pytest.raises(ValueError, match=message):
+        intersect(pp.scene.icosphere(2), rays["origins"], rays["directions"])
+    for name, array in rays.items():  # nothing the caller passed was changed
+        assert np.array_equal(array, given[name], equal_nan=True)

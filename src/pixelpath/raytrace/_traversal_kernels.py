@@ -480,7 +480,12 @@ def intersect_many(bounds, links, tris, source, skip, cull, labels, origins, dir
     which Numba would compile that search a second time, beside the tracer's), and so is its
     scratch (``packet`` (LANES, 9), ``hit`` (LANES,), the stacks). Serial: the caller runs
     disjoint ranges of rays from several threads, each with its own scratch.
+
+    Returns whether any of the rays is unusable (a NaN or an infinity, or a zero direction),
+    checked as they are read: such a ray is traced as another, harmless one, and the caller
+    raises an error instead of answering.
     """
+    unusable = False
     for first in range(start, stop, LANES):
         lanes = min(LANES, stop - first)
         for r in range(lanes):
@@ -488,8 +493,26 @@ def intersect_many(bounds, links, tris, source, skip, cull, labels, origins, dir
                 packet[r, axis] = origins[first + r, axis]
                 packet[r, 3 + axis] = directions[first + r, axis]
             packet[r, 6] = math.inf
+            if not _usable_ray(packet, r):  # traced as a harmless ray: the search divides
+                unusable = True             # by the direction, and the answer goes unread
+                for column in range(6):
+                    packet[r, column] = 0.0
+                packet[r, 5] = 1.0
         closest_triangles4(bounds, links, tris, source, skip, cull, packet, lanes, 0.0, hit,
                            stack, stack_t, lane_t)
         for r in range(lanes):
             t_out[first + r] = packet[r, 6]
             label_out[first + r] = MISS if hit[r] == MISS else labels[hit[r]]
+    return unusable
+
+
+@njit(inline="always")
+def _usable_ray(packet, r):
+    """Whether row r of a packet holds a finite origin and a finite, non-zero direction.
+
+    ``x * 0.0`` is 0 for a finite x and NaN otherwise: one sum of six such products says
+    whether all six numbers are finite, without a branch per number.
+    """
+    finite = (packet[r, 0] * 0.0 + packet[r, 1] * 0.0 + packet[r, 2] * 0.0 + packet[r, 3] * 0.0
+              + packet[r, 4] * 0.0 + packet[r, 5] * 0.0) == 0.0
+    return finite and (packet[r, 3] != 0.0 or packet[r, 4] != 0.0 or packet[r, 5] != 0.0)

@@ -205,32 +205,44 @@ class BVH:
         from pixelpath.raytrace._traversal_kernels import LANES, intersect_many
 
         # No copies: the rays are only read (a million rays' copies and checks cost more than
-        # a fifth of their tracing).
-        o = v.finite_array(origins, "origins", 3, copy=False)
-        d = _nonzero(v.finite_array(directions, "directions", 3, copy=False), "directions")
-        shape, o, d = _broadcast({"origins": o, "directions": d}, {"origins", "directions"})
+        # a fifth of their tracing). The kernel checks their values as it reads them, on
+        # every thread; the checks here only give the message when it finds a bad one.
+        given = (v.numeric_array(origins, "origins", 3, copy=False),
+                 v.numeric_array(directions, "directions", 3, copy=False))
+        shape, o, d = _broadcast(dict(zip(("origins", "directions"), given, strict=True)),
+                                 {"origins", "directions"})
         t = np.empty(len(o))
         label = np.empty(len(o), dtype=np.intp)
         if self.triangle_count == 0:
+            _check_rays(*given)
             t.fill(np.inf)
             label.fill(-1)
         else:
             no_skip = np.zeros(0, dtype=np.bool_)
             levels = self.depth + 1
+            unusable = []
 
             def trace(start: int, stop: int) -> None:
                 # The packet starts as zeros: a packet of fewer than LANES rays reads (and
                 # ignores) the rows it does not fill, which must hold numbers.
                 with slab_nan_allowed():
-                    intersect_many(
+                    unusable.append(intersect_many(
                         self.bounds, self.links, self.corners, self.order, no_skip, False,
                         labels, o, d, start, stop, np.zeros((LANES, 9)),
                         np.empty(LANES, dtype=np.intp), np.empty(levels, dtype=np.intp),
                         np.empty(levels), np.empty((levels, LANES)), t, label,
-                    )
+                    ))
 
             in_threads(trace, len(o))
+            if any(unusable):
+                _check_rays(*given)
         return t.reshape(shape), label.reshape(shape)
+
+
+def _check_rays(origins: np.ndarray, directions: np.ndarray) -> None:
+    """Raise the error that NaN, infinite values or a zero-length direction deserve."""
+    v.finite_array(origins, "origins", 3, copy=False)
+    _nonzero(v.finite_array(directions, "directions", 3, copy=False), "directions")
 
 
 def _corners(vertices: np.ndarray, triangles: np.ndarray) -> np.ndarray:
