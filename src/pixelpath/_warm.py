@@ -59,9 +59,9 @@ __all__ = [
 # processes side by side; clip and color alone in one process, and the ray tracer's three
 # groups one after the other in one process, on 2026-11-26.
 GROUPS: dict[str, tuple[str, float]] = {
-    "front": ("pixelpath.raster._kernels:warm_front", 9.0),
+    "front": ("pixelpath.raster._kernels:warm_front", 5.0),
     "vertex-shading": ("pixelpath.raster._kernels:warm_vertex_shading", 1.0),
-    "back": ("pixelpath.raster._kernels:warm_back", 10.0),
+    "back": ("pixelpath.raster._kernels:warm_back", 22.0),
     # After "back" (every method that needs it needs "back" too): it reuses that one's kernels.
     "shade": ("pixelpath.raster._kernels:warm_shade", 1.0),
     "scan": ("pixelpath.raster._kernels:warm_scan", 1.5),
@@ -72,11 +72,12 @@ GROUPS: dict[str, tuple[str, float]] = {
     "lighting": ("pixelpath.lighting._kernels:warmup", 1.0),
     "clip": ("pixelpath.clip._kernels:warmup", 13.0),
     "color": ("pixelpath.color._kernels:warmup", 12.0),
-    "raytrace-bvh": ("pixelpath.raytrace._bvh_kernels:warmup", 13.0),
+    "raytrace-bvh": ("pixelpath.raytrace._bvh_kernels:warmup", 14.0),
     # The tracer's warm-up packs a one-pixel scene with the renderer's own code (BVH build,
     # back-face test), so it also compiles those kernels if no other process did. Its packet
-    # searches (four rays at a time, vectorized) make it the longest group to compile.
-    "raytrace": ("pixelpath.raytrace._whitted_kernels:warmup", 29.0),
+    # searches (four rays at a time, vectorized) make it the longest group to compile: 30 s
+    # after "raytrace-bvh" in the same process, 45 s before it.
+    "raytrace": ("pixelpath.raytrace._whitted_kernels:warmup", 30.0),
     "octree": ("pixelpath.hsr._kernels.octree:warmup", 9.0),
     "lines": ("pixelpath.raster._line_kernels:warmup", 3.0),
     # 8-bit encoding of float32 pictures (to_uint8); built with the render groups (BUILT_GROUPS).
@@ -107,8 +108,9 @@ SHADING_GROUPS: dict[str, tuple[str, ...]] = {
 # Groups that call another group's kernels, and are only needed with it: when both are cold
 # they compile in one process, the caller after the callee, whose kernels it then reuses
 # instead of compiling them again (the z-buffer's pass and the others' shading pass both shade
-# rows of pixels with the same kernels).
-FOLLOWS: dict[str, str] = {"shade": "back"}
+# rows of pixels with the same kernels; the tracer builds and searches the BVH with its
+# kernels).
+FOLLOWS: dict[str, str] = {"shade": "back", "raytrace": "raytrace-bvh"}
 
 # Kernel modules without a warm-up of their own, after the module whose warm-ups compile their
 # kernels: the report of that module counts theirs too (a file split by concern keeps one
