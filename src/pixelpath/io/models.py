@@ -409,27 +409,27 @@ def _world_matrix(
     transform of each chain of matrices, by the matrices' ids (they live as long as
     ``parent``): the primitives of one glTF mesh are parts under the same node.
     """
-    from trimesh.transformations import fix_rigid
-
     chain = []
     while node in parent:
         node, matrix = parent[node]
         chain.append(matrix)
     if len(chain) > 1:  # trimesh drops identities and multiplies the rest, root first
-        chain = [m for m in reversed(chain) if not _identity(m, known)] or [_IDENTITY]
-    key = ("world", *map(id, chain))
-    if key not in known:
-        matrix = np.linalg.multi_dot(chain) if len(chain) > 1 else chain[0]
-        known[key] = fix_rigid(matrix, max_deviance=1e-5)  # trimesh repairs near-rigid ones
-    return known[key]
+        chain = [m for m in reversed(chain)
+                 if not _once(known, ("identity", id(m)), _is_identity, m)] or [_IDENTITY]
+    return _once(known, ("world", *map(id, chain)), _chain_product, chain)
 
 
-def _identity(matrix: np.ndarray, known: dict[tuple, Any]) -> bool:
+def _chain_product(chain: list[np.ndarray]) -> np.ndarray:
+    """Return the product of a node's chain of edge matrices, root first, as trimesh makes it."""
+    from trimesh.transformations import fix_rigid
+
+    matrix = np.linalg.multi_dot(chain) if len(chain) > 1 else chain[0]
+    return fix_rigid(matrix, max_deviance=1e-5)  # trimesh repairs near-rigid transforms
+
+
+def _is_identity(matrix: np.ndarray) -> bool:
     """Whether trimesh's scene graph takes the edge ``matrix`` for the identity (and drops it)."""
-    key = ("identity", id(matrix))
-    if key not in known:
-        known[key] = not np.abs(matrix - _IDENTITY).max() > 1e-8
-    return known[key]
+    return not np.abs(matrix - _IDENTITY).max() > 1e-8
 
 
 @functools.cache  # built on first use, once: trimesh imports slowly, and a class costs 40 µs
