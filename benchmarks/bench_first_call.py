@@ -8,7 +8,7 @@ second one:
 - ``rgb_to_hsv`` of a 3840x2160 float32 image, beside OpenCV's ``cvtColor(..., RGB2HSV)`` of the
   same image in its own fresh interpreter (the anchor; skipped with a message without OpenCV:
   ``pip install opencv-python-headless``);
-- a render of the bundled showcase (z-buffer, Phong, 800x600), first against second.
+- a render of the bundled showcase (z-buffer, Phong, 640x400), first against second.
 
 Medians of ``--rounds`` rounds, in milliseconds::
 
@@ -84,7 +84,7 @@ def main() -> None:
     rows = [
         ("rgb_to_hsv 3840x2160 float32", PIXELPATH_COLOR),
         ("cv2.cvtColor RGB2HSV (anchor)", OPENCV_COLOR),
-        ("render showcase 800x600", PIXELPATH_RENDER),
+        ("render showcase 640x400", PIXELPATH_RENDER),
     ]
     print(f"{'call':32} {'first ms':>9} {'second ms':>10} {'first/second':>13}")
     results = {}
