@@ -398,6 +398,7 @@ def _gltf_parts(path: Path, resolver: Any, file: BinaryIO) -> list[_Part]:
 
 
 _IDENTITY = np.eye(4)
+_IDENTITY_BYTES = _IDENTITY.tobytes()
 
 
 def _world_matrix(
@@ -620,19 +621,32 @@ def _mesh(path: Path, part: _Part, name: str, gltf: dict | None, shared: dict) -
         # stored in the file: computing them would be a guess
         normals = np.asarray(part.normals, dtype=np.float64)
         normals = normals if v.all_finite(normals) else None
-    matrix = np.asarray(part.matrix, dtype=np.float64)
-    linear, shift = matrix[:3, :3], matrix[:3, 3]
-    vertices = moved(vertices, linear, shift)
-    # parts under one node share its matrix (the same object): invert it once
-    node = id(part.matrix)
-    if normals is not None:  # the inverse transpose, row by row
-        normals = normals @ _once(shared, ("inverse", node), np.linalg.inv, linear)
-    if _once(shared, ("det", node), np.linalg.det, linear) < 0.0:
-        faces = faces[:, ::-1]  # a mirroring node: keep faces counter-clockwise outside
+    vertices, normals, faces = _placed(part.matrix, vertices, normals, faces, shared)
     material = _material(path, part.visual, gltf, shared)
     uv = _uv(part.visual, len(vertices))
     colors = _vertex_colors(part.colors, len(vertices), linear=gltf is not None)
     return Mesh(vertices, faces, material, normals, colors, uv, name)
+
+
+def _placed(
+    node_matrix: Any, vertices: np.ndarray, normals: np.ndarray | None, faces: np.ndarray,
+    shared: dict,
+) -> tuple[np.ndarray, np.ndarray | None, np.ndarray]:
+    """Return a part's vertices, normals and faces in world space, under its node's matrix."""
+    matrix = np.asarray(node_matrix, dtype=np.float64)
+    if matrix.tobytes() == _IDENTITY_BYTES:
+        # Most nodes do not move their parts: the products below give these bits (x + 0.0 is
+        # x, but for -0.0, which becomes +0.0), without their 70 µs a file (the truck's).
+        return vertices + 0.0, None if normals is None else normals + 0.0, faces
+    linear, shift = matrix[:3, :3], matrix[:3, 3]
+    vertices = moved(vertices, linear, shift)
+    # parts under one node share its matrix (the same object): invert it once
+    node = id(node_matrix)
+    if normals is not None:  # the inverse transpose, row by row
+        normals = normals @ _once(shared, ("inverse", node), np.linalg.inv, linear)
+    if _once(shared, ("det", node), np.linalg.det, linear) < 0.0:
+        faces = faces[:, ::-1]  # a mirroring node: keep faces counter-clockwise outside
+    return vertices, normals, faces
 
 
 def _once(shared: dict, key: tuple, function: Any, argument: Any) -> Any:
