@@ -1,0 +1,83 @@
+"""A scene's geometry: built once per tuple of objects, only planes following the camera."""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+import pixelpath as pp
+from pixelpath.raster import tessellate
+from pixelpath.raster.tessellate import scene_geometry, view_reach
+from pixelpath.scene.animation import Animation, ObjectKey, Turntable
+
+OBJECTS = (
+    pp.Sphere((0, 1, 0), 1.0),
+    pp.Plane((0, 0, 0), (0, 1, 0)),
+    pp.Box((1.5, 0, -1), (2.5, 1, 0)),
+    pp.Mesh([[0, 0, 2], [1, 0, 2], [0, 1, 2]], [[0, 1, 2]], colors=[[1, 0, 0]] * 3),
+    pp.Plane((0, 3, 0), (0, -1, 0.2)),
+)
+
+
+def scene_from(eye, fov=45.0, size=(64, 48), objects=OBJECTS):
+    camera = pp.Camera(eye=eye, target=(0, 0.5, 0), fov=fov, width=size[0], height=size[1])
+    return pp.Scene(camera, objects=objects, lights=[pp.PointLight((4, 6, 5))])
+
+
+def fields(geometry):
+    """Every array of the geometry, and each mesh's vertices and polygons."""
+    arrays = [
+        getattr(geometry, f.name) for f in dataclasses.fields(geometry)
+        if isinstance(getattr(geometry, f.name), np.ndarray)
+    ]
+    arrays += [a for m in geometry.meshes for a in (m.vertices, m.face_indices, m.vertex_normals)]
+    return arrays
+
+
+coordinate = st.floats(-20, 20, allow_nan=False).filter(lambda x: abs(x) > 0.5)
+
+
+@settings(max_examples=25, deadline=None)
+@given(first=st.tuples(coordinate, coordinate, coordinate),
+       second=st.tuples(coordinate, coordinate, coordinate), fov=st.floats(20, 100))
+def test_another_cameras_geometry_is_what_a_fresh_build_gives_bit_for_bit(first, second, fov):
+    scene = scene_from(first)
+    scene_geometry(scene)
+    moved = dataclasses.replace(scene, camera=scene_from(second, fov).camera)
+    assert moved.objects is scene.objects
+    reused = scene_geometry(moved)
+    fresh = tessellate._build_geometry(OBJECTS, moved.camera)
+    assert [a.tobytes() for a in fields(reused)] == [a.tobytes() for a in fields(fresh)]
+    assert [a.dtype for a in fields(reused)] == [a.dtype for a in fields(fresh)]
+
+
+def test_without_planes_every_camera_shares_one_geometry():
+    objects = tuple(o for o in OBJECTS if not isinstance(o, pp.Plane))
+    one = scene_geometry(scene_from((3, 2, 6), objects=objects))
+    other = scene_geometry(scene_from((-5, 1, 2), fov=80, objects=objects))
+    assert one is other
+
+
+def test_a_plane_reaches_as_far_as_each_camera_sees():
+    narrow, wide = scene_from((0, 2, 8), fov=20), scene_from((0, 2, 8), fov=100)
+    wide = dataclasses.replace(wide, objects=narrow.objects)  # same objects, same eye
+    for scene in (narrow, wide, narrow):
+        floor = scene_geometry(scene).meshes[1]
+        spread = floor.vertices.max(axis=0) - floor.vertices.min(axis=0)
+        assert np.isclose(spread[0], 2 * view_reach(scene.camera))
+
+
+def test_turntable_frames_share_the_objects_and_animated_ones_do_not():
+    still = dataclasses.replace(
+        scene_from((0, 2, 8)), animation=Animation(8, turntable=Turntable())
+    )
+    assert still.at_frame(3).objects is still.objects
+    spinning = dataclasses.replace(
+        still, animation=Animation(8, objects=[ObjectKey(2, 7, rotate=(0, 90, 0))])
+    )
+    assert spinning.at_frame(0).objects is spinning.objects  # nothing has moved yet
+    assert spinning.at_frame(7).objects is not spinning.objects
+    assert spinning.at_frame(7).objects[0] is spinning.objects[0]
