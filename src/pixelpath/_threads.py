@@ -14,7 +14,7 @@ from collections.abc import Callable, Sequence
 
 import numpy as np
 
-__all__ = ["in_runs", "in_threads"]
+__all__ = ["in_runs", "in_threads", "thread_count"]
 
 RUNS_PER_THREAD = 4  # in_threads() hands out this many runs per thread: uneven work evens out
 _EXECUTORS: dict[int, concurrent.futures.ThreadPoolExecutor] = {}
@@ -31,7 +31,7 @@ def in_threads(
 ) -> None:
     """Call ``work(start, stop)`` on runs of ``range(count)`` from several threads at once.
 
-    As many threads as Numba's (``numba.get_num_threads()``, so ``NUMBA_NUM_THREADS`` and
+    As many threads as Numba's (:func:`thread_count`, so ``NUMBA_NUM_THREADS`` and
     ``numba.set_num_threads`` apply), each taking runs in turn as it finishes one. The runs
     must write disjoint parts of the output. An exception in a run is raised here.
 
@@ -53,9 +53,7 @@ def in_threads(
     >>> out.tolist() == list(range(10)), len(finished)
     (True, 5)
     """
-    import numba
-
-    threads = numba.get_num_threads()
+    threads = thread_count()
     if runs is None:
         runs = 1 if threads == 1 else RUNS_PER_THREAD * threads
     runs = max(min(count // least, runs), 1)
@@ -73,6 +71,30 @@ def in_threads(
     for _ in results:  # re-raises a run's exception here
         if done is not None:
             done()
+
+
+def thread_count() -> int:
+    """Return how many threads pixelpath's pool runs: Numba's ``get_num_threads()``.
+
+    Until something starts Numba's own threading layer (a ``parallel=True`` kernel of the
+    user's, or ``numba.set_num_threads``), that number is ``NUMBA_NUM_THREADS`` from Numba's
+    configuration, read without asking: ``get_num_threads()`` starts the layer's threads
+    first, which took 3.3 ms of a process's first big call and left threads that no
+    pixelpath kernel uses.
+
+    Examples
+    --------
+    >>> import numba
+    >>> from pixelpath._threads import thread_count
+    >>> thread_count() == numba.get_num_threads()
+    True
+    """
+    import numba
+    from numba.np.ufunc import parallel
+
+    if getattr(parallel, "_is_initialized", True):  # started, or a Numba that names it otherwise
+        return numba.get_num_threads()
+    return numba.config.NUMBA_NUM_THREADS
 
 
 def in_runs(

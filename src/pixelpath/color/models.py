@@ -209,9 +209,7 @@ def _convert_in_threads(
     src: np.ndarray, dst: np.ndarray, src_channels: int, dst_channels: int, args: tuple
 ) -> bool:
     """Run ``convert_span`` on runs of whole pixels from several threads; whether any was bad."""
-    import numba
-
-    from pixelpath._threads import in_threads
+    from pixelpath._threads import in_threads, thread_count
     from pixelpath.color import _kernels
 
     flags = []
@@ -224,7 +222,7 @@ def _convert_in_threads(
         ))
 
     # One run per thread: every pixel costs the same, and each run's dispatch costs a little.
-    in_threads(convert, len(src) // src_channels, runs=numba.get_num_threads())
+    in_threads(convert, len(src) // src_channels, runs=thread_count())
     return any(flags)
 
 
