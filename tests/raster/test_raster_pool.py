@@ -50,22 +50,6 @@ def test_every_pixel_of_a_recycled_buffer_is_rewritten():
     assert np.all(np.isinf(empty.depth)) and np.all(empty.object_id == -1)
 
 
-def test_a_frames_buffers_share_one_block_that_outlives_any_of_them():
-    rgb, depth, object_id, normal = _pool.frame_outputs((48, 64))
-    assert all(a.flags.c_contiguous and a.flags.writeable for a in (rgb, depth, object_id, normal))
-    starts = [a.__array_interface__["data"][0] for a in (rgb, depth, object_id, normal)]
-    assert all((start - starts[0]) % _pool.ALIGN == 0 for start in starts)
-    depth[:] = 7.0
-    del rgb, object_id, normal  # the depth buffer alone keeps the block in use
-    for _ in range(3):
-        others = _pool.frame_outputs((48, 64))
-        assert not any(np.shares_memory(other, depth) for other in others)
-        for other in others:
-            other.fill(0)
-        del others
-    assert np.all(depth == 7.0)
-
-
 def test_an_image_kept_in_part_keeps_its_pixels():
     camera = pp.Camera(eye=(0, 0, 4), target=(0, 0, 0), width=24, height=16)
     scene = pp.Scene(camera, objects=[pp.Sphere((0, 0, 0), 1.0)], lights=[pp.PointLight((2, 2, 4))])

@@ -403,7 +403,12 @@ def output_buffers(view: View):
     from pixelpath.raster import _kernels, _pool
 
     shape = (view.height, view.width)
-    return _kernels.Buffers(*_pool.frame_outputs(shape))
+    return _kernels.Buffers(
+        _pool.empty((*shape, 3), np.float32),
+        _pool.empty(shape, np.float32),
+        _pool.empty(shape, np.int32),
+        _pool.empty((*shape, 3), np.float32),
+    )
 
 
 def slices(view: View) -> list[tuple[int, int]]:

@@ -8,11 +8,6 @@ memoryview of a pooled block of bytes; when the last view of it is gone (the ima
 array taken from it), a finalizer gives the block back for the next frame. Memory still in use
 is never handed out again, and only a couple of spare buffers per size are kept.
 
-A frame's four buffers share one block (:func:`frame_outputs`): NumPy asks the system for huge
-pages for blocks of 4 MiB or more, so a 640×400 frame's 8 MB fault in as a few 2 MiB pages
-instead of 2,000 small ones. The block goes back when none of the four is in use: an array kept
-from an image keeps the other three's memory too.
-
 A new block is an uninitialized NumPy array, not a ``bytearray``, which fills itself with
 zeros: that pass touched every page of a frame's fresh buffers in the calling thread before
 the kernels wrote them (5 ms of a first 640×400 render's 20-24), where now the kernels' first
@@ -29,7 +24,6 @@ import numpy as np
 
 SPARES_PER_SIZE = 2
 LARGEST_KEPT = 1 << 27  # bytes; bigger buffers go back to the system
-ALIGN = 64  # bytes: a cache line
 
 _spares: dict[int, list[np.ndarray]] = {}
 
@@ -53,31 +47,6 @@ def empty(shape: tuple[int, ...], dtype: type) -> np.ndarray:
         # Every view of flat keeps it alive, so this runs only when no array uses raw.
         weakref.finalize(flat, _give_back, raw).atexit = False
     return flat.reshape(shape)
-
-
-def frame_outputs(shape: tuple[int, int]) -> tuple[np.ndarray, ...]:
-    """Return a frame's uninitialized colour, depth, object-id and normal buffers.
-
-    ``(h, w, 3)`` float32, ``(h, w)`` float32, ``(h, w)`` int32 and ``(h, w, 3)`` float32 arrays,
-    each at an offset into one pooled block that is a multiple of 64 bytes (a cache line).
-
-    Examples
-    --------
-    >>> from pixelpath.raster import _pool
-    >>> rgb, depth, object_id, normal = _pool.frame_outputs((2, 3))
-    >>> rgb.shape, depth.dtype.name, object_id.dtype.name, normal.shape
-    ((2, 3, 3), 'float32', 'int32', (2, 3, 3))
-    """
-    kinds = (((*shape, 3), np.float32), (shape, np.float32), (shape, np.int32),
-             ((*shape, 3), np.float32))
-    sizes = [math.prod(part) * np.dtype(dtype).itemsize for part, dtype in kinds]
-    rooms = [-(-size // ALIGN) * ALIGN for size in sizes]  # sizes rounded up to ALIGN
-    block = empty((sum(rooms),), np.uint8)
-    arrays, start = [], 0
-    for (part, dtype), size, room in zip(kinds, sizes, rooms, strict=True):
-        arrays.append(block[start : start + size].view(dtype).reshape(part))
-        start += room
-    return tuple(arrays)
 
 
 def _take(nbytes: int) -> np.ndarray:
