@@ -70,14 +70,25 @@ def test_a_plane_reaches_as_far_as_each_camera_sees():
         assert np.isclose(spread[0], 2 * view_reach(scene.camera))
 
 
-def test_turntable_frames_share_the_objects_and_animated_ones_do_not():
-    still = dataclasses.replace(
-        scene_from((0, 2, 8)), animation=Animation(8, turntable=Turntable())
+def test_scenes_made_from_the_same_objects_share_their_geometry_and_triangles():
+    from pixelpath.raytrace.tracer import scene_triangles
+
+    objects = [o for o in OBJECTS if not isinstance(o, pp.Plane)]
+    one, other = scene_from((3, 2, 6), objects=objects), scene_from((-4, 1, 5), objects=objects)
+    assert one.objects is not other.objects  # each Scene makes a tuple of the list
+    assert scene_geometry(one) is scene_geometry(other)
+    assert scene_triangles(one) is scene_triangles(other)
+    moved = [*objects[:2], pp.Box((1.5, 0, -1), (2.5, 1, 0.5)), *objects[3:]]
+    assert scene_geometry(scene_from((3, 2, 6), objects=moved)) is not scene_geometry(one)
+
+
+def test_turntable_frames_share_the_first_frames_geometry():
+    turning = dataclasses.replace(
+        scene_from((0, 2, 8), objects=OBJECTS[:1]), animation=Animation(8, turntable=Turntable())
     )
-    assert still.at_frame(3).objects is still.objects
+    first = scene_geometry(turning.at_frame(0))
+    assert all(scene_geometry(turning.at_frame(k)) is first for k in range(1, 8))
     spinning = dataclasses.replace(
-        still, animation=Animation(8, objects=[ObjectKey(2, 7, rotate=(0, 90, 0))])
+        turning, animation=Animation(8, objects=[ObjectKey(0, 7, translate=(0, 1, 0))])
     )
-    assert spinning.at_frame(0).objects is spinning.objects  # nothing has moved yet
-    assert spinning.at_frame(7).objects is not spinning.objects
-    assert spinning.at_frame(7).objects[0] is spinning.objects[0]
+    assert scene_geometry(spinning.at_frame(7)) is not first

@@ -17,7 +17,7 @@ import dataclasses
 import functools
 import math
 import threading
-from collections.abc import Callable
+from collections.abc import Callable, Hashable
 
 import numpy as np
 
@@ -119,33 +119,43 @@ class _IdentityCache:
 
     Scene objects are immutable but compare by value (unhashable), so re-rendering a scene
     looks its derived arrays up by ``id``; holding the object keeps that id from being reused.
+    ``key`` makes the key: ``id``, or :func:`member_ids` for a tuple of objects, which two
+    scenes made from the same objects share.
     """
 
-    def __init__(self, size: int) -> None:
-        self._entries: collections.OrderedDict[int, tuple[object, object]] = (
+    def __init__(self, size: int, key: Callable[[object], Hashable] = id) -> None:
+        self._entries: collections.OrderedDict[Hashable, tuple[object, object]] = (
             collections.OrderedDict()
         )
         self._size = size
+        self._key = key
         self._lock = threading.Lock()  # renders may run in several threads at once
 
     def get(self, obj: object, compute: Callable[[object], object]) -> object:
+        key = self._key(obj)  # ids of live objects: this entry holds them, they stay unique
         with self._lock:
-            hit = self._entries.get(id(obj))
-            if hit is not None and hit[0] is obj:
-                self._entries.move_to_end(id(obj))
+            hit = self._entries.get(key)
+            if hit is not None:
+                self._entries.move_to_end(key)
                 return hit[1]
         value = compute(obj)
         with self._lock:
-            self._entries[id(obj)] = (obj, value)
+            self._entries[key] = (obj, value)
             if len(self._entries) > self._size:
                 self._entries.popitem(last=False)
         return value
 
 
+def member_ids(objects: tuple) -> tuple[int, ...]:
+    """Return the ids of a scene's objects: the key of what is derived from all of them."""
+    return tuple(map(id, objects))
+
+
 _SPHERE_MESHES = _IdentityCache(64)
-# Per tuple of scene objects (the same tuple when only the camera changes: a new size, the
-# frames of a turntable, the views of a dataset), its geometry (see _Geometries).
-_GEOMETRIES = _IdentityCache(8)
+# Per set of scene objects, in order (the same when only the camera changes: a new size, the
+# frames of a turntable, the views of a dataset; or scenes made from the same objects), its
+# geometry (see _Geometries).
+_GEOMETRIES = _IdentityCache(8, member_ids)
 
 
 def _sphere_mesh(sphere: Sphere) -> Mesh:

@@ -42,7 +42,7 @@ from typing import Any
 import numpy as np
 
 from pixelpath.contract import Frame, RenderOptions, View
-from pixelpath.raster.tessellate import _IdentityCache
+from pixelpath.raster.tessellate import _IdentityCache, member_ids
 from pixelpath.raytrace.bvh import BVH
 from pixelpath.scene import Box, Camera, Mesh, Plane, Scene, Sphere
 
@@ -72,7 +72,7 @@ class SceneTriangles:
     texel_scale: np.ndarray  # (T,) sqrt(uv area / world area): uv units per world unit
 
 
-_TRIANGLES = _IdentityCache(8)  # per tuple of scene objects (kept when only the camera changes)
+_TRIANGLES = _IdentityCache(8, member_ids)  # per scene objects (kept when the camera changes)
 
 
 def scene_triangles(scene: Scene) -> SceneTriangles:

@@ -28,7 +28,6 @@ import bisect
 import dataclasses
 import math
 import numbers
-import operator
 from collections.abc import Sequence
 from typing import Any
 
@@ -298,19 +297,12 @@ class Animation(Record):
         return transform_matrix(**parts)
 
     def objects_at(self, objects: Sequence[Any], frame: int) -> tuple[Any, ...]:
-        """Return ``objects`` moved by their animated transforms at ``frame``.
-
-        When nothing moves, the ``objects`` tuple itself: the renderers keep what they derive
-        from a scene's objects (triangle soups, BVHs) by the tuple's identity, so the frames of
-        a turntable share it instead of building it again for each frame.
-        """
+        """Return ``objects`` moved by their animated transforms at ``frame``."""
         moved = []
         for index, obj in enumerate(objects):
             matrix = self.matrix_at(index, frame)
             unchanged = matrix is None or np.array_equal(matrix, np.eye(4))
             moved.append(obj if unchanged else transform_object(obj, matrix))
-        if isinstance(objects, tuple) and all(map(operator.is_, moved, objects)):
-            return objects
         return tuple(moved)
 
     def check_scene(self, camera: Camera, objects: Sequence[Any]) -> None:
