@@ -151,6 +151,20 @@ def test_tree_is_built_once_and_reused_from_another_camera():
     check_agreement(moved, "bsp")
 
 
+def test_a_turntables_frames_reuse_the_first_frames_tree():
+    from pixelpath.scene.animation import Animation, Turntable
+
+    turning = dataclasses.replace(
+        scene_of("interpenetrating", seed=5), animation=Animation(6, turntable=Turntable())
+    )
+    tree = build_tree(turning.at_frame(0))
+    for frame in range(1, 6):
+        scene = turning.at_frame(frame)  # a new Scene, holding a new tuple of the same objects
+        assert build_tree(scene) is tree
+        _, report = pp.render(scene, "bsp", explain=True)
+        assert report.summary["tree"].startswith("reused")
+
+
 def test_a_tree_kept_by_the_caller_draws_the_scene():
     scene = crossing_pair()
     tree = build_tree(scene)

@@ -25,7 +25,8 @@ nothing of themselves, and the grid the raster front end makes of them for each 
 An object-space ordering with image-space drawing (SPEC §9 errata). Build: about
 O(n log n) polygon classifications plus the pieces splitting makes; drawing: a visit of every
 node and the painting of every polygon in view. Memory: the tree's fragments and vertices, kept
-while the scene lives (the last few scenes' trees are cached).
+for the scene's objects (the last few sets of objects' trees are cached): every viewpoint, and
+every frame of an animation whose objects do not move, draws the same tree.
 """
 
 from __future__ import annotations
@@ -301,11 +302,11 @@ def build_tree(scene: Scene) -> BSPTree:
 
 def _cached_tree(scene: Scene) -> tuple[BSPTree, bool]:
     """Return the scene's tree and whether it was built before this call."""
-    from pixelpath.raster.tessellate import _IdentityCache
+    from pixelpath.raster.tessellate import _IdentityCache, member_ids
 
     global _TREES
     if _TREES is None:
-        _TREES = _IdentityCache(8)
+        _TREES = _IdentityCache(8, member_ids)
     built = []
 
     def build(objects):
@@ -316,7 +317,7 @@ def _cached_tree(scene: Scene) -> tuple[BSPTree, bool]:
     return tree, not built
 
 
-_TREES = None  # the last few trees, keyed by the scene's objects tuple
+_TREES = None  # the last few trees, keyed by the scene's objects (their identities, in order)
 
 
 def _build(scene: Scene) -> BSPTree:
