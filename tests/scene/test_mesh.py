@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import pickle
 
 import numpy as np
 import pytest
@@ -194,3 +195,30 @@ def test_invalid_normals_and_transforms():
         mesh.transformed(np.diag([1.0, 0.0, 1.0, 1.0]))
     with pytest.raises(TypeError, match="material must be a Material"):
         Mesh(SQUARE, [[0, 1, 2, 3]], material="red")
+
+
+def test_a_mesh_cannot_be_changed_once_made():
+    mesh = Mesh([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]], name="tri")
+    for name, value in (("material", Material(color=(1, 0, 0))), ("vertices", np.zeros((3, 3))),
+                        ("name", "other"), ("extra", 1)):
+        with pytest.raises(AttributeError, match="cannot be changed"):
+            setattr(mesh, name, value)
+    with pytest.raises(AttributeError, match="cannot be changed"):
+        del mesh.material
+    again = pickle.loads(pickle.dumps(mesh))
+    assert again == mesh and again.name == "tri"
+    with pytest.raises(AttributeError, match="cannot be changed"):
+        again.material = Material()
+
+
+def test_a_new_mesh_from_the_same_arrays_is_drawn_as_it_is_now():
+    import pixelpath as pp
+
+    grey = Mesh([[-1, -1, 0], [1, -1, 0], [0, 1, 0]], [[0, 1, 2]])
+    red = Mesh(grey.vertices, grey.faces, Material(color=(1, 0, 0), ks=0.0), grey.normals)
+    camera = pp.Camera(eye=(0, 0, 4), target=(0, 0, 0), width=16, height=16)
+    for method in ("zbuffer", "raytrace"):
+        first = pp.render(pp.Scene(camera, [grey], [pp.PointLight((0, 0, 5))]), method)
+        second = pp.render(pp.Scene(camera, [red], [pp.PointLight((0, 0, 5))]), method)
+        center = np.asarray(second)[8, 8]
+        assert center[0] > 0 and center[1] == 0 and np.asarray(first)[8, 8][1] > 0

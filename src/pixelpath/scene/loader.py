@@ -392,7 +392,9 @@ def _placed(factory: Any) -> Any:
         if matrix is None:
             return obj
         moved = transform_object(obj, matrix)
-        return _tagged(moved, spec) if isinstance(moved, Mesh) else moved  # a rotated box
+        if isinstance(moved, Mesh):  # a rotated box
+            return moved._label(name=moved.name, source=spec)
+        return moved
 
     return make
 
@@ -403,8 +405,7 @@ def _generated(factory: Any) -> Any:
         mesh = factory(material=material, **values)
         if matrix is not None:
             mesh = mesh.transformed(matrix)
-        mesh.name = name or mesh.name
-        return _tagged(mesh, spec)
+        return mesh._label(name=name or mesh.name, source=spec)
 
     return make
 
@@ -436,8 +437,7 @@ def _mesh(
         spec = None  # inline meshes are written back from their arrays
     if matrix is not None:
         mesh = mesh.transformed(matrix)
-    mesh.name = name or mesh.name
-    return mesh if spec is None else _tagged(mesh, spec)
+    return mesh._label(name=name or mesh.name, source=spec)
 
 
 def _is_model(name: Any, base: Path, material: Any) -> bool:
@@ -483,15 +483,9 @@ def _model_parts(
     prefix = values.get("name")
     parts = [part if matrix is None else part.transformed(matrix) for part in parts]
     spec["_model"] = {"first": parts[0], "own_materials": material is None}
-    for part in parts:
-        part.name = f"{prefix}/{part.name}" if prefix else part.name
-        _tagged(part, spec)  # all parts share one spec: Scene.to_dict writes the entry once
-    return parts
-
-
-def _tagged(mesh: Mesh, spec: dict) -> Mesh:
-    mesh.source = spec
-    return mesh
+    # all parts share one spec: Scene.to_dict writes the entry once
+    return [part._label(name=f"{prefix}/{part.name}" if prefix else part.name, source=spec)
+            for part in parts]
 
 
 _MAKERS = {

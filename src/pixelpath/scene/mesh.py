@@ -59,6 +59,14 @@ class Mesh:
         Empty meshes, non-finite vertices, faces with fewer than three vertices or with indices
         outside ``0..V-1`` (the message names the face).
 
+    Notes
+    -----
+    A mesh cannot be changed once made, like every scene object: the renderers keep what they
+    derive from it (its BVH, its triangles, its edges) for as long as it lives, and a changed
+    mesh would be drawn as it was. Setting an attribute raises ``AttributeError``; make a new
+    mesh instead, for example ``Mesh(mesh.vertices, mesh.faces, red, mesh.normals, mesh.colors,
+    mesh.uv, mesh.name)`` for another material.
+
     Examples
     --------
     >>> from pixelpath.scene import Mesh
@@ -100,6 +108,25 @@ class Mesh:
         # How this mesh was made (a file path or a generator and a transform), so that
         # Scene.to_dict can write it back compactly; None means "write the arrays inline".
         self.source = source
+        self._sealed = True
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        if self.__dict__.get("_sealed"):
+            raise AttributeError(
+                f"cannot set {name!r}: a Mesh cannot be changed once made (renderers keep what "
+                "they derive from it); make a new one, e.g. Mesh(mesh.vertices, mesh.faces, "
+                "material, mesh.normals, mesh.colors, mesh.uv, mesh.name)"
+            )
+        object.__setattr__(self, name, value)
+
+    def __delattr__(self, name: str) -> None:
+        self.__setattr__(name, None)  # the same refusal
+
+    def _label(self, *, name: str | None = None, source: dict[str, Any] | None = None) -> Mesh:
+        """Set the loader's bookkeeping (``name``, ``source``), which no renderer reads."""
+        object.__setattr__(self, "name", name)
+        object.__setattr__(self, "source", source)
+        return self
 
     __hash__ = None  # meshes compare by value
 
