@@ -219,10 +219,10 @@ def scene_geometry(scene: Scene, camera: Camera | None = None) -> SceneGeometry:
     Returns
     -------
     SceneGeometry
-        Shared by later calls for the same objects (the scene's ``objects`` tuple, which a
-        scene with another camera keeps), so re-rendering a scene, or rendering it from
-        elsewhere, does not tessellate it again (only its planes' grids follow the camera);
-        do not modify its arrays.
+        Shared by later calls for the same objects in the same order (any scene made of
+        them: the same scene with another camera, the frames of an animation whose objects
+        do not move), so they are not tessellated again; only planes' grids follow the
+        camera. Do not modify its arrays.
 
     Examples
     --------
@@ -238,7 +238,7 @@ def scene_geometry(scene: Scene, camera: Camera | None = None) -> SceneGeometry:
 
 
 class _Geometries:
-    """The geometry of a tuple of objects, for each camera in turn.
+    """The geometry of a scene's objects, for each camera in turn.
 
     Only planes depend on the camera (their grids are centred under the eye and reach as far
     as it sees): the geometry first built is kept, and another camera's is a copy of it with
