@@ -427,7 +427,7 @@ def _relation(infinite: np.ndarray, eps: float) -> np.ndarray:
 def _drawing(tree: BSPTree, geometry) -> _Drawing:
     """Return the fragments and this camera's infinite-plane pieces as one geometry.
 
-    Cached per scene geometry (that is, per scene and camera position).
+    Cached per scene geometry (that is, per set of objects and, with planes, camera position).
     """
     global _DRAWINGS
     if _DRAWINGS is None:
