@@ -18,6 +18,10 @@ so no run always goes first), printing every round and the medians;
 then Dask's per-task overhead: tasks that take the scattered scene and return nothing, timed
 over many, on the 2-worker cluster. The anchor is the serial run: a cluster must beat it.
 
+``--methods M ...`` instead renders the turntable by each method in a loop, beside one of its
+frames rendered again as many times (no files): the turntable should cost no more than
+repeating a frame, since what depends on the objects alone is built once.
+
 ``--cold`` instead measures what a cold run costs before its first frame, in the order of the
 command line (the request is checked by rendering one pixel here, then the cluster starts and
 its workers warm up): run it with an empty compile cache, where an installed package copies in
@@ -25,6 +29,7 @@ the kernels it was built with (``PIXELPATH_PRECOMPILED=0`` compiles them instead
 
     python benchmarks/bench_frames.py [--frames 120] [--size 640x400] [--rounds 3]
         [--empty-tasks 2000] [--png-level 1] [--breakdown 30] [--runs serial]
+    python benchmarks/bench_frames.py --methods zbuffer bsp raytrace [--frames 20]
     PIXELPATH_CACHE_DIR=$(mktemp -d) python benchmarks/bench_frames.py --cold
     PIXELPATH_PRECOMPILED=0 PIXELPATH_CACHE_DIR=$(mktemp -d) \\
         python benchmarks/bench_frames.py --cold
@@ -81,6 +86,31 @@ def serial_only(scene, frames: range, rounds: int) -> None:
             f"{statistics.median(cpu):.1f} ms of CPU a frame (medians of "
             f"{', '.join(f'{rate:.1f}' for rate in rates)} frames/s)"
         )
+
+
+def by_method(scene, frames: int, methods: list[str]) -> None:
+    """Print, per method, ms a frame for one frame rendered again and for the turning frames.
+
+    The two cost the same when nothing that depends on the objects alone (triangles, BVH, BSP
+    tree) is built again for each frame; the first is the anchor of the second.
+    """
+    import pixelpath as pp
+
+    print(f"\nby method, {frames} renders each, no files: the same frame again / the turntable")
+    count = scene.animation.frames
+    for method in methods:
+        pp.render(scene.at_frame(0), method)
+        again = scene.at_frame(1)
+        pp.render(again, method)
+        start = time.perf_counter()
+        for _ in range(frames):
+            pp.render(again, method)
+        same = (time.perf_counter() - start) / frames * 1e3
+        start = time.perf_counter()
+        for frame in range(2, 2 + frames):
+            pp.render(scene.at_frame(frame % count), method)
+        turning = (time.perf_counter() - start) / frames * 1e3
+        print(f"  {method:9} {same:7.1f} ms / {turning:7.1f} ms a frame")
 
 
 def breakdown(scene, count: int, folder: Path) -> None:
@@ -235,12 +265,19 @@ def main() -> None:
     )
     parser.add_argument("--breakdown", type=int, default=30, help="frames timed step by step")
     parser.add_argument("--runs", choices=("all", "serial"), default="all")
+    parser.add_argument(
+        "--methods", nargs="+", metavar="METHOD",
+        help="instead: each method's turntable beside one frame rendered again (no files)",
+    )
     args = parser.parse_args()
     global PNG_LEVEL
     PNG_LEVEL = None if args.png_level == "pillow" else int(args.png_level)
     scene = showcase(args.size)
     if args.cold:
         cold(scene)
+        return
+    if args.methods:
+        by_method(scene, args.frames, args.methods)
         return
     frames = range(args.frames)
     cores = len(os.sched_getaffinity(0))
