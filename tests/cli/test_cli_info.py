@@ -84,6 +84,17 @@ def test_table_output_names_objects_lights_and_totals(scene_file, capsys):
     assert "total: 3 objects, 2 faces, 3 triangles, 2 lights" in out
 
 
+def test_totals_say_one_object_not_one_objects(tmp_path, capsys):
+    path = tmp_path / "one.toml"
+    path.write_text(
+        '[camera]\neye = [0, 0, 5]\ntarget = [0, 0, 0]\n\n'
+        '[[objects]]\ntype = "box"\nminimum = [0, 0, 0]\nmaximum = [1, 1, 1]\n\n'
+        '[[lights]]\ntype = "point"\nposition = [0, 3, 3]\n'
+    )
+    assert main(["info", str(path)]) == 0
+    assert "total: 1 object, 6 faces, 12 triangles, 1 light;" in capsys.readouterr().out
+
+
 def test_errors_exit_2_with_the_file_and_key(scene_file, capsys):
     scene_file.write_text(SCENE.replace("radius = 2", "radius = 0"))
     assert main(["info", str(scene_file)]) == 2

@@ -171,8 +171,14 @@ def _print_tables(summary: dict[str, Any]) -> None:
                        _vector(light["color"]))  # fmt: skip
     out.print(lights)
     totals = summary["totals"]
-    out.print(
-        f"total: {totals['objects']} objects, {totals['faces']:,} faces, "
-        f"{totals['triangles']:,} triangles, {totals['lights']} lights; "
-        f"ambient {_vector(summary['ambient'])}; bounds {_bounds(totals['bounds'])}"
+    counts = ", ".join(
+        _counted(totals[key], noun) for key, noun in
+        (("objects", "object"), ("faces", "face"), ("triangles", "triangle"), ("lights", "light"))
     )
+    ambient, bounds = _vector(summary["ambient"]), _bounds(totals["bounds"])
+    out.print(f"total: {counts}; ambient {ambient}; bounds {bounds}")
+
+
+def _counted(count: int, noun: str) -> str:
+    """``"1 object"``, ``"4,212 faces"``: the count and the noun, plural but for one."""
+    return f"{count:,} {noun}{'' if count == 1 else 's'}"
