@@ -1,4 +1,4 @@
-"""A scene's geometry: built once per tuple of objects, only planes following the camera."""
+"""A scene's geometry: built once per set of objects, only planes following the camera."""
 
 from __future__ import annotations
 
