@@ -171,14 +171,9 @@ def _print_tables(summary: dict[str, Any]) -> None:
                        _vector(light["color"]))  # fmt: skip
     out.print(lights)
     totals = summary["totals"]
-    counts = ", ".join(
-        _counted(totals[key], noun) for key, noun in
-        (("objects", "object"), ("faces", "face"), ("triangles", "triangle"), ("lights", "light"))
+    counts = ", ".join(  # "1 object", "4,212 faces": the keys are the nouns' plurals
+        f"{totals[key]:,} {key[:-1]}{'s' * (totals[key] != 1)}"
+        for key in ("objects", "faces", "triangles", "lights")
     )
     ambient, bounds = _vector(summary["ambient"]), _bounds(totals["bounds"])
     out.print(f"total: {counts}; ambient {ambient}; bounds {bounds}")
-
-
-def _counted(count: int, noun: str) -> str:
-    """``"1 object"``, ``"4,212 faces"``: the count and the noun, plural but for one."""
-    return f"{count:,} {noun}{'' if count == 1 else 's'}"

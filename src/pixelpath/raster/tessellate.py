@@ -247,16 +247,13 @@ class _Geometries:
     """
 
     def __init__(self, objects: tuple, camera: Camera) -> None:
-        self.objects = objects
         self.first = _build_geometry(objects, camera)
-        self.planes = []  # (object index, vertex rows, polygon rows) of each plane
-        vertex = polygon = 0
-        for index, mesh in enumerate(self.first.meshes):
-            vertices = slice(vertex, vertex + len(mesh.vertices))
-            polygons = slice(polygon, polygon + mesh.face_count)
-            if isinstance(objects[index], Plane):
-                self.planes.append((index, vertices, polygons))
-            vertex, polygon = vertices.stop, polygons.stop
+        # (plane, its vertex rows, its polygon rows, its object index) for each plane
+        self.planes = [
+            (obj, _rows(self.first.vertex_object, index), _rows(self.first.polygon_object, index),
+             index)
+            for index, obj in enumerate(objects) if isinstance(obj, Plane)
+        ]
         self.latest = (_plane_key(camera), self.first)
 
     def for_camera(self, camera: Camera) -> SceneGeometry:
@@ -276,8 +273,8 @@ class _Geometries:
         polygon_normals = first.polygon_normals.copy()
         polygon_points = first.polygon_points.copy()
         meshes = list(first.meshes)
-        for index, vertex_rows, polygon_rows in self.planes:
-            grid = _plane_grid(self.objects[index], camera)
+        for plane, vertex_rows, polygon_rows, index in self.planes:
+            grid = _plane_grid(plane, camera)
             vertices[vertex_rows] = grid.vertices
             polygon_normals[polygon_rows] = grid.face_normals
             polygon_points[polygon_rows] = _first_corners(grid)
@@ -286,6 +283,11 @@ class _Geometries:
             first, vertices=vertices, polygon_normals=polygon_normals,
             polygon_points=polygon_points, meshes=tuple(meshes),
         )
+
+
+def _rows(owners: np.ndarray, index: int) -> slice:
+    """Return the rows of a stacked per-vertex or per-polygon array of object ``index``."""
+    return slice(*np.searchsorted(owners, (index, index + 1)).tolist())
 
 
 def _plane_key(camera: Camera) -> tuple[float, ...]:

@@ -29,6 +29,12 @@ import numpy as np
 from pixelpath import _validate as v
 from pixelpath.scene.material import Material
 
+_UNCHANGEABLE = (
+    "cannot set {name!r}: a Mesh cannot be changed once made (renderers keep what they derive "
+    "from it); make a new one, e.g. Mesh(mesh.vertices, mesh.faces, material, mesh.normals, "
+    "mesh.colors, mesh.uv, mesh.name)"
+)
+
 
 class Mesh:
     """A polygon mesh with a material.
@@ -112,15 +118,11 @@ class Mesh:
 
     def __setattr__(self, name: str, value: Any) -> None:
         if self.__dict__.get("_sealed"):
-            raise AttributeError(
-                f"cannot set {name!r}: a Mesh cannot be changed once made (renderers keep what "
-                "they derive from it); make a new one, e.g. Mesh(mesh.vertices, mesh.faces, "
-                "material, mesh.normals, mesh.colors, mesh.uv, mesh.name)"
-            )
+            raise AttributeError(_UNCHANGEABLE.format(name=name))
         object.__setattr__(self, name, value)
 
     def __delattr__(self, name: str) -> None:
-        self.__setattr__(name, None)  # the same refusal
+        raise AttributeError(_UNCHANGEABLE.format(name=name))
 
     def _label(self, *, name: str | None = None, source: dict[str, Any] | None = None) -> Mesh:
         """Set the loader's bookkeeping (``name``, ``source``), which no renderer reads."""
