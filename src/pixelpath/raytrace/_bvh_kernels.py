@@ -31,6 +31,9 @@ BINS = 16  # SAH bins per axis
 MAX_LEAF = 8  # a node holding more triangles than this is split even when a leaf costs less
 NODE_COST = 1.0  # SAH: cost of visiting a node, relative to one triangle test
 
+# The box helpers below stay inlined by Numba (see pixelpath._jit): as functions of their own,
+# LLVM inlined them all, but a million-triangle build took 3 % longer, for no compile time saved.
+
 
 @njit(inline="always")
 def _area(box, k):

@@ -35,7 +35,7 @@ from pixelpath.raytrace._traversal_kernels import (
 )
 
 
-@njit(inline="always")
+@njit(refcount=False)
 def _mul32(x, c):
     """Return x·c mod 2³² for x, c < 2³², in products below 2⁴⁹ (no int64 overflow)."""
     low = x * (c & 0xFFFF)
@@ -43,7 +43,7 @@ def _mul32(x, c):
     return (low + high) & 0xFFFFFFFF
 
 
-@njit(inline="always")
+@njit(refcount=False)
 def _hash32(x):
     """Return a 32-bit integer hash of x (Wellons' lowbias32), in int64 arithmetic."""
     x &= 0xFFFFFFFF
@@ -55,13 +55,14 @@ def _hash32(x):
     return x
 
 
-@njit(inline="always")
+@njit(refcount=False)
 def _uniform(pixel, sample, axis):
     """Return a number in [0, 1) fixed by (pixel, sample, axis): the same in every run."""
     h = _hash32(pixel ^ _hash32(2 * sample + axis + 0x9E3779B9))
     return (h >> 8) * (1.0 / 16777216.0)
 
 
+# Inlined by Numba: as a function of its own LLVM leaves it a call (see pixelpath._jit).
 @njit(inline="always")
 def sample_position(pixel, sample, samples):
     """Return where sample ``sample`` of ``samples`` lies in its pixel, (0.5, 0.5) for one.
@@ -80,7 +81,7 @@ def sample_position(pixel, sample, samples):
     return (cx + _uniform(pixel, sample, 0)) / columns, (cy + _uniform(pixel, sample, 1)) / rows
 
 
-@njit(inline="always")
+@njit(refcount=False)
 def primary_ray(camera, px, py, width, height):
     """Return the origin and direction of the ray through image point (px, py).
 
@@ -259,7 +260,7 @@ def primary_shadows(count, scene, settings, work):
                        hit, stack, counts, result)
 
 
-@njit(inline="always")
+@njit(refcount=False)
 def _stored_geometry(geometry, ray):
     """Return a primary hit's point, geometric and shading normals from work.primary_geometry."""
     g = geometry
@@ -267,6 +268,7 @@ def _stored_geometry(geometry, ray):
             g[ray, 7], g[ray, 8])
 
 
+# Inlined by Numba: as a function of its own LLVM leaves it a call (see pixelpath._jit).
 @njit(inline="always")
 def _shadow_packet(lanes, bounds, links, tris, tri_pass, tri_object, shadows, shadow_of, hit,
                    stack, counts, result):

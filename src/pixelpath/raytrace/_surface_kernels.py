@@ -20,6 +20,9 @@ from pixelpath.raytrace._records import PLANE, SPHERE, TRANSPARENCY
 from pixelpath.raytrace._traversal_kernels import MISS
 from pixelpath.scene._texture_kernels import surface_color
 
+# These helpers stay inlined by Numba (see pixelpath._jit): as functions of their own, LLVM
+# inlined most of them, but the showcase's ray-traced frame took 7-14 % longer.
+
 
 @njit(inline="always")
 def hit_geometry(spheres, sphere_object, planes, plane_object, tris, tri_normals, tri_flat,

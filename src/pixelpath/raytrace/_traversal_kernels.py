@@ -255,7 +255,7 @@ def _packet_shear(rays):
     )
 
 
-@njit(inline="always")
+@njit(refcount=False)
 def _lane_limits(best_t):
     """Return each lane's farthest box entry still worth visiting (its nearest hit, grown)."""
     return (
@@ -263,12 +263,12 @@ def _lane_limits(best_t):
     )
 
 
-@njit(inline="always")
+@njit(refcount=False)
 def _lane(values, r):
     return values[0] if r == 0 else values[1] if r == 1 else values[2] if r == 2 else values[3]
 
 
-@njit(inline="always")
+@njit(refcount=False)
 def _lanes_entering(entry, limit):
     return (
         (entry[0] <= limit[0]) + (entry[1] <= limit[1]) + (entry[2] <= limit[2])
@@ -367,7 +367,7 @@ def closest_triangles4(bounds, links, tris, source, skip, cull, rays, lanes, t_m
     return nodes, tests
 
 
-@njit(inline="always")
+@njit(refcount=False)
 def _lanes_in(entry):
     """Return the bit mask of the lanes whose entry is finite (bit r for lane r)."""
     return (
@@ -376,7 +376,7 @@ def _lanes_in(entry):
     )
 
 
-@njit(inline="always")
+@njit(refcount=False)
 def _lane_count(mask):
     return (mask & 1) + ((mask >> 1) & 1) + ((mask >> 2) & 1) + ((mask >> 3) & 1)
 
@@ -506,7 +506,7 @@ def intersect_many(bounds, links, tris, source, skip, cull, labels, origins, dir
     return unusable
 
 
-@njit(inline="always")
+@njit(refcount=False)
 def _usable_ray(packet, r):
     """Whether row r of a packet holds a finite origin and a finite, non-zero direction.
 

@@ -149,7 +149,7 @@ def _log_hit(log, row, t, obj, kind, index, source, px, py, pz, nx, ny, nz, gx, 
     log[row, ETA] = eta
 
 
-@njit(inline="always")
+@njit(refcount=False)
 def _clamp01(value):
     return min(max(value, 0.0), 1.0)
 

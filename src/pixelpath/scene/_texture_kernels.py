@@ -54,7 +54,7 @@ class SurfaceTables(NamedTuple):
     alpha: np.ndarray
 
 
-@njit(inline="always")
+@njit(refcount=False)
 def wrapped(index, size, wrap):
     """Return texel ``index`` of a row or column of ``size`` texels under the wrap mode."""
     if wrap == CLAMP:
@@ -65,7 +65,7 @@ def wrapped(index, size, wrap):
     return index % size
 
 
-@njit(inline="always")
+@njit(refcount=False)
 def _texel(tables, start, width, col, row):
     """Linear (r, g, b, a) of texel (col, row) of the level at ``start`` and ``width`` texels wide.
 
@@ -78,6 +78,7 @@ def _texel(tables, start, width, col, row):
             (word >> 24) / 255.0)
 
 
+# Inlined by Numba: as a function of its own LLVM leaves it a call (see pixelpath._jit).
 @njit(inline="always")
 def _neighbours(x, size, wrap):
     """Return the texels (i0, i1) on either side of texel coordinate x, and x's fraction past i0.
