@@ -322,3 +322,39 @@ def test_uncounted_kernels_update_no_reference_counts_and_may_not_allocate():
     counted, uncounted = result["updates"]
     assert counted > 0 and uncounted == 0
     assert result["refused"]
+
+
+INLINED = """
+import json, re
+import numpy as np
+from pixelpath._jit import njit
+from pixelpath.raytrace._hit_kernels import reflect_direction, triangle_t
+
+def mirrored(directions, out):
+    for k in range(directions.shape[0]):
+        out[k] = reflect_direction(directions[k, 0], directions[k, 1], directions[k, 2],
+                                   0.0, 0.0, 1.0)
+
+kernel = njit(refcount=False, cache=False)(mirrored)
+directions = np.array([[1.0, 0.0, -1.0], [0.0, 2.0, -3.0]])
+out = np.empty((2, 3))
+kernel(directions, out)
+ir = kernel.inspect_llvm(kernel.signatures[0])
+print(json.dumps({
+    "out": out.tolist(),
+    "calls": len(re.findall(r"call [^\\n]*reflect_direction", ir)),
+    "plain": reflect_direction.targetoptions.get("inline", "never"),
+    "numba_inlined": triangle_t.targetoptions.get("inline"),
+}))
+"""
+
+
+def test_plain_helpers_are_inlined_by_llvm_into_their_callers():
+    # pixelpath._jit's rule: a small helper compiled as a function of its own costs no call in
+    # the kernels that use it, as LLVM inlines it; were that to stop (another Numba or LLVM),
+    # the ray tracer's plain helpers would become calls per ray.
+    result = run_python(INLINED, **JIT_ON)
+    assert result["out"] == [[1.0, 0.0, 1.0], [0.0, 2.0, 3.0]]
+    assert result["plain"] == "never"  # compiled on its own, not inlined by Numba
+    assert result["numba_inlined"] == "always"  # as the helpers LLVM leaves as calls are
+    assert result["calls"] == 0
