@@ -18,15 +18,15 @@ The rules live here, once:
 * Kernels that only work on the arrays they are given (``njit(refcount=False)``) are compiled
   without Numba's reference counting: its atomic updates of the arrays' counts, at every call
   and inlined helper, made the threads tracing one scene contend for the same cache lines.
-* The ray tracer's small helpers are compiled as functions of their own
-  (``njit(refcount=False)``), which LLVM inlines into their callers, rather than with
-  ``njit(inline="always")``, which inlines them in Numba's own IR and so types them afresh at
-  every call site, in Python: its compile went from 43 s to 32 s of CPU that way, with the same
-  machine code and the same pixels. ``inline="always"`` stays where LLVM declines to inline (a
-  helper whose call stays a call in the compiled kernel, found in its LLVM IR: the triangle
-  and sphere tests, for example) and where a benchmark showed the LLVM-inlined code slower; a
-  comment says which. The other kernels' helpers stay inlined by Numba: converting them saved
-  little or no compile time (``docs/performance.md``).
+* The ray tracer's small helpers, and the texture lookup's texel read and wrap, are compiled
+  as functions of their own (``njit(refcount=False)``), which LLVM inlines into their callers,
+  rather than with ``njit(inline="always")``, which inlines them in Numba's own IR and so types
+  them afresh at every call site, in Python: the ray tracer's compile went from 43 s to 32 s
+  of CPU that way, with the same machine code and the same pixels. ``inline="always"`` stays
+  where LLVM declines to inline (a helper whose call stays a call in the compiled kernel, found
+  in its LLVM IR: the triangle and sphere tests, for example) and where a benchmark showed the
+  LLVM-inlined code slower; a comment says which. The other kernels' helpers stay inlined by
+  Numba: converting them saved little or no compile time (``docs/performance.md``).
 """
 
 from __future__ import annotations
