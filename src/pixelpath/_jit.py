@@ -22,9 +22,9 @@ The rules live here, once:
   as functions of their own (``njit(refcount=False)``), which LLVM inlines into their callers,
   rather than with ``njit(inline="always")``, which inlines them in Numba's own IR and so types
   them afresh at every call site, in Python: the ray tracer's compile went from 43 s to 32 s
-  of CPU that way, with the same machine code and the same pixels. ``inline="always"`` stays
-  where LLVM declines to inline (a helper whose call stays a call in the compiled kernel, found
-  in its LLVM IR: the triangle and sphere tests, for example) and where a benchmark showed the
+  of CPU that way, with the same pixels and speed. ``inline="always"`` stays where LLVM
+  declines to inline (a helper whose call stays a call in the compiled kernel, found in its
+  LLVM IR: the triangle and sphere tests, for example) and where a benchmark showed the
   LLVM-inlined code slower; a comment says which. The other kernels' helpers stay inlined by
   Numba: converting them saved little or no compile time (``docs/performance.md``).
 """
