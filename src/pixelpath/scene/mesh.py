@@ -124,8 +124,11 @@ class Mesh:
     def __delattr__(self, name: str) -> None:
         raise AttributeError(_UNCHANGEABLE.format(name=name))
 
-    def _label(self, *, name: str | None = None, source: dict[str, Any] | None = None) -> Mesh:
-        """Set the loader's bookkeeping (``name``, ``source``), which no renderer reads."""
+    def _label(self, *, name: str | None, source: dict[str, Any] | None) -> Mesh:
+        """Set the loader's bookkeeping (``name``, ``source``), which no renderer reads.
+
+        Both are required: a default would quietly erase the one a caller left out.
+        """
         object.__setattr__(self, "name", name)
         object.__setattr__(self, "source", source)
         return self
