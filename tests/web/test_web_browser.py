@@ -222,9 +222,13 @@ def new_exercise(driver, topic: str, seed: str = "") -> int:
     seed_box = driver.find_element(By.ID, "seed")
     seed_box.clear()
     seed_box.send_keys(seed)
+    # Blank the title first, so that the exercise shown before the click (the page's first,
+    # of a drawn seed such as 3228, which begins with "3") cannot pass for the new one.
+    driver.execute_script("document.getElementById('title').textContent = ''")
     driver.find_element(By.ID, "new").click()
     title = exercises.topic_title(topic)
-    wait_for(driver, lambda d: text_of(d, "#title").startswith(f"{title} · seed {seed}"),
+    wanted = f"{title} · seed {seed} · " if seed else f"{title} · seed "
+    wait_for(driver, lambda d: text_of(d, "#title").startswith(wanted),
              f"the {topic} exercise did not appear")
     return int(re.search(r"seed (\d+)", text_of(driver, "#title")).group(1))
 
