@@ -372,10 +372,12 @@ def visibility_buffers(view: View) -> Visibility:
     12 bytes per pixel each frame. One pair per thread keeps concurrent renders apart; regions
     over ``SLICED_PIXELS`` get fresh buffers, so a huge render leaves no memory held.
     """
+    from pixelpath._memory import fresh
+
     shape = (view.height, view.width)
     buffers = getattr(_SCRATCH, "buffers", None)
     if buffers is None or buffers.inv_depth.shape != shape:
-        buffers = Visibility(np.empty(shape), np.empty(shape, dtype=np.int32))
+        buffers = Visibility(fresh(shape, np.float64), fresh(shape, np.int32))
         _SCRATCH.buffers = buffers if view.height * view.width <= SLICED_PIXELS else None
     return buffers
 
@@ -402,13 +404,7 @@ def output_buffers(view: View):
     """Return new (recycled) colour, depth and object-id buffers for the region."""
     from pixelpath.raster import _kernels, _pool
 
-    shape = (view.height, view.width)
-    return _kernels.Buffers(
-        _pool.empty((*shape, 3), np.float32),
-        _pool.empty(shape, np.float32),
-        _pool.empty(shape, np.int32),
-        _pool.empty((*shape, 3), np.float32),
-    )
+    return _kernels.Buffers(*_pool.frame_buffers((view.height, view.width)))
 
 
 def slices(view: View) -> list[tuple[int, int]]:
