@@ -1,33 +1,42 @@
 """New memory for big buffers, on huge pages where the system gives them.
 
 Memory fresh from the system costs a page fault per 4 KiB page on first touch. Linux can back
-an allocation with 2 MiB transparent huge pages instead, one fault each: NumPy asks for them
-(``madvise``) on allocations of 4 MiB or more (see NumPy's ``NUMPY_MADVISE_HUGEPAGE``), but
-only the 2 MiB-aligned spans inside an allocation can be huge pages. A frame's 3 MiB colour
-buffer, allocated as it came, was faulted in 768 small pages, and a 4K colour conversion's
-100 MB result had up to 512 at its ends.
+memory with 2 MiB transparent huge pages instead, one fault each, where a program asks for
+them (``madvise``) and the 2 MiB span lies wholly inside its mapping, aligned. NumPy asks on
+allocations of 4 MiB or more (see its ``NUMPY_MADVISE_HUGEPAGE``), but allocations start where
+they fall, so a frame's 3 MiB colour buffer was faulted in 768 small pages.
 
-So :func:`fresh` starts every buffer of half a MiB or more on a 2 MiB boundary, inside an
-allocation of whole 2 MiB steps plus one for the alignment. A first 640×400 render took 3,600
-page faults before, under 900 after. Where huge pages are off, nothing changes but some
-address space, never touched.
+:func:`fresh` maps a buffer of 2 MiB or more on its own, starting on a 2 MiB boundary, and
+asks for huge pages over the whole 2 MiB spans inside it; the rest of its last span stays in
+small pages, so a buffer holds no more memory than its size (where, as by default, Linux
+gives huge pages only where asked). Internal scratch buffers,
+reused frame after frame, may ask for ``whole_pages``: from half a MiB up, rounded up to whole
+spans, all huge pages. Where huge pages are off, or on systems without ``madvise``, these are
+ordinary buffers.
 """
 
 from __future__ import annotations
 
+import contextlib
 import math
+import mmap
 
 import numpy as np
 
 HUGE_PAGE = 1 << 21  # bytes: a transparent huge page on x86-64 (and arm64 with 4 KiB pages)
-ALIGNED_FROM = HUGE_PAGE // 4  # bytes; smaller buffers are allocated as they come
+WHOLE_PAGES_FROM = HUGE_PAGE // 4  # bytes; smaller scratch buffers are not worth 2 MiB
 
 
-def fresh(shape: tuple[int, ...], dtype: type) -> np.ndarray:
+def fresh(shape: tuple[int, ...], dtype: type, *, whole_pages: bool = False) -> np.ndarray:
     """Return a new uninitialized C-contiguous array, on huge pages where the system gives them.
 
-    For buffers a kernel fills at once: from half a MiB up, the array starts on a 2 MiB
-    boundary (see the module docstring).
+    Parameters
+    ----------
+    shape : tuple of int
+    dtype : numpy dtype
+    whole_pages : bool
+        Round the huge pages up to cover the whole buffer (from half a MiB up), for internal
+        scratch buffers: up to 2 MiB more memory once its end is written.
 
     Examples
     --------
@@ -39,9 +48,15 @@ def fresh(shape: tuple[int, ...], dtype: type) -> np.ndarray:
     """
     dtype = np.dtype(dtype)
     nbytes = math.prod(shape) * dtype.itemsize
-    if nbytes < ALIGNED_FROM:
+    spans = -(-nbytes // HUGE_PAGE) if whole_pages and nbytes >= WHOLE_PAGES_FROM else (
+        nbytes // HUGE_PAGE)
+    if spans == 0 or not hasattr(mmap, "MADV_HUGEPAGE"):
         return np.empty(shape, dtype=dtype)
-    spans = -(-nbytes // HUGE_PAGE)
-    block = np.empty((spans + 1) * HUGE_PAGE, dtype=np.uint8)
+    # Private: a shared anonymous mapping is shared memory, which gets no huge pages by default.
+    mapping = mmap.mmap(-1, max(spans * HUGE_PAGE, nbytes) + HUGE_PAGE,
+                        flags=mmap.MAP_PRIVATE | mmap.MAP_ANONYMOUS)
+    block = np.frombuffer(mapping, dtype=np.uint8)
     start = -block.ctypes.data % HUGE_PAGE
+    with contextlib.suppress(OSError):  # a kernel without huge pages: small ones it is
+        mapping.madvise(mmap.MADV_HUGEPAGE, start, spans * HUGE_PAGE)
     return block[start : start + nbytes].view(dtype).reshape(shape)

@@ -9,38 +9,20 @@ from pixelpath.raster import _pool
 
 
 def test_memory_in_use_is_never_handed_out_again():
-    first, other = _pool.arrays(((64, 64), np.float32), ((7,), np.int32))
-    view = first[3:, ::2]  # a view keeps the block in use after the arrays are gone
-    del first, other
-    second, _ = _pool.arrays(((64, 64), np.float32), ((7,), np.int32))
+    first = _pool.empty((64, 64), np.float32)
+    view = first[3:, ::2]  # a view keeps the buffer in use after the array is gone
+    del first
+    second = _pool.empty((64, 64), np.float32)
     assert not np.shares_memory(second, view)
 
 
-def test_one_array_of_a_block_in_use_keeps_the_whole_block():
-    kept, dropped = _pool.arrays(((16, 16), np.float64), ((16, 16), np.float64))
-    del dropped
-    again = _pool.arrays(((16, 16), np.float64), ((16, 16), np.float64))
-    assert not any(np.shares_memory(kept, array) for array in again)
-
-
 def test_memory_is_reused_once_every_view_is_gone():
-    (first,) = _pool.arrays(((64, 32), np.int32))
+    first = _pool.empty((64, 32), np.int32)
     address = first.__array_interface__["data"][0]
     view = first.T
     del first, view
-    (again,) = _pool.arrays(((64, 32), np.int32))
+    again = _pool.empty((64, 32), np.int32)
     assert again.__array_interface__["data"][0] == address
-
-
-def test_a_blocks_arrays_are_apart_a_cache_line_apart_and_of_their_shape():
-    specs = (((5, 3), np.float32), ((7,), np.int8), ((2, 2, 3), np.float64), ((0,), np.int32))
-    arrays = _pool.arrays(*specs)
-    for array, (shape, dtype) in zip(arrays, specs, strict=True):
-        assert array.shape == shape and array.dtype == dtype and array.flags.c_contiguous
-        assert (array.ctypes.data - arrays[0].ctypes.data) % _pool.ALIGNMENT == 0
-    for k, array in enumerate(arrays):
-        array[...] = k + 1  # each fills its own memory only
-    assert [np.all(array == k + 1) for k, array in enumerate(arrays)] == [True] * len(arrays)
 
 
 def test_images_held_by_the_caller_keep_their_own_pixels():

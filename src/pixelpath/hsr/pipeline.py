@@ -377,7 +377,8 @@ def visibility_buffers(view: View) -> Visibility:
     shape = (view.height, view.width)
     buffers = getattr(_SCRATCH, "buffers", None)
     if buffers is None or buffers.inv_depth.shape != shape:
-        buffers = Visibility(fresh(shape, np.float64), fresh(shape, np.int32))
+        buffers = Visibility(fresh(shape, np.float64, whole_pages=True),
+                             fresh(shape, np.int32, whole_pages=True))
         _SCRATCH.buffers = buffers if view.height * view.width <= SLICED_PIXELS else None
     return buffers
 
@@ -404,7 +405,13 @@ def output_buffers(view: View):
     """Return new (recycled) colour, depth and object-id buffers for the region."""
     from pixelpath.raster import _kernels, _pool
 
-    return _kernels.Buffers(*_pool.frame_buffers((view.height, view.width)))
+    shape = (view.height, view.width)
+    return _kernels.Buffers(
+        _pool.empty((*shape, 3), np.float32),
+        _pool.empty(shape, np.float32),
+        _pool.empty(shape, np.int32),
+        _pool.empty((*shape, 3), np.float32),
+    )
 
 
 def slices(view: View) -> list[tuple[int, int]]:

@@ -388,7 +388,10 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     world, settings, bvh_depth, triangles = pack(scene, view.camera, options)
     options.progress(1)
     shape = (view.height, view.width)
-    rgb, depth, object_id, normal = _pool.frame_buffers(shape)
+    rgb = _pool.empty((*shape, 3), np.float32)
+    depth = _pool.empty(shape, np.float32)
+    object_id = _pool.empty(shape, np.int32)
+    normal = _pool.empty((*shape, 3), np.float32)
     counts = np.zeros((view.height, COUNTS), dtype=np.int64)
     # Blocks of neighbouring rows go to the threads as they free up: the next row's rays meet
     # the boxes and triangles this row's brought into the cache (rows taken from all over the
