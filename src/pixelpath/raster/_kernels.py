@@ -77,9 +77,9 @@ from pixelpath.scene._texture_kernels import (
     HAS_COLORS,
     TEXTURE,
     base_color,
-    mip_level,
+    footprint_squared,
+    mip_level_squared,
     sample_level,
-    texel_footprint,
     tiny_tables,
 )
 
@@ -110,7 +110,7 @@ class PhongBatch(NamedTuple):
     denominators: np.ndarray  # (SHADE_BATCH,) interpolated 1/w: points are numerators first
     columns: np.ndarray  # (SHADE_BATCH,) intp: the pixel column of each gathered pixel
     row_colors: np.ndarray  # (w, 3) surface colour of a row's pixels of coloured objects
-    lookups: np.ndarray  # (3, w) u, v and footprint of a row's texture lookups, in order
+    lookups: np.ndarray  # (3, w) u, v and squared footprint of a row's texture lookups, in order
     lookup_columns: np.ndarray  # (w,) intp: the pixel column of each lookup
     lookup_textures: np.ndarray  # (w,) intp: the texture each lookup reads
     lookup_levels: np.ndarray  # (w,) intp: the mip level each lookup reads first
@@ -426,9 +426,9 @@ def _row_surface_colors(j, x0, ids, info, setup, triangles, uv, vertex_colors, t
 
     Three loops: the first writes each pixel's colour before the texture
     (:func:`~pixelpath.scene._texture_kernels.base_color`) and lists its texture lookup
-    (u, v, footprint) in ``lookups``; the second chooses their mip levels (the footprint's
-    place is taken by the blend); the third makes the lookups and multiplies them in. The
-    products are :func:`~pixelpath.scene._texture_kernels.surface_color`'s, with weights and
+    (u, v, squared footprint) in ``lookups``; the second chooses their mip levels (the
+    footprint's place is taken by the blend); the third makes the lookups and multiplies them
+    in. The products are :func:`~pixelpath.scene._texture_kernels.surface_color`'s, with weights and
     texture coordinates taken from each triangle's lines along the row (equal up to
     rounding to those of the pixel's own perspective weights); split so, each loop's pixels
     are independent of each other, and the processor overlaps them (a fifth less time a
@@ -463,12 +463,13 @@ def _row_surface_colors(j, x0, ids, info, setup, triangles, uv, vertex_colors, t
             u, v, dudx, dvdx, dudy, dvdy = texture_at(line, x)
             lookups[0, count] = u
             lookups[1, count] = v
-            lookups[2, count] = texel_footprint(tables, texture, dudx, dvdx, dudy, dvdy)
+            lookups[2, count] = footprint_squared(tables, texture, dudx, dvdx, dudy, dvdy)
             lookup_columns[count] = i
             lookup_textures[count] = texture
             count += 1
     for q in range(count):
-        lookup_levels[q], lookups[2, q] = mip_level(tables, lookup_textures[q], lookups[2, q])
+        lookup_levels[q], lookups[2, q] = mip_level_squared(tables, lookup_textures[q],
+                                                            lookups[2, q])
     for q in range(count):
         tr, tg, tb, _ = sample_level(tables, lookup_textures[q], lookups[0, q], lookups[1, q],
                                      lookup_levels[q], lookups[2, q])
@@ -502,9 +503,9 @@ def texture_lookups(x0, y0, triangle_id, surfaces, texture, level, blend):
             x = (x0 + i) + 0.5
             line = texture_line(s.setup, t, y, s.uv, a, b, c)
             _, _, dudx, dvdx, dudy, dvdy = texture_at(line, x)
-            footprint = texel_footprint(s.tables, k, dudx, dvdx, dudy, dvdy)
+            squared = footprint_squared(s.tables, k, dudx, dvdx, dudy, dvdy)
             texture[row, i] = k
-            level[row, i], blend[row, i] = mip_level(s.tables, k, footprint)
+            level[row, i], blend[row, i] = mip_level_squared(s.tables, k, squared)
 
 
 @njit(inline="always")

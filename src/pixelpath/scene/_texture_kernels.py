@@ -131,11 +131,17 @@ def texel_footprint(tables, texture, dudx, dvdx, dudy, dvdy):
     (dudx, dvdx) and (dudy, dvdy) are how far (u, v) moves over one pixel across and down the
     image; the longer of the two steps, in texels, is the footprint.
     """
+    return math.sqrt(footprint_squared(tables, texture, dudx, dvdx, dudy, dvdy))
+
+
+@njit(inline="always")
+def footprint_squared(tables, texture, dudx, dvdx, dudy, dvdy):
+    """Return the square of :func:`texel_footprint`, for :func:`mip_level_squared`."""
     base = tables.textures[texture, 0]
     width, height = tables.levels[base, 1], tables.levels[base, 2]
     across = (dudx * width) ** 2 + (dvdx * height) ** 2
     down = (dudy * width) ** 2 + (dvdy * height) ** 2
-    return math.sqrt(max(across, down))
+    return max(across, down)
 
 
 @njit(inline="always")
@@ -154,6 +160,19 @@ def mip_level(tables, texture, footprint):
     lod = min(math.log2(footprint), count - 1.0)
     level = np.intp(lod)
     return level, lod - level
+
+
+@njit(inline="always")
+def mip_level_squared(tables, texture, squared):
+    """:func:`mip_level` of the footprint whose square is ``squared``.
+
+    A square of at most 1 is a footprint of at most 1, which reads the base level: only the
+    pixels that cover more than a texel pay for the square root (and the logarithm). Where a
+    texture is magnified, as on most of the Duck's pixels at 1024², that is few of them.
+    """
+    if not squared > 1.0:  # a NaN too: mip_level reads the base level for a NaN footprint
+        return np.intp(0), 0.0
+    return mip_level(tables, texture, math.sqrt(squared))
 
 
 # A kernel of its own, not inlined at Numba's level into its callers (the ray tracer's
