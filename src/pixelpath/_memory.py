@@ -9,10 +9,10 @@ they fall, so a frame's 3 MiB colour buffer was faulted in 768 small pages.
 :func:`fresh` maps a buffer of 2 MiB or more on its own, starting on a 2 MiB boundary, and
 asks for huge pages over the whole 2 MiB spans inside it; the rest of its last span stays in
 small pages, so a buffer holds no more memory than its size (where, as by default, Linux
-gives huge pages only where asked). Internal scratch buffers,
-reused frame after frame, may ask for ``whole_pages``: from half a MiB up, rounded up to whole
-spans, all huge pages. Where huge pages are off, or on systems without ``madvise``, these are
-ordinary buffers.
+gives huge pages only where asked). Internal scratch buffers, reused frame after frame, may
+ask for ``whole_pages``: from half a MiB up, rounded up to whole spans, all huge pages. Where
+huge pages are off, or on systems without ``madvise``, these are ordinary buffers. A first
+640×400 render page-faulted 1,830 times with them, 3,600 times before (``docs/performance.md``).
 """
 
 from __future__ import annotations
