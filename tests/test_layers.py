@@ -24,9 +24,10 @@ PACKAGE = Path(pixelpath.__file__).resolve().parent
 
 # Bottom to top. A module belongs to the layer of the longest prefix naming it.
 LAYERS: tuple[tuple[str, ...], ...] = (
-    # Checks, threads, and the kernel cache: _precompiled calls _cache and _warm, and _jit
-    # (which every kernel imports) calls _precompiled.
-    ("pixelpath._validate", "pixelpath._threads", "pixelpath._cache", "pixelpath._warm"),
+    # Checks, threads, memory, and the kernel cache: _precompiled calls _cache and _warm, and
+    # _jit (which every kernel imports) calls _precompiled.
+    ("pixelpath._validate", "pixelpath._threads", "pixelpath._memory", "pixelpath._cache",
+     "pixelpath._warm"),
     ("pixelpath._precompiled",),
     ("pixelpath._jit",),
     # Data and the algorithms on it: scenes, images, reports, the render contract, colour,
