@@ -327,6 +327,21 @@ def test_trilinear_blends_the_two_levels_around_log2_footprint(u, v, wrap, k, fr
     assert np.allclose(kernel(tables, u, v, footprint=1e6)[0], top, atol=1e-12)
 
 
+@settings(max_examples=200, deadline=None)
+@given(st.one_of(
+    st.floats(0.0, 1e12),
+    st.floats(0.999999, 1.000001),
+    st.sampled_from([0.0, 1.0, np.nextafter(1.0, 2.0), np.nextafter(1.0, 0.0), 4.0,
+                     float("inf"), float("nan")]),
+))
+def test_the_level_of_a_squared_footprint_is_the_level_of_its_root(squared):
+    tables = tables_for(RNG_TEXTURE, "trilinear", "repeat")
+    level, blend = tk.mip_level_squared(tables, 0, squared)
+    expected_level, expected_blend = tk.mip_level(tables, 0, np.sqrt(squared))
+    assert level == expected_level
+    assert blend == expected_blend or (np.isnan(blend) and np.isnan(expected_blend))
+
+
 def test_sample_hand_values_on_a_two_by_two_texture():
     # Rows top to bottom: red, green / blue, white. v up: (0.25, 0.75) is the top-left texel.
     codes = np.array([[[255, 0, 0], [0, 255, 0]], [[0, 0, 255], [255, 255, 255]]], np.uint8)

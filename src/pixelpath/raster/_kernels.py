@@ -428,11 +428,11 @@ def _row_surface_colors(j, x0, ids, info, setup, triangles, uv, vertex_colors, t
     (:func:`~pixelpath.scene._texture_kernels.base_color`) and lists its texture lookup
     (u, v, squared footprint) in ``lookups``; the second chooses their mip levels (the
     footprint's place is taken by the blend); the third makes the lookups and multiplies them
-    in. The products are :func:`~pixelpath.scene._texture_kernels.surface_color`'s, with weights and
-    texture coordinates taken from each triangle's lines along the row (equal up to
-    rounding to those of the pixel's own perspective weights); split so, each loop's pixels
-    are independent of each other, and the processor overlaps them (a fifth less time a
-    textured pixel of the bunny than one loop doing it all).
+    in. The products are :func:`~pixelpath.scene._texture_kernels.surface_color`'s, with
+    weights and texture coordinates taken from each triangle's lines along the row (equal up
+    to rounding to those of the pixel's own perspective weights); split so, each loop's
+    pixels are independent of each other, and the processor overlaps them (a fifth less time
+    a textured pixel of the bunny than one loop doing it all).
     """
     y = j + 0.5
     count = 0
