@@ -42,3 +42,14 @@ def test_buffers_do_not_share_memory():
     a[...] = 1.0
     b[...] = 2.0
     assert not np.shares_memory(a, b) and np.all(a == 1.0) and np.all(b == 2.0)
+
+
+def test_a_refused_mapping_falls_back_to_numpy(monkeypatch):
+    import mmap
+
+    def refuse(*args, **kwargs):
+        raise OSError(12, "Cannot allocate memory")
+
+    monkeypatch.setattr(mmap, "mmap", refuse)
+    array = fresh((1024, 1024), np.float32)
+    assert array.shape == (1024, 1024) and array.base is None

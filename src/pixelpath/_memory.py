@@ -52,9 +52,12 @@ def fresh(shape: tuple[int, ...], dtype: type, *, whole_pages: bool = False) -> 
         nbytes // HUGE_PAGE)
     if spans == 0 or not hasattr(mmap, "MADV_HUGEPAGE"):
         return np.empty(shape, dtype=dtype)
-    # Private: a shared anonymous mapping is shared memory, which gets no huge pages by default.
-    mapping = mmap.mmap(-1, max(spans * HUGE_PAGE, nbytes) + HUGE_PAGE,
-                        flags=mmap.MAP_PRIVATE | mmap.MAP_ANONYMOUS)
+    try:
+        # Private: a shared anonymous mapping is shared memory, which gets no huge pages.
+        mapping = mmap.mmap(-1, max(spans * HUGE_PAGE, nbytes) + HUGE_PAGE,
+                            flags=mmap.MAP_PRIVATE | mmap.MAP_ANONYMOUS)
+    except OSError:  # out of memory or of mappings: NumPy's allocation, and its MemoryError
+        return np.empty(shape, dtype=dtype)
     block = np.frombuffer(mapping, dtype=np.uint8)
     start = -block.ctypes.data % HUGE_PAGE
     with contextlib.suppress(OSError):  # a kernel without huge pages: small ones it is
