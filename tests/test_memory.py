@@ -2,10 +2,17 @@
 
 from __future__ import annotations
 
+import mmap
+
 import numpy as np
 import pytest
 
 from pixelpath._memory import HUGE_PAGE, WHOLE_PAGES_FROM, fresh
+
+needs_madvise = pytest.mark.skipif(
+    not hasattr(mmap, "MADV_HUGEPAGE"),
+    reason="no madvise(MADV_HUGEPAGE) here (not Linux): fresh() allocates as NumPy does",
+)
 
 
 def _mapping_end(array: np.ndarray) -> int:
@@ -15,6 +22,7 @@ def _mapping_end(array: np.ndarray) -> int:
     return block.ctypes.data + block.nbytes
 
 
+@needs_madvise
 @pytest.mark.parametrize("shape", [(400, 640, 3), (HUGE_PAGE // 4,), (1024, 1024)])
 def test_a_big_buffer_starts_on_a_huge_page(shape):
     array = fresh(shape, np.float32)
@@ -22,6 +30,7 @@ def test_a_big_buffer_starts_on_a_huge_page(shape):
     assert array.flags.writeable and array.ctypes.data % HUGE_PAGE == 0
 
 
+@needs_madvise
 @pytest.mark.parametrize("nbytes", [WHOLE_PAGES_FROM, HUGE_PAGE - 8, 3 * HUGE_PAGE + 8])
 def test_whole_pages_reach_past_the_buffers_end_to_a_whole_span(nbytes):
     array = fresh((nbytes // 8,), np.float64, whole_pages=True)
@@ -45,8 +54,6 @@ def test_buffers_do_not_share_memory():
 
 
 def test_a_refused_mapping_falls_back_to_numpy(monkeypatch):
-    import mmap
-
     def refuse(*args, **kwargs):
         raise OSError(12, "Cannot allocate memory")
 
