@@ -15,9 +15,9 @@ writes fault the pages in, from every thread. The memoryview ends the chain of b
 of the flat array has the flat array as its base, so the finalizer waits for every view.
 A block of 2 MiB or more comes from :func:`pixelpath._memory.fresh`, on huge pages.
 
-(One block for a frame's four buffers, rounded up to whole huge pages, faulted in fewer pages
-again, but an array kept from an image would keep all four's memory: a loop that collects
-depth maps would hold 32 bytes a pixel for the 4 it keeps.)
+Each buffer has a block of its own. One block for a frame's four buffers, rounded up to whole
+huge pages, faulted in fewer pages still, but an array kept from an image would then keep all
+four's memory: a loop that collects depth maps would hold 32 bytes a pixel for the 4 it keeps.
 """
 
 from __future__ import annotations
