@@ -1,4 +1,4 @@
-"""New big buffers: huge-page spans inside them, aligned; small buffers as they come."""
+"""Scratch buffers: on whole huge pages from half a MiB up, aligned; smaller ones as NumPy's."""
 
 from __future__ import annotations
 
@@ -7,7 +7,7 @@ import mmap
 import numpy as np
 import pytest
 
-from pixelpath._memory import HUGE_PAGE, WHOLE_PAGES_FROM, fresh
+from pixelpath._memory import HUGE_FROM, HUGE_PAGE, fresh
 
 needs_madvise = pytest.mark.skipif(
     not hasattr(mmap, "MADV_HUGEPAGE"),
@@ -23,34 +23,26 @@ def _mapping_end(array: np.ndarray) -> int:
 
 
 @needs_madvise
-@pytest.mark.parametrize("shape", [(400, 640, 3), (HUGE_PAGE // 4,), (1024, 1024)])
-def test_a_big_buffer_starts_on_a_huge_page(shape):
-    array = fresh(shape, np.float32)
-    assert array.shape == shape and array.dtype == np.float32 and array.flags.c_contiguous
-    assert array.flags.writeable and array.ctypes.data % HUGE_PAGE == 0
-
-
-@needs_madvise
-@pytest.mark.parametrize("nbytes", [WHOLE_PAGES_FROM, HUGE_PAGE - 8, 3 * HUGE_PAGE + 8])
-def test_whole_pages_reach_past_the_buffers_end_to_a_whole_span(nbytes):
-    array = fresh((nbytes // 8,), np.float64, whole_pages=True)
+@pytest.mark.parametrize("nbytes", [HUGE_FROM, HUGE_PAGE - 8, 3 * HUGE_PAGE + 8])
+def test_a_buffer_starts_on_a_huge_page_and_its_mapping_reaches_a_whole_span(nbytes):
+    array = fresh((nbytes // 8,), np.float64)
+    assert array.shape == (nbytes // 8,) and array.dtype == np.float64
+    assert array.flags.c_contiguous and array.flags.writeable
     assert array.ctypes.data % HUGE_PAGE == 0
     end = array.ctypes.data + array.nbytes
     assert _mapping_end(array) >= -(-end // HUGE_PAGE) * HUGE_PAGE
 
 
-@pytest.mark.parametrize("whole_pages", [False, True])
-def test_a_small_buffer_is_allocated_as_it_comes(whole_pages):
-    limit = WHOLE_PAGES_FROM if whole_pages else HUGE_PAGE
-    array = fresh((limit // 4 - 1,), np.float32, whole_pages=whole_pages)
+def test_a_small_buffer_is_numpys():
+    array = fresh((HUGE_FROM // 4 - 1,), np.float32)
     assert array.base is None
 
 
 def test_buffers_do_not_share_memory():
-    a, b = fresh((512, 512), np.float64), fresh((512, 512), np.float64)
+    a, b = fresh((400, 640), np.float64), fresh((400, 640), np.int32)
     a[...] = 1.0
-    b[...] = 2.0
-    assert not np.shares_memory(a, b) and np.all(a == 1.0) and np.all(b == 2.0)
+    b[...] = 2
+    assert not np.shares_memory(a, b) and np.all(a == 1.0) and np.all(b == 2)
 
 
 def test_a_refused_mapping_falls_back_to_numpy(monkeypatch):

@@ -377,8 +377,8 @@ def visibility_buffers(view: View) -> Visibility:
     shape = (view.height, view.width)
     buffers = getattr(_SCRATCH, "buffers", None)
     if buffers is None or buffers.inv_depth.shape != shape:
-        buffers = Visibility(fresh(shape, np.float64, whole_pages=True),
-                             fresh(shape, np.int32, whole_pages=True))
+        # on huge pages: a process's first render faulted these in at 4 KiB a fault
+        buffers = Visibility(fresh(shape, np.float64), fresh(shape, np.int32))
         _SCRATCH.buffers = buffers if view.height * view.width <= SLICED_PIXELS else None
     return buffers
 

@@ -13,11 +13,11 @@ zeros: that pass touched every page of a frame's fresh buffers in the calling th
 the kernels wrote them (5 ms of a first 640×400 render's 20-24), where now the kernels' first
 writes fault the pages in, from every thread. The memoryview ends the chain of bases: a view
 of the flat array has the flat array as its base, so the finalizer waits for every view.
-A block of 2 MiB or more comes from :func:`pixelpath._memory.fresh`, on huge pages.
-
-Each buffer has a block of its own. One block for a frame's four buffers, rounded up to whole
-huge pages, faulted in fewer pages still, but an array kept from an image would then keep all
-four's memory: a loop that collects depth maps would hold 32 bytes a pixel for the 4 it keeps.
+Each buffer has a block of its own, allocated by NumPy. Two variants were measured and not
+kept (``docs/performance.md``): blocks on huge pages (:mod:`pixelpath._memory`) halved a first
+render's page faults, but frames whose images were all kept ran 20 % slower; and one block for
+a frame's four buffers would make an array kept from an image keep all four's memory (a loop
+that collects depth maps would hold 32 bytes a pixel for the 4 it keeps).
 """
 
 from __future__ import annotations
@@ -26,8 +26,6 @@ import math
 import weakref
 
 import numpy as np
-
-from pixelpath._memory import fresh
 
 SPARES_PER_SIZE = 2
 LARGEST_KEPT = 1 << 27  # bytes; bigger buffers go back to the system
@@ -60,7 +58,7 @@ def _take(nbytes: int) -> np.ndarray:
     try:
         return _spares.get(nbytes, []).pop()
     except IndexError:
-        return fresh((nbytes,), np.uint8)
+        return np.empty(nbytes, dtype=np.uint8)
 
 
 def _give_back(raw: np.ndarray) -> None:
