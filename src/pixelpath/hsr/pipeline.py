@@ -377,9 +377,12 @@ def visibility_buffers(view: View) -> Visibility:
     shape = (view.height, view.width)
     buffers = getattr(_SCRATCH, "buffers", None)
     if buffers is None or buffers.inv_depth.shape != shape:
-        # on huge pages: a process's first render faulted these in at 4 KiB a fault
-        buffers = Visibility(fresh(shape, np.float64), fresh(shape, np.int32))
-        _SCRATCH.buffers = buffers if view.height * view.width <= SLICED_PIXELS else None
+        kept = view.height * view.width <= SLICED_PIXELS
+        # Kept ones on huge pages (a process's first render faulted them in at 4 KiB a fault);
+        # one-off ones as NumPy allocates, not new huge pages for every frame.
+        allocate = fresh if kept else np.empty
+        buffers = Visibility(allocate(shape, np.float64), allocate(shape, np.int32))
+        _SCRATCH.buffers = buffers if kept else None
     return buffers
 
 
