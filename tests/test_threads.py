@@ -7,6 +7,12 @@ import os
 import subprocess
 import sys
 import textwrap
+import threading
+from concurrent.futures.thread import ThreadPoolExecutor
+
+import pytest
+
+from pixelpath._threads import _started_pool
 
 SCRIPT = """
 import json, threading, time
@@ -40,3 +46,38 @@ def test_the_pool_follows_numbas_thread_count_and_leaves_numbas_pool_unstarted()
     assert report == {
         "count": 3, "used": 3, "started": False, "after_set": 1, "used_after_set": 1
     }
+
+
+
+def test_a_new_pool_has_started_every_thread_before_its_first_run():
+    before = set(threading.enumerate())
+    pool = _started_pool(4)
+    try:
+        started = set(threading.enumerate()) - before
+        assert len(started) == 4
+        assert all(t.name.startswith("pixelpath_") for t in started)
+    finally:
+        pool.shutdown()
+
+
+def test_a_pool_whose_thread_cannot_start_raises_and_frees_the_started_ones(monkeypatch):
+    submit = ThreadPoolExecutor.submit
+    submitted = []
+
+    def second_fails(self, *args, **kwargs):
+        submitted.append(args)
+        if len(submitted) == 2:
+            raise RuntimeError("can't start new thread")
+        return submit(self, *args, **kwargs)
+
+    before = set(threading.enumerate())
+    monkeypatch.setattr(ThreadPoolExecutor, "submit", second_fails)
+    with pytest.raises(RuntimeError, match="can't start new thread"):
+        _started_pool(3)
+    started = set(threading.enumerate()) - before
+    assert len(started) == 1
+    # its task was waiting for the other two at the barrier: broken, it ends, and the thread
+    # of a pool shut down exits instead of blocking for ever
+    for thread in started:
+        thread.join(timeout=30)
+        assert not thread.is_alive()
