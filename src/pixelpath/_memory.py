@@ -8,12 +8,12 @@ they fall, and a 640×400 frame's per-thread visibility buffers (2 and 1 MB) wer
 750 small pages by a process's first render.
 
 :func:`fresh` maps such a buffer on its own, from a 2 MiB boundary, rounded up to whole
-2 MiB spans, and asks for huge pages over all of them. It is for internal buffers that a
-thread keeps and reuses frame after frame, where rounding up costs at most 2 MiB once. It is
-not for the arrays a user gets: those would hold the rounding for as long as they are kept,
-and frames whose images were all kept (each frame new buffers, on huge pages) ran 20 % slower
-here (``docs/performance.md``; finding free 2 MiB blocks for every frame is the likely cause,
-not measured).
+2 MiB spans, and asks for huge pages over all of them. It is for buffers that are reused frame
+after frame, where rounding up costs at most 2 MiB once: the visibility buffers each thread
+keeps, and the first output blocks of each size that :mod:`pixelpath.raster._pool` recycles.
+It is not for a new buffer every frame: frames whose images were all kept (each frame new
+buffers, on huge pages) ran 20 % slower here (``docs/performance.md``; finding free 2 MiB
+blocks for every frame is the likely cause, not measured).
 Where huge pages are off, or on systems without ``madvise``, these are ordinary buffers.
 """
 

@@ -2,9 +2,13 @@
 
 from __future__ import annotations
 
+import mmap
+
 import numpy as np
+import pytest
 
 import pixelpath as pp
+from pixelpath._memory import HUGE_FROM, HUGE_PAGE
 from pixelpath.raster import _pool
 
 
@@ -59,3 +63,12 @@ def test_an_image_kept_in_part_keeps_its_pixels():
         for _ in range(3):
             pp.render(pp.Scene(camera, background=(1, 1, 1)), method)
         assert np.array_equal(normal, kept) and np.any(kept != 0)
+
+
+@pytest.mark.skipif(not hasattr(mmap, "MADV_HUGEPAGE"),
+                    reason="no madvise(MADV_HUGEPAGE) here (not Linux): every block is NumPy's")
+def test_the_first_blocks_of_a_size_are_on_huge_pages_and_later_ones_numpys():
+    shape = (HUGE_FROM // 4 + 3,)  # a size no other test or render asks for
+    blocks = [_pool.empty(shape, np.float32) for _ in range(_pool.HUGE_BLOCKS_PER_SIZE + 1)]
+    on_huge_pages = [b.ctypes.data % HUGE_PAGE == 0 for b in blocks]
+    assert on_huge_pages == [True] * _pool.HUGE_BLOCKS_PER_SIZE + [False]

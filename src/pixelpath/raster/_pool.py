@@ -13,11 +13,15 @@ zeros: that pass touched every page of a frame's fresh buffers in the calling th
 the kernels wrote them (5 ms of a first 640×400 render's 20-24), where now the kernels' first
 writes fault the pages in, from every thread. The memoryview ends the chain of bases: a view
 of the flat array has the flat array as its base, so the finalizer waits for every view.
-Each buffer has a block of its own, allocated by NumPy. Two variants were measured and not
-kept (``docs/performance.md``): blocks on huge pages (:mod:`pixelpath._memory`) halved a first
-render's page faults, but frames whose images were all kept ran 20 % slower; and one block for
-a frame's four buffers would make an array kept from an image keep all four's memory (a loop
-that collects depth maps would hold 32 bytes a pixel for the 4 it keeps).
+Each buffer has a block of its own. The first two blocks of each size, the ones a process's
+first frame takes (its colour and normals, its depth and ids are two of a size), come on huge
+pages (:func:`pixelpath._memory.fresh`): a first 640×400 render then faulted its buffers in
+about 100 times instead of 2,100, and the pool recycles those blocks frame after frame. Later
+blocks, made only while images are kept, are NumPy's: blocks on huge pages for every frame
+made frames whose images were all kept run 20 % slower. An image that keeps a first block
+holds up to 2 MiB more than its size. Also measured and not kept (``docs/performance.md``):
+one block for a frame's four buffers would make an array kept from an image keep all four's
+memory (a loop that collects depth maps would hold 32 bytes a pixel for the 4 it keeps).
 """
 
 from __future__ import annotations
@@ -27,10 +31,14 @@ import weakref
 
 import numpy as np
 
+from pixelpath._memory import fresh
+
 SPARES_PER_SIZE = 2
+HUGE_BLOCKS_PER_SIZE = 2  # a frame's colour and normals (or depth and ids) are two of a size
 LARGEST_KEPT = 1 << 27  # bytes; bigger buffers go back to the system
 
 _spares: dict[int, list[np.ndarray]] = {}
+_made: dict[int, int] = {}  # blocks made so far, per size
 
 
 def empty(shape: tuple[int, ...], dtype: type) -> np.ndarray:
@@ -58,7 +66,12 @@ def _take(nbytes: int) -> np.ndarray:
     try:
         return _spares.get(nbytes, []).pop()
     except IndexError:
-        return np.empty(nbytes, dtype=np.uint8)
+        pass
+    made = _made.get(nbytes, 0)
+    _made[nbytes] = made + 1
+    if made < HUGE_BLOCKS_PER_SIZE:
+        return fresh((nbytes,), np.uint8)
+    return np.empty(nbytes, dtype=np.uint8)
 
 
 def _give_back(raw: np.ndarray) -> None:
