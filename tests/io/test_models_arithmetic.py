@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
-from hypothesis import given
+from hypothesis import example, given
 from hypothesis import strategies as st
 from hypothesis.extra import numpy as hnp
 
@@ -27,6 +27,8 @@ def assert_same_bits(actual, expected):
 
 
 @given(hnp.arrays(np.float64, (2, 3), elements=finite))
+@example(np.full((2, 3), -0.0))  # NumPy's sum starts from +0.0: the centre is +0.0
+@example(np.array([[-0.0, 0.0, -0.0], [0.0, -0.0, -1.0]]))
 def test_center_is_numpys_mean_of_the_corners(bounds):
     assert_same_bits(_center(bounds), bounds.mean(axis=0))
 

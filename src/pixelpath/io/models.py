@@ -996,9 +996,10 @@ def _bounds_of(objects: list[Mesh]) -> np.ndarray:
 def _center(bounds: np.ndarray) -> np.ndarray:
     """Return the centre of the (2, 3) box ``bounds``: ``bounds.mean(axis=0)``, bit for bit.
 
-    NumPy's mean sums the two rows, then divides by 2, at several times the cost of that sum.
+    NumPy's mean sums the two rows onto a zero, then divides by 2, at several times the cost
+    of that sum. The zero matters only to signs: two corners at -0.0 have a centre at +0.0.
     """
-    return (bounds[0] + bounds[1]) / 2.0
+    return (bounds[0] + bounds[1] + 0.0) / 2.0
 
 
 def framing_camera(bounds: Any, size: tuple[int, int] = DEFAULT_SIZE, fov: float = 45.0) -> Camera:
