@@ -48,7 +48,6 @@ def test_the_pool_follows_numbas_thread_count_and_leaves_numbas_pool_unstarted()
     }
 
 
-
 def test_a_new_pool_has_started_every_thread_before_its_first_run():
     before = set(threading.enumerate())
     pool = _started_pool(4)

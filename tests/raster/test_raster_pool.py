@@ -67,8 +67,10 @@ def test_an_image_kept_in_part_keeps_its_pixels():
 
 @pytest.mark.skipif(not hasattr(mmap, "MADV_HUGEPAGE"),
                     reason="no madvise(MADV_HUGEPAGE) here (not Linux): every block is NumPy's")
-def test_the_first_blocks_of_a_size_are_on_huge_pages_and_later_ones_numpys():
-    shape = (HUGE_FROM // 4 + 3,)  # a size no other test or render asks for
+def test_the_first_blocks_of_a_size_are_on_huge_pages_and_later_ones_numpys(monkeypatch):
+    monkeypatch.setattr(_pool, "_made", {})  # as in a fresh process
+    monkeypatch.setattr(_pool, "_spares", {})
+    shape = (HUGE_FROM // 4 + 3,)
     blocks = [_pool.empty(shape, np.float32) for _ in range(_pool.HUGE_BLOCKS_PER_SIZE + 1)]
     on_huge_pages = [b.ctypes.data % HUGE_PAGE == 0 for b in blocks]
     assert on_huge_pages == [True] * _pool.HUGE_BLOCKS_PER_SIZE + [False]
