@@ -8,11 +8,13 @@ import subprocess
 import sys
 import textwrap
 import threading
+import warnings
 from concurrent.futures.thread import ThreadPoolExecutor
 
 import pytest
 
-from pixelpath._threads import _started_pool
+from pixelpath import _threads
+from pixelpath._threads import _started_pool, in_threads
 
 SCRIPT = """
 import json, threading, time
@@ -80,3 +82,30 @@ def test_a_pool_whose_thread_cannot_start_raises_and_frees_the_started_ones(monk
     for thread in started:
         thread.join(timeout=30)
         assert not thread.is_alive()
+
+
+def _sum_in_threads(results) -> None:
+    total = []
+    in_threads(lambda start, stop: total.append(sum(range(start, stop))), 100, runs=4)
+    results.put(sum(total))
+
+
+@pytest.mark.skipif(not hasattr(os, "register_at_fork"), reason="no fork on this platform")
+def test_a_child_forked_after_the_pool_started_runs_work_on_a_pool_of_its_own(monkeypatch):
+    import multiprocessing
+
+    monkeypatch.setattr(_threads, "thread_count", lambda: 2)  # a pool even on one core
+    parent = multiprocessing.Queue()
+    _sum_in_threads(parent)  # the parent's pool is started
+    assert parent.get(timeout=30) == sum(range(100))
+    context = multiprocessing.get_context("fork")
+    results = context.Queue()
+    with warnings.catch_warnings():  # Python 3.12+ warns of fork in a threaded process
+        warnings.simplefilter("ignore", DeprecationWarning)
+        child = context.Process(target=_sum_in_threads, args=(results,))
+        child.start()
+    child.join(timeout=60)
+    if child.is_alive():
+        child.kill()
+    assert child.exitcode == 0, "the forked child's runs never ran (its parent's pool)"
+    assert results.get(timeout=5) == sum(range(100))

@@ -8,6 +8,7 @@ the GIL (``nogil``), so runs of the work handed to them from Python threads go o
 
 from __future__ import annotations
 
+import os
 import threading
 from collections.abc import Callable, Sequence
 
@@ -22,6 +23,22 @@ __all__ = ["in_runs", "in_threads", "thread_count"]
 RUNS_PER_THREAD = 4  # in_threads() hands out this many runs per thread: uneven work evens out
 _EXECUTORS: dict[int, ThreadPoolExecutor] = {}
 _EXECUTORS_LOCK = threading.Lock()
+
+
+def _forget_pools() -> None:
+    """In a child made by ``fork``: drop the parent's pools, whose threads the child lacks.
+
+    Runs of work handed to them would wait for ever (a child process rendering after its
+    parent had rendered hung); the child starts pools of its own on first use. The lock is
+    made anew too, in case another thread of the parent held it at the fork.
+    """
+    global _EXECUTORS_LOCK
+    _EXECUTORS.clear()
+    _EXECUTORS_LOCK = threading.Lock()
+
+
+if hasattr(os, "register_at_fork"):  # not on Windows, which has no fork
+    os.register_at_fork(after_in_child=_forget_pools)
 
 
 def in_threads(
