@@ -50,13 +50,16 @@ def test_the_pool_follows_numbas_thread_count_and_leaves_numbas_pool_unstarted()
     }
 
 
+def new_pool_threads(before: set[threading.Thread]) -> set[threading.Thread]:
+    """Pool threads started since ``before`` (other tests' helpers may start threads too)."""
+    return {t for t in set(threading.enumerate()) - before if t.name.startswith("pixelpath_")}
+
+
 def test_a_new_pool_has_started_every_thread_before_its_first_run():
     before = set(threading.enumerate())
     pool = _started_pool(4)
     try:
-        started = set(threading.enumerate()) - before
-        assert len(started) == 4
-        assert all(t.name.startswith("pixelpath_") for t in started)
+        assert len(new_pool_threads(before)) == 4
     finally:
         pool.shutdown()
 
@@ -75,7 +78,7 @@ def test_a_pool_whose_thread_cannot_start_raises_and_frees_the_started_ones(monk
     monkeypatch.setattr(ThreadPoolExecutor, "submit", second_fails)
     with pytest.raises(RuntimeError, match="can't start new thread"):
         _started_pool(3)
-    started = set(threading.enumerate()) - before
+    started = new_pool_threads(before)
     assert len(started) == 1
     # its task was waiting for the other two at the barrier: broken, it ends, and the thread
     # of a pool shut down exits instead of blocking for ever
