@@ -38,6 +38,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from pixelpath._memory import fresh
 from pixelpath._threads import in_runs
 from pixelpath.contract import Frame, RenderOptions, View
 from pixelpath.scene import Scene
@@ -372,8 +373,6 @@ def visibility_buffers(view: View) -> Visibility:
     12 bytes per pixel each frame. One pair per thread keeps concurrent renders apart; regions
     over ``SLICED_PIXELS`` get fresh buffers, so a huge render leaves no memory held.
     """
-    from pixelpath._memory import fresh
-
     shape = (view.height, view.width)
     buffers = getattr(_SCRATCH, "buffers", None)
     if buffers is None or buffers.inv_depth.shape != shape:
