@@ -173,3 +173,42 @@ def test_a_packet_of_shadow_rays_finds_what_each_finds_alone(spread):
         outcomes.update("blocked" if blocker >= 0 else "dimmed" if light_let < 1 else "lit"
                         for light_let, blocker in single)
     assert {"blocked", "dimmed"} <= outcomes  # rays from inside leave through a triangle
+
+
+def test_one_call_traces_many_packets_and_a_short_last_one():
+    # 27 rays: six packets of four, then three rays one by one, all in one call (the tracer
+    # hands BLOCK rays to a call); each finds what it finds alone. The buffers are rounded up
+    # to whole packets, as the tracer's are.
+    rng = np.random.default_rng(11)
+    ring = torus(0.7, 0.25, 24, 12)
+    bvh = BVH.build(ring.vertices, ring.triangles)
+    count = 27
+    rows = -(-count // kernels.LANES) * kernels.LANES
+    origins = np.tile([0.2, 0.1, 3.0], (count, 1)) + rng.normal(scale=0.05, size=(count, 3))
+    targets = rng.uniform(-0.9, 0.9, (count, 3))
+    rays = np.column_stack([origins, targets - origins, np.full(count, math.inf)])
+    packet = np.zeros((rows, 9))
+    packet[:count, :7] = rays
+    hit = np.empty(rows, dtype=np.intp)
+    stack = np.empty(bvh.depth + 1, dtype=np.intp)
+    skip = np.zeros(len(bvh.corners), dtype=np.bool_)
+    with slab_nan_allowed():
+        kernels.closest_triangles4(
+            bvh.bounds, bvh.links, bvh.corners, bvh.order, skip, False, packet, count, 0.0, hit,
+            stack, np.empty(bvh.depth + 1), np.empty((bvh.depth + 1, kernels.LANES)),
+        )
+    found = [(packet[r, 6], hit[r], packet[r, 7], packet[r, 8]) for r in range(count)]
+    assert found == _single_hits(bvh, rays)[0]
+    assert 0 < sum(h[1] >= 0 for h in found) < count  # hits and misses both
+
+    pass_through = rng.choice([0.0, 0.5], size=len(bvh.corners))
+    segments = np.column_stack([origins, targets - origins, np.ones(count)])
+    shadows = np.zeros((rows, 8))
+    shadows[:count, :7] = segments
+    with slab_nan_allowed():
+        nodes, tests = kernels.any_triangles4(
+            bvh.bounds, bvh.links, bvh.corners, pass_through, shadows, count, 0.0, hit, stack,
+        )
+    single, single_nodes, single_tests = _any_hits(bvh, segments, pass_through, packet=False)
+    assert [(shadows[r, 7], hit[r]) for r in range(count)] == single
+    assert (nodes, tests) == (single_nodes, single_tests)

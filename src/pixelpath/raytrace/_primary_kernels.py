@@ -25,7 +25,7 @@ from pixelpath.raytrace._records import (
 )
 from pixelpath.raytrace._surface_kernels import hit_geometry, nearest_analytic, shadow_start
 from pixelpath.raytrace._traversal_kernels import (
-    LANES,
+    BLOCK,
     MISS,
     any_triangle,
     any_triangles4,
@@ -110,11 +110,11 @@ def primary_hits(y, x0, width, scene, settings, work):
     against the spheres and planes, then the triangles are searched up to the nearest of
     those: neighbouring rays of a row run through the same boxes of the tree, so
     ``closest_triangles4`` walks it once for ``LANES`` of them (the row's last few rays go one
-    by one). A ray whose nearest triangle is alpha-tested and cut away there is traced again
-    alone, with the alpha test (the packet search makes none). Writes ``work.primary`` (t, w1,
-    w2) and ``work.primary_hit`` (kind, index; index MISS when nothing is hit) and adds the
-    nodes and triangle tests to ``work.counts``. Arrays are taken out of their tuples once, as
-    in :func:`trace_row`.
+    by one), ``BLOCK`` rays a call. A ray whose nearest triangle is alpha-tested and cut away
+    there is traced again alone, with the alpha test (the packet search makes none). Writes
+    ``work.primary`` (t, w1, w2) and ``work.primary_hit`` (kind, index; index MISS when
+    nothing is hit) and adds the nodes and triangle tests to ``work.counts``. Arrays are
+    taken out of their tuples once, as in :func:`trace_row`.
     """
     spheres, planes, plane_back = scene.spheres, scene.planes, scene.plane_back
     bounds, links, tris = scene.bounds, scene.links, scene.tris
@@ -127,12 +127,11 @@ def primary_hits(y, x0, width, scene, settings, work):
     samples = settings.samples
     near, far, cull = settings.near, settings.far, settings.cull
     count = width * samples
-    full = count - count % LANES
     x = x0  # the pixel and sample of the next ray
     sample = 0
-    for start in range(0, count, LANES):
-        lanes = LANES if start < full else count - start
-        for r in range(lanes):
+    for start in range(0, count, BLOCK):
+        batch = min(BLOCK, count - start)
+        for r in range(batch):
             sx, sy = sample_position(y * settings.image_width + x, sample, samples)
             ox, oy, oz, dx, dy, dz = primary_ray(
                 camera, x + sx, y + sy, settings.image_width, settings.image_height
@@ -149,12 +148,12 @@ def primary_hits(y, x0, width, scene, settings, work):
             found[start + r, 0] = t  # the ray's limit, kept for a search through a hole
         if links.shape[0] > 0:
             nodes, tests = closest_triangles4(
-                bounds, links, tris, tri_source, tri_back, cull, packet, lanes, near, lane_hit,
+                bounds, links, tris, tri_source, tri_back, cull, packet, batch, near, lane_hit,
                 stack, stack_t, lane_t,
             )
             counts[COUNT_NODES] += nodes
             counts[COUNT_TESTS] += tests
-            for r in range(lanes):
+            for r in range(batch):
                 hit = lane_hit[r]
                 if holes and hit != MISS and cutouts.masked[hit] and cut_away_hit(
                     cutouts, hit, packet[r, 7], packet[r, 8]
@@ -169,7 +168,7 @@ def primary_hits(y, x0, width, scene, settings, work):
                     counts[COUNT_TESTS] += tests
                 if lane_hit[r] != MISS:
                     kinds[r], found_hit[start + r, 1] = TRIANGLE, lane_hit[r]
-        for r in range(lanes):
+        for r in range(batch):
             for field in range(3):
                 found[start + r, field] = packet[r, 6 + field]  # t, w1, w2
                 found[start + r, 3 + field] = packet[r, 3 + field]  # the direction
@@ -185,7 +184,7 @@ def primary_shadows(count, scene, settings, work):
     ``work.primary_geometry``, where :func:`trace_row` reads them back. Then, light by light,
     the shadow ray of each hit in front of which the light is (the one :func:`trace_row`
     would make) is tested against the spheres and planes, and the rays that none of them
-    blocks are gathered four at a time and tested against the triangles together
+    blocks are gathered, ``BLOCK`` at a time, and tested against the triangles four by four
     (``any_triangles4``): neighbouring pixels' rays towards one light run through the same
     boxes. Writes the light let through and the blocker (MISS when none) into
     ``work.primary_shadow`` and adds nodes and triangle tests to ``work.counts``. In a scene
@@ -252,12 +251,12 @@ def primary_shadows(count, scene, settings, work):
             shadows[queued, 6], shadows[queued, 8] = t_light, through
             shadow_of[queued, 0], shadow_of[queued, 1] = ray, light
             queued += 1
-            if queued == LANES:
-                _shadow_packet(queued, bounds, links, tris, tri_pass, tri_object, shadows,
-                               shadow_of, hit, stack, counts, result)
+            if queued == BLOCK:
+                _shadow_packets(queued, bounds, links, tris, tri_pass, tri_object, shadows,
+                                shadow_of, hit, stack, counts, result)
                 queued = np.intp(0)
-        _shadow_packet(queued, bounds, links, tris, tri_pass, tri_object, shadows, shadow_of,
-                       hit, stack, counts, result)
+        _shadow_packets(queued, bounds, links, tris, tri_pass, tri_object, shadows, shadow_of,
+                        hit, stack, counts, result)
 
 
 @njit(refcount=False)
@@ -270,16 +269,17 @@ def _stored_geometry(geometry, ray):
 
 # Inlined by Numba: as a function of its own LLVM leaves it a call (see pixelpath._jit).
 @njit(inline="always")
-def _shadow_packet(lanes, bounds, links, tris, tri_pass, tri_object, shadows, shadow_of, hit,
-                   stack, counts, result):
-    """Test the ``lanes`` queued shadow rays against the triangles and write their results.
+def _shadow_packets(queued, bounds, links, tris, tri_pass, tri_object, shadows, shadow_of,
+                    hit, stack, counts, result):
+    """Test the ``queued`` shadow rays against the triangles and write their results.
 
-    Inlined into :func:`primary_shadows`: a call would pass a dozen arrays per packet.
+    Inlined into :func:`primary_shadows`: a call would pass a dozen arrays per block of rays.
     """
-    nodes, tests = any_triangles4(bounds, links, tris, tri_pass, shadows, lanes, 0.0, hit, stack)
+    nodes, tests = any_triangles4(bounds, links, tris, tri_pass, shadows, queued, 0.0, hit,
+                                  stack)
     counts[COUNT_NODES] += nodes
     counts[COUNT_TESTS] += tests
-    for r in range(lanes):
+    for r in range(queued):
         ray, light = shadow_of[r, 0], shadow_of[r, 1]
         if hit[r] != MISS:
             result[ray, light, 0], result[ray, light, 1] = 0.0, tri_object[hit[r]]

@@ -13,7 +13,7 @@ from typing import NamedTuple
 import numpy as np
 
 from pixelpath._jit import njit
-from pixelpath.raytrace._traversal_kernels import LANES, Cutouts
+from pixelpath.raytrace._traversal_kernels import BLOCK, LANES, Cutouts
 from pixelpath.scene._texture_kernels import SurfaceTables
 
 # A ray whose weight falls below this is not traced: it could move no 8-bit pixel value unless
@@ -113,15 +113,15 @@ class Work(NamedTuple):
     primary: np.ndarray  # (W × samples, 9) t, w1, w2 of each primary ray's hit, its direction
     # and its origin
     primary_hit: np.ndarray  # (W × samples, 2) intp its kind and index (MISS when none)
-    packet: np.ndarray  # (LANES, 9) rays traced together: origin, direction, t, w1, w2
-    packet_kind: np.ndarray  # (LANES,) intp the kind of primitive each one hits
-    lane_hit: np.ndarray  # (LANES,) intp the triangle each one hits
+    packet: np.ndarray  # (BLOCK, 9) rays traced together: origin, direction, t, w1, w2
+    packet_kind: np.ndarray  # (BLOCK,) intp the kind of primitive each one hits
+    lane_hit: np.ndarray  # (BLOCK,) intp the triangle each one hits
     lane_t: np.ndarray  # (BVH depth + 1, LANES) the packet's stack of entry distances
     primary_geometry: np.ndarray  # (W × samples, GEOMETRY_FIELDS) what each hit is
     primary_shadow: np.ndarray  # (W × samples, L, 2) light let through, blocker per light
-    shadows: np.ndarray  # (LANES, 9) shadow rays traced together: origin, direction, t_max,
+    shadows: np.ndarray  # (BLOCK, 9) shadow rays traced together: origin, direction, t_max,
     # light let through by the triangles, by the spheres and planes
-    shadow_of: np.ndarray  # (LANES, 2) intp the primary ray and the light of each
+    shadow_of: np.ndarray  # (BLOCK, 2) intp the primary ray and the light of each
 
 
 @njit
@@ -142,12 +142,12 @@ def new_work(scene, settings, bvh_depth, log_size, row_width):
         np.zeros(1, dtype=np.intp),
         np.empty((primary_rays, 9)),
         np.empty((primary_rays, 2), dtype=np.intp),
-        np.zeros((LANES, 9)),  # zeros: a short packet's unused rows are read, never used
-        np.empty(LANES, dtype=np.intp),
-        np.empty(LANES, dtype=np.intp),
+        np.zeros((BLOCK, 9)),  # zeros: a short packet's unused rows are read, never used
+        np.empty(BLOCK, dtype=np.intp),
+        np.empty(BLOCK, dtype=np.intp),
         np.empty((bvh_depth + 1, LANES)),
         np.empty((primary_rays, GEOMETRY_FIELDS)),
         np.empty((primary_rays, lights, 2)),
-        np.zeros((LANES, 9)),
-        np.empty((LANES, 2), dtype=np.intp),
+        np.zeros((BLOCK, 9)),
+        np.empty((BLOCK, 2), dtype=np.intp),
     )

@@ -13,10 +13,10 @@ The tree is :mod:`pixelpath.raytrace._bvh_kernels`'s; the ray tests are
   JCGT 2013) so rounding never prunes a box whose triangle the triangle test would hit. Ties in
   t go to the triangle listed first in the original order (``source``), so the nearest hit is the
   one a brute-force loop over all triangles finds.
-* ``closest_triangles4`` and ``any_triangles4``: both searches for a packet of four rays, one
+* ``closest_triangles4`` and ``any_triangles4``: both searches for packets of four rays, one
   walk of the tree for all four; the box tests of the four rays run side by side, compiled to
   vector instructions (``njit(simd=True)``), and each ray ends with what the one-ray search
-  finds.
+  finds. One call traces a block of packets (``BLOCK`` rays from the tracer).
 * Alpha-tested triangles (``Cutouts``: a material with an ``alpha_cutoff``): the one-ray
   searches given a ``cutouts`` record ask :func:`cut_away_hit` about a hit on one of them
   before it counts, and a hit whose surface is cut away there is no hit (the ray goes on
@@ -46,6 +46,7 @@ from pixelpath.scene._texture_kernels import cut_away
 
 MISS = -1
 LANES = 4  # rays of a packet: one 256-bit vector of float64
+BLOCK = 16 * LANES  # rays handed to one call of the packet searches
 ROOT = np.intp(0)  # the root node: not the literal 0, which _enter_lanes was compiled for again
 
 
@@ -277,16 +278,41 @@ def _lanes_entering(entry, limit):
 
 
 @njit(simd=True, refcount=False)
-def closest_triangles4(bounds, links, tris, source, skip, cull, rays, lanes, t_min, hit, stack,
+def closest_triangles4(bounds, links, tris, source, skip, cull, rays, count, t_min, hit, stack,
                        stack_t, lane_t):
+    """Find what :func:`closest_triangle` finds for each of the first ``count`` rays of ``rays``.
+
+    ``rays`` (n, 9), n at least ``count`` rounded up to a multiple of ``LANES``: each row holds
+    a ray's origin and direction in columns 0-5 and its t_max in column 6; the kernel writes t
+    (left at t_max on a miss) and the weights w1, w2 into columns 6-8 and the triangle (MISS on
+    a miss) into ``hit`` (n,). Rays 0-3, 4-7, ... are traced as packets (:func:`_closest_packet`),
+    a last packet of fewer than ``LANES`` rays one by one. Returns (nodes, tests) summed over
+    the rays. One call for many packets: a call passes the tree's arrays and the scratch, some
+    eighty machine words, which cost as much as a packet's whole walk where it misses the tree.
+    """
+    nodes = 0
+    tests = 0
+    for first in range(0, count, LANES):
+        n, m = _closest_packet(
+            bounds, links, tris, source, skip, cull, rays[first:first + LANES],
+            min(LANES, count - first), t_min, hit[first:first + LANES], stack, stack_t, lane_t,
+        )
+        nodes += n
+        tests += m
+    return nodes, tests
+
+
+# Inlined by Numba into closest_triangles4, its one caller: a call per packet is what that
+# function saves.
+@njit(inline="always")
+def _closest_packet(bounds, links, tris, source, skip, cull, rays, lanes, t_min, hit, stack,
+                    stack_t, lane_t):
     """Find what :func:`closest_triangle` finds for each of ``LANES`` rays, in one walk.
 
     The first ``lanes`` rows of ``rays`` (LANES, 9) are traced (fewer than ``LANES``: one by
-    one, as at the end of a row); each holds a ray's origin and direction in columns 0-5 and
-    its t_max in column 6; the kernel writes t (left at t_max on a miss) and the weights w1, w2 into
-    columns 6-8 and the triangle (MISS on a miss) into ``hit``. Returns (nodes, tests) summed
-    over the rays: a node counts once for each ray that enters it. The walk visits a node when
-    any ray enters it before its nearest hit so far, testing both children's boxes for all
+    one, as at the end of a row), as :func:`closest_triangles4` says; a node counts once for
+    each ray that enters it. The walk visits a node when any ray enters it before its nearest
+    hit so far, testing both children's boxes for all
     four rays with the same arithmetic side by side (compiled to vector instructions); rays
     whose directions differ in sign on an axis enter boxes through different planes and are
     traced one by one instead. ``stack_t`` is :func:`closest_triangle`'s, ``lane_t``
@@ -382,18 +408,38 @@ def _lane_count(mask):
 
 
 @njit(simd=True, refcount=False)
-def any_triangles4(bounds, links, tris, pass_through, rays, lanes, t_min, hit, stack):
+def any_triangles4(bounds, links, tris, pass_through, rays, count, t_min, hit, stack):
+    """Run :func:`any_triangle` for each of the first ``count`` segments of ``rays``.
+
+    ``rays`` (n, 8 or more), n at least ``count`` rounded up to a multiple of ``LANES``: each
+    row holds a segment's origin and direction in columns 0-5 and its t_max in column 6; the
+    kernel writes the light let through into column 7 and the blocker (MISS when none) into
+    ``hit`` (n,). Segments 0-3, 4-7, ... are traced as packets (:func:`_any_packet`), a last
+    packet of fewer than ``LANES`` one by one, many packets a call (as
+    :func:`closest_triangles4`). Returns (nodes, tests) summed over the segments.
+    """
+    nodes = 0
+    tests = 0
+    for first in range(0, count, LANES):
+        n, m = _any_packet(bounds, links, tris, pass_through, rays[first:first + LANES],
+                           min(LANES, count - first), t_min, hit[first:first + LANES], stack)
+        nodes += n
+        tests += m
+    return nodes, tests
+
+
+# Inlined by Numba into any_triangles4, its one caller (see _closest_packet).
+@njit(inline="always")
+def _any_packet(bounds, links, tris, pass_through, rays, lanes, t_min, hit, stack):
     """Run :func:`any_triangle` for each of ``LANES`` segments, in one walk of the tree.
 
-    The first ``lanes`` rows of ``rays`` (LANES, 8) are traced (fewer than ``LANES``: one by
-    one); each holds a segment's origin and direction in columns 0-5 and its t_max in
-    column 6; the kernel writes the light let through into column 7 and the blocker
-    (MISS when none) into ``hit``. Returns (nodes, tests) summed over the rays. The walk takes
-    the children in any_triangle's fixed order, each ray only into the boxes it enters and
-    only until it is blocked, so each ray visits the nodes, tests the triangles and multiplies
-    the fractions let through that it would alone, in the same order: the same blocker and
-    bit for bit the same light. The stack holds a node and the mask of the rays entering it
-    (``node << LANES | mask``); rays whose directions differ in sign on an axis go one by one.
+    The first ``lanes`` rows of ``rays`` are traced (fewer than ``LANES``: one by one), as
+    :func:`any_triangles4` says. The walk takes the children in any_triangle's fixed order,
+    each ray only into the boxes it enters and only until it is blocked, so each ray visits
+    the nodes, tests the triangles and multiplies the fractions let through that it would
+    alone, in the same order: the same blocker and bit for bit the same light. The stack
+    holds a node and the mask of the rays entering it (``node << LANES | mask``); rays whose
+    directions differ in sign on an axis go one by one.
     """
     nodes = 0
     tests = 0
@@ -473,22 +519,22 @@ def intersect_many(bounds, links, tris, source, skip, cull, labels, origins, dir
     t is inf on a miss; the label of the triangle at leaf position i is ``labels[i]`` (MISS on
     a miss).
 
-    Runs of ``LANES`` consecutive rays are traced as a packet (:func:`closest_triangles4`):
-    neighbouring pixels' rays, or any rays given in a coherent order, walk the tree once
-    together, and rays that do not fit a packet are traced one by one inside it. ``skip`` and
-    ``cull`` are the packet search's, passed in (not written here as a literal ``False``, for
-    which Numba would compile that search a second time, beside the tracer's), and so is its
-    scratch (``packet`` (LANES, 9), ``hit`` (LANES,), the stacks). Serial: the caller runs
-    disjoint ranges of rays from several threads, each with its own scratch.
+    Runs of ``LANES`` consecutive rays are traced as a packet (:func:`closest_triangles4`,
+    ``BLOCK`` rays a call): neighbouring pixels' rays, or any rays given in a coherent order,
+    walk the tree once together, and rays that do not fit a packet are traced one by one.
+    ``skip`` and ``cull`` are the packet search's, passed in (not written here as a literal
+    ``False``, for which Numba would compile that search a second time, beside the tracer's),
+    and so is its scratch (``packet`` (BLOCK, 9), ``hit`` (BLOCK,), the stacks). Serial: the
+    caller runs disjoint ranges of rays from several threads, each with its own scratch.
 
     Returns whether any of the rays is unusable (a NaN or an infinity, or a zero direction),
     checked as they are read: such a ray is traced as another, harmless one, and the caller
     raises an error instead of answering.
     """
     unusable = False
-    for first in range(start, stop, LANES):
-        lanes = min(LANES, stop - first)
-        for r in range(lanes):
+    for first in range(start, stop, BLOCK):
+        count = min(BLOCK, stop - first)
+        for r in range(count):
             for axis in range(3):
                 packet[r, axis] = origins[first + r, axis]
                 packet[r, 3 + axis] = directions[first + r, axis]
@@ -498,9 +544,9 @@ def intersect_many(bounds, links, tris, source, skip, cull, labels, origins, dir
                 for column in range(6):
                     packet[r, column] = 0.0
                 packet[r, 5] = 1.0
-        closest_triangles4(bounds, links, tris, source, skip, cull, packet, lanes, 0.0, hit,
+        closest_triangles4(bounds, links, tris, source, skip, cull, packet, count, 0.0, hit,
                            stack, stack_t, lane_t)
-        for r in range(lanes):
+        for r in range(count):
             t_out[first + r] = packet[r, 6]
             label_out[first + r] = MISS if hit[r] == MISS else labels[hit[r]]
     return unusable

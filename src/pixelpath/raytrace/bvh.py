@@ -202,7 +202,7 @@ class BVH:
         i is the triangle's position in the leaf order.
         """
         from pixelpath.raytrace._hit_kernels import slab_nan_allowed
-        from pixelpath.raytrace._traversal_kernels import LANES, intersect_many
+        from pixelpath.raytrace._traversal_kernels import BLOCK, LANES, intersect_many
 
         # No copies: the rays are only read (a million rays' copies and checks cost more than
         # a fifth of their tracing). The kernel checks their values as it reads them, on
@@ -223,13 +223,13 @@ class BVH:
             unusable = []
 
             def trace(start: int, stop: int) -> None:
-                # The packet starts as zeros: a packet of fewer than LANES rays reads (and
+                # The packets start as zeros: a packet of fewer than LANES rays reads (and
                 # ignores) the rows it does not fill, which must hold numbers.
                 with slab_nan_allowed():
                     unusable.append(intersect_many(
                         self.bounds, self.links, self.corners, self.order, no_skip, False,
-                        labels, o, d, start, stop, np.zeros((LANES, 9)),
-                        np.empty(LANES, dtype=np.intp), np.empty(levels, dtype=np.intp),
+                        labels, o, d, start, stop, np.zeros((BLOCK, 9)),
+                        np.empty(BLOCK, dtype=np.intp), np.empty(levels, dtype=np.intp),
                         np.empty(levels), np.empty((levels, LANES)), t, label,
                     ))
 
