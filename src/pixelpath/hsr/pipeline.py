@@ -240,12 +240,15 @@ def _clip_to_view(geometry, camera, keep, front, mode, lighting, blends) -> dict
     new_columns, new_triangles, new_source = clip_crossing(columns, geometry.triangles, crossing)
     if len(new_triangles):
         columns = tuple(np.concatenate(pair) for pair in zip(columns, new_columns, strict=True))
-    triangles = np.concatenate([geometry.triangles[inside], new_triangles])
+    # np.take, not fancy indexing: the same rows, several times quicker on (n, 3) arrays.
+    triangles = np.concatenate([np.take(geometry.triangles, inside, axis=0), new_triangles])
     source = np.concatenate([inside, new_source])
     polygon = geometry.triangle_polygon[source]
     info = np.empty((len(polygon), 2), dtype=np.intp)
     info[:, 0] = geometry.polygon_object[polygon]
     info[:, 1] = ~front[polygon]
+    face_normals = np.take(geometry.polygon_normals, polygon, axis=0)
+    face_normals *= np.where(info[:, 1:], -1.0, 1.0)  # turned to the viewer
     named.update(zip(names, columns, strict=True))
     culled = len(keep) - int(np.count_nonzero(keep))
     outside = len(keep) - culled - len(inside) - len(crossing)
@@ -258,7 +261,7 @@ def _clip_to_view(geometry, camera, keep, front, mode, lighting, blends) -> dict
         "source": source,
         "info": info,
         "flat_colors": _flat_colors(geometry, polygon, ~front, mode, lighting),
-        "face_normals": np.where(info[:, 1:], -1.0, 1.0) * geometry.polygon_normals[polygon],
+        "face_normals": face_normals,
         "lighting": lighting,
         "mode": mode,
         "stats": dict(zip(STAT_NAMES, counts, strict=True)),

@@ -53,9 +53,11 @@ def world_to_clip(points: np.ndarray, camera: Camera) -> np.ndarray:
     >>> float(world_to_clip([[0.0, 0.0, 0.0]], cam)[0, 3])  # the target is 5 units ahead
     5.0
     """
+    from pixelpath.scene.mesh import moved
+
     points = _points(points, 3, "points")
     matrix = camera.projection_matrix() @ camera.view_matrix()
-    return points @ matrix[:, :3].T + matrix[:, 3]
+    return moved(points, matrix[:, :3], matrix[:, 3])
 
 
 def clip_to_screen(
