@@ -8,6 +8,7 @@ import subprocess
 import sys
 import textwrap
 import threading
+import time
 import warnings
 from concurrent.futures.thread import ThreadPoolExecutor
 
@@ -48,6 +49,37 @@ def test_the_pool_follows_numbas_thread_count_and_leaves_numbas_pool_unstarted()
     assert report == {
         "count": 3, "used": 3, "started": False, "after_set": 1, "used_after_set": 1
     }
+
+
+def test_the_calling_thread_takes_runs_beside_the_pool_and_each_run_is_done_once(monkeypatch):
+    monkeypatch.setattr(_threads, "thread_count", lambda: 3)
+    done = []
+    lock = threading.Lock()
+
+    def work(start, stop):
+        time.sleep(0.001)  # the calling thread takes runs while the helpers wake
+        with lock:
+            done.append((start, stop, threading.get_ident()))
+
+    in_threads(work, 1000, runs=40)
+    spans = sorted((start, stop) for start, stop, _ in done)
+    assert len(spans) == 40 and spans[0][0] == 0 and spans[-1][1] == 1000
+    assert all(a[1] == b[0] for a, b in zip(spans, spans[1:]))  # no gap, no overlap
+    assert threading.get_ident() in {ident for _, _, ident in done}
+
+
+@pytest.mark.parametrize("failing", [0, 39])  # the first run (the caller's) and the last
+def test_an_exception_in_any_run_is_raised_by_in_threads(monkeypatch, failing):
+    monkeypatch.setattr(_threads, "thread_count", lambda: 3)
+
+    def work(start, stop):
+        time.sleep(0.001)
+        if start == failing * 25:
+            raise ValueError(f"run {failing}")
+
+    with pytest.raises(ValueError, match=f"run {failing}"):
+        in_threads(work, 1000, runs=40)
+    in_threads(lambda start, stop: None, 1000, runs=40)  # the pool still works afterwards
 
 
 def new_pool_threads(before: set[threading.Thread]) -> set[threading.Thread]:
