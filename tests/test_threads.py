@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import itertools
 import json
 import os
 import subprocess
@@ -64,21 +65,25 @@ def test_the_calling_thread_takes_runs_beside_the_pool_and_each_run_is_done_once
     in_threads(work, 1000, runs=40)
     spans = sorted((start, stop) for start, stop, _ in done)
     assert len(spans) == 40 and spans[0][0] == 0 and spans[-1][1] == 1000
-    assert all(a[1] == b[0] for a, b in zip(spans, spans[1:]))  # no gap, no overlap
+    assert all(a[1] == b[0] for a, b in itertools.pairwise(spans))  # no gap, no overlap
     assert threading.get_ident() in {ident for _, _, ident in done}
 
 
 @pytest.mark.parametrize("failing", [0, 39])  # the first run (the caller's) and the last
 def test_an_exception_in_any_run_is_raised_by_in_threads(monkeypatch, failing):
     monkeypatch.setattr(_threads, "thread_count", lambda: 3)
+    started = []
 
     def work(start, stop):
+        started.append(start)
         time.sleep(0.001)
         if start == failing * 25:
             raise ValueError(f"run {failing}")
 
     with pytest.raises(ValueError, match=f"run {failing}"):
         in_threads(work, 1000, runs=40)
+    if failing == 0:  # the calling thread's own first run: the helpers stopped soon after
+        assert len(started) < 10
     in_threads(lambda start, stop: None, 1000, runs=40)  # the pool still works afterwards
 
 

@@ -109,23 +109,28 @@ def _shared_runs(
     counter, so a call hands out one task per helper, not one per run, and the calling thread
     works instead of sleeping until the runs are done: handing eight runs to the pool and
     waiting for them took 140 µs, two 80 µs, whatever the work. A helper's exception is raised
-    here once every helper has stopped; one of this thread's, as soon as they have.
+    here once every helper has stopped; one of this thread's (or Ctrl-C) stops the helpers
+    after their current run and is raised once they have.
     """
     take = itertools.count().__next__  # one C call: atomic under the GIL
     last = len(bounds) - 1
+    stopped = False
 
     def take_runs() -> None:
         run = take()
-        while run < last:
+        while run < last and not stopped:
             work(bounds[run], bounds[run + 1])
             run = take()
 
     helpers = [executor.submit(take_runs) for _ in range(threads - 1)]
     try:
         take_runs()
+    except BaseException:  # an error, or Ctrl-C: the helpers stop after their current run
+        stopped = True
+        raise
     finally:
-        # A helper not started yet would find no run left: withdrawn, it is not waited for
-        # (a pool thread takes tens of microseconds to wake).
+        # A helper not started yet has no run left to take (or none wanted, after an error):
+        # withdrawn, it is not waited for (a pool thread takes tens of microseconds to wake).
         wait_for([helper for helper in helpers if not helper.cancel()])
     for helper in helpers:
         if not helper.cancelled():
