@@ -314,11 +314,10 @@ def _closest_packet(bounds, links, tris, source, skip, cull, rays, lanes, t_min,
     The first ``lanes`` rows of ``rays`` (LANES, 9) are traced (fewer than ``LANES``: one by
     one, as at the end of a row), as :func:`closest_triangles4` says; a node counts once for
     each ray that enters it. The walk visits a node when any ray enters it before its nearest
-    hit so far, testing both children's boxes for all
-    four rays with the same arithmetic side by side (compiled to vector instructions); rays
-    whose directions differ in sign on an axis enter boxes through different planes and are
-    traced one by one instead. ``stack_t`` is :func:`closest_triangle`'s, ``lane_t``
-    (depth + 1, LANES) float64.
+    hit so far, testing both children's boxes for all four rays with the same arithmetic side
+    by side (compiled to vector instructions); rays whose directions differ in sign on an axis
+    enter boxes through different planes and are traced one by one instead. ``stack_t`` is
+    :func:`closest_triangle`'s, ``lane_t`` (depth + 1, LANES) float64.
     """
     nodes = 0
     tests = 0
