@@ -407,12 +407,12 @@ def bounding_box(points: np.ndarray) -> np.ndarray:
 
 
 def moved(points: np.ndarray, linear: np.ndarray, shift: np.ndarray) -> np.ndarray:
-    """Return (N, 3) ``points`` under the affine map ``x -> linear @ x + shift``.
+    """Return (N, 3) ``points`` under the affine map ``x -> linear @ x + shift``, as (N, k).
 
-    ``linear`` is (k, 3) and ``shift`` (k,), giving (N, k) points (k = 4: homogeneous
-    coordinates). ``points @ linear.T + shift``, bit for bit, the shift added column by
-    column: adding a (k,) row to (N, k) runs NumPy's inner loop k elements long, at two to
-    five times the time.
+    ``linear`` is (k, 3) and ``shift`` (k,): k = 3 for points moved in space, 4 for their
+    homogeneous clip coordinates. ``points @ linear.T + shift``, bit for bit, the shift added
+    column by column: adding a (k,) row to (N, k) runs NumPy's inner loop k elements long, at
+    two to five times the time.
 
     Examples
     --------
