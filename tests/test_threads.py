@@ -69,6 +69,17 @@ def test_the_calling_thread_takes_runs_beside_the_pool_and_each_run_is_done_once
     assert threading.get_ident() in {ident for _, _, ident in done}
 
 
+def test_progress_is_reported_once_per_run_and_in_the_calling_thread(monkeypatch):
+    monkeypatch.setattr(_threads, "thread_count", lambda: 3)
+    reported = []
+
+    def work(start, stop):
+        time.sleep(0.001)
+
+    in_threads(work, 1000, runs=40, done=lambda: reported.append(threading.get_ident()))
+    assert reported == [threading.get_ident()] * 40
+
+
 @pytest.mark.parametrize("failing", [0, 39])  # the first run (the caller's) and the last
 def test_an_exception_in_any_run_is_raised_by_in_threads(monkeypatch, failing):
     monkeypatch.setattr(_threads, "thread_count", lambda: 3)

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import itertools
 import os
+import queue
 import threading
 from collections.abc import Callable, Sequence
 from concurrent.futures import wait as wait_for
@@ -61,8 +62,9 @@ def in_threads(
     ``runs`` sets how many runs (default: a few per thread, or one on a single thread), and
     ``least`` the fewest items a run is worth: fewer runs are made where ``count`` is small,
     down to one, run in the calling thread (handing out little work costs more than it saves);
-    ``done()`` is called in the calling thread once per run, as the runs finish in order, so a
-    progress bar can follow the work without any barrier between its parts.
+    ``done()`` is called in the calling thread once per run, as the runs finish (those of other
+    threads when the calling thread's own next run is done, or at the end), so a progress bar
+    can follow the work without any barrier between its parts.
 
     Examples
     --------
@@ -83,48 +85,55 @@ def in_threads(
     # One run needs no division of the range (NumPy's took 7 µs, most of a small call's cost).
     bounds = [0, count] if runs == 1 else np.linspace(0, count, runs + 1).astype(int).tolist()
     if threads == 1 or runs == 1:
-        results = map(work, bounds[:-1], bounds[1:])
-    else:
-        with _EXECUTORS_LOCK:
-            executor = _EXECUTORS.get(threads)
-            if executor is None:
-                executor = _started_pool(threads)
-                _EXECUTORS[threads] = executor
-        if done is None:
-            _shared_runs(executor, work, bounds, min(threads, runs))
-            return
-        results = executor.map(work, bounds[:-1], bounds[1:])
-    for _ in results:  # re-raises a run's exception here
-        if done is not None:
-            done()
+        for start, stop in itertools.pairwise(bounds):
+            work(start, stop)
+            if done is not None:
+                done()
+        return
+    with _EXECUTORS_LOCK:
+        executor = _EXECUTORS.get(threads)
+        if executor is None:
+            executor = _started_pool(threads)
+            _EXECUTORS[threads] = executor
+    _shared_runs(executor, work, bounds, min(threads, runs), done)
 
 
 def _shared_runs(
     executor: ThreadPoolExecutor, work: Callable[[int, int], object], bounds: list[int],
-    threads: int,
+    threads: int, done: Callable[[], object] | None,
 ) -> None:
     """Run ``work`` on the runs between consecutive ``bounds``: this thread and helpers.
 
     ``threads - 1`` tasks of the pool and the calling thread take the runs in turn from one
     counter, so a call hands out one task per helper, not one per run, and the calling thread
     works instead of sleeping until the runs are done: handing eight runs to the pool and
-    waiting for them took 140 µs, two 80 µs, whatever the work. A helper's exception is raised
-    here once every helper has stopped; one of this thread's (or Ctrl-C) stops the helpers
-    after their current run and is raised once they have.
+    waiting for them took 140 µs, two 80 µs, whatever the work. The helpers count their
+    finished runs into a queue, which this thread turns into ``done()`` calls. A helper's
+    exception is raised here once every helper has stopped; one of this thread's (or Ctrl-C)
+    stops the helpers after their current run and is raised once they have.
     """
     take = itertools.count().__next__  # one C call: atomic under the GIL
     last = len(bounds) - 1
     stopped = False
+    finished = queue.SimpleQueue()  # a token per run a helper has done
 
-    def take_runs() -> None:
+    def take_runs(finish: Callable[[], object]) -> None:
         run = take()
         while run < last and not stopped:
             work(bounds[run], bounds[run + 1])
+            finish()
             run = take()
 
-    helpers = [executor.submit(take_runs) for _ in range(threads - 1)]
+    def report() -> None:  # this thread's run, and the helpers' since the last one
+        done()
+        while not finished.empty():
+            finished.get()
+            done()
+
+    helper_finish = (lambda: finished.put(None)) if done is not None else _nothing
+    helpers = [executor.submit(take_runs, helper_finish) for _ in range(threads - 1)]
     try:
-        take_runs()
+        take_runs(report if done is not None else _nothing)
     except BaseException:  # an error, or Ctrl-C: the helpers stop after their current run
         stopped = True
         raise
@@ -132,9 +141,16 @@ def _shared_runs(
         # A helper not started yet has no run left to take (or none wanted, after an error):
         # withdrawn, it is not waited for (a pool thread takes tens of microseconds to wake).
         wait_for([helper for helper in helpers if not helper.cancel()])
+    while done is not None and not finished.empty():
+        finished.get()
+        done()
     for helper in helpers:
         if not helper.cancelled():
             helper.result()
+
+
+def _nothing() -> None:
+    """Report nothing: the end of a run when nobody follows the progress."""
 
 
 def _started_pool(threads: int) -> ThreadPoolExecutor:
