@@ -437,25 +437,36 @@ def _row_surface_colors(j, x0, ids, info, setup, triangles, uv, vertex_colors, t
     y = j + 0.5
     count = 0
     line_triangle = -1
+    obj = texture = a = b = c = np.intp(0)
+    painted = False
+    r = g = bl = 0.0
     numerators = (0.0,) * 6
     line = (0.0,) * 9
     for i in range(ids.shape[0]):
         t = ids[i]
-        if t < 0 or not coloured[info[t, 0]]:
+        if t < 0:
             continue
-        obj = info[t, 0]
-        x = (x0 + i) + 0.5
-        a, b, c = triangles[t, 0], triangles[t, 1], triangles[t, 2]
-        texture = tables.objects[obj, TEXTURE]
         if t != line_triangle:
+            # What the run of this triangle's pixels shares, looked up once: the compiled
+            # loop reloads a table entry at every pixel, as the stores may have changed it.
+            if not coloured[info[t, 0]]:
+                continue
             line_triangle = t
-            numerators = _line_weights(setup, t, y)
+            obj = info[t, 0]
+            a, b, c = triangles[t, 0], triangles[t, 1], triangles[t, 2]
+            texture = tables.objects[obj, TEXTURE]
+            painted = tables.objects[obj, HAS_COLORS] != 0
+            if painted:
+                numerators = _line_weights(setup, t, y)
+            else:  # the material's colour alone: the same at every pixel
+                r, g, bl, _ = base_color(tables, materials, obj, vertex_colors, a, b, c, 0.0,
+                                         0.0, 0.0)
             if texture >= 0:
                 line = texture_line(setup, t, y, uv, a, b, c)
-        b0 = b1 = b2 = 0.0  # read by base_color only where there are vertex colours
-        if tables.objects[obj, HAS_COLORS]:
+        x = (x0 + i) + 0.5
+        if painted:
             b0, b1, b2 = _weights_at(numerators, x)
-        r, g, bl, _ = base_color(tables, materials, obj, vertex_colors, a, b, c, b0, b1, b2)
+            r, g, bl, _ = base_color(tables, materials, obj, vertex_colors, a, b, c, b0, b1, b2)
         out[i, 0] = r
         out[i, 1] = g
         out[i, 2] = bl
