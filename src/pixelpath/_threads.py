@@ -8,6 +8,7 @@ the GIL (``nogil``), so runs of the work handed to them from Python threads go o
 
 from __future__ import annotations
 
+import functools
 import itertools
 import os
 import queue
@@ -115,6 +116,7 @@ def _shared_runs(
     take = itertools.count().__next__  # one C call: atomic under the GIL
     last = len(bounds) - 1
     stopped = False
+    report = done if done is not None else _nothing
     finished = queue.SimpleQueue()  # a token per run a helper has done
 
     def take_runs(finish: Callable[[], object]) -> None:
@@ -124,16 +126,19 @@ def _shared_runs(
             finish()
             run = take()
 
-    def report() -> None:  # this thread's run, and the helpers' since the last one
-        done()
+    def report_helpers() -> None:
         while not finished.empty():
             finished.get()
-            done()
+            report()
 
-    helper_finish = (lambda: finished.put(None)) if done is not None else _nothing
-    helpers = [executor.submit(take_runs, helper_finish) for _ in range(threads - 1)]
+    def report_here() -> None:  # this thread's run, and the helpers' since the last one
+        report()
+        report_helpers()
+
+    helpers = [executor.submit(take_runs, functools.partial(finished.put, None))
+               for _ in range(threads - 1)]
     try:
-        take_runs(report if done is not None else _nothing)
+        take_runs(report_here)
     except BaseException:  # an error, or Ctrl-C: the helpers stop after their current run
         stopped = True
         raise
@@ -141,9 +146,7 @@ def _shared_runs(
         # A helper not started yet has no run left to take (or none wanted, after an error):
         # withdrawn, it is not waited for (a pool thread takes tens of microseconds to wake).
         wait_for([helper for helper in helpers if not helper.cancel()])
-    while done is not None and not finished.empty():
-        finished.get()
-        done()
+    report_helpers()
     for helper in helpers:
         if not helper.cancelled():
             helper.result()

@@ -63,7 +63,7 @@ def empty(shape: tuple[int, ...], dtype: type) -> np.ndarray:
 
 
 def _take(nbytes: int) -> np.ndarray:
-    try:
+    try:  # one pop, not a look then a pop: renders in other threads share the spares
         return _spares.get(nbytes, []).pop()
     except IndexError:
         pass
