@@ -250,7 +250,7 @@ def shade_bands(bands, band_rows, x0, y0, inv_depth, triangle_id, surfaces, out)
             _shade_row(j, x0, y0, triangle_id, inv_depth, surfaces, out, batch)
 
 
-@njit
+@njit(refcount=False)
 def _shade_row(j, x0, y0, triangle_id, inv_depth, surfaces, out, batch):
     """Fill image row j of the output buffers from the triangle seen at each of its pixels.
 
@@ -548,7 +548,7 @@ def _scanline_surface(setup, t, y, triangles, positions, normals, sign):
     )
 
 
-@njit(error_model="numpy")
+@njit(error_model="numpy", refcount=False)
 def _fill_row(inv_depth_row, background, rgb_row, depth_row, id_row, normal_row, orthographic,
               near, far):
     """Write a row as if nothing were drawn, but with every drawn pixel's depth.
@@ -572,7 +572,7 @@ def _fill_row(inv_depth_row, background, rgb_row, depth_row, id_row, normal_row,
         normal_flat[3 * i + 2] = 0.0
 
 
-@njit(error_model="numpy")
+@njit(error_model="numpy", refcount=False)
 def _shade_batch(count, batch, material, surfaces, rgb_row, normal_row):
     """Shade the gathered pixels of one row (one object's); write their colours and normals.
 
