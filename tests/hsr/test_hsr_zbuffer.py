@@ -179,3 +179,26 @@ def test_picture_does_not_depend_on_the_thread_count():
     assert np.array_equal(np.asarray(one), np.asarray(two))
     assert np.array_equal(one.depth, two.depth)
     assert np.array_equal(one.object_id, two.object_id)
+
+
+@pytest.mark.parametrize("region", [(0, 0, 48, 70), (5, 13, 37, 45), (0, 40, 48, 20)])
+def test_band_buffers_draw_what_the_region_buffers_draw(region):
+    # Without explain the z-buffer keeps one band of visibility per thread, not the region's:
+    # the same picture, on regions whose rows start and stop inside bands, with an
+    # alpha-tested square (its own path through the depth test) in front of a sphere.
+    from pixelpath.contract import RenderOptions, View
+    from pixelpath.hsr.zbuffer import render_frame
+
+    texture = np.ones((4, 4, 4))
+    texture[1:3, 1:3, 3] = 0.0  # a transparent hole
+    square = pp.Mesh([[-1, -1, 1], [1, -1, 1], [1, 1, 1], [-1, 1, 1]], [[0, 1, 2, 3]],
+                     pp.Material(texture=texture, alpha_cutoff=0.5),
+                     uv=[[0, 0], [1, 0], [1, 1], [0, 1]])
+    camera = pp.Camera(eye=(0.3, 0.4, 5), target=(0, 0, 0), width=48, height=70)
+    scene = pp.Scene(camera, [square, pp.Sphere((0, 0, 0), 1.2)], [pp.PointLight((3, 4, 5))])
+    view = View(camera, *region)
+    kept = render_frame(scene, view, RenderOptions(explain=True))
+    banded = render_frame(scene, view, RenderOptions())
+    assert (banded.object_id == 1).sum() > 50 and (banded.object_id == 0).sum() > 50
+    for name in ("rgb", "depth", "object_id", "normal"):
+        assert np.array_equal(getattr(kept, name), getattr(banded, name)), name

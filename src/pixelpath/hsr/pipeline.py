@@ -388,6 +388,23 @@ def visibility_buffers(view: View) -> Visibility:
     return buffers
 
 
+def band_buffers(width: int) -> Visibility:
+    """Return the calling thread's 1/w and triangle buffers of one band of rows, ``width`` wide.
+
+    For a method that shades each band as soon as it has decided it (the z-buffer): every
+    band reuses them, so they stay in the processor's cache, and a frame does not write its
+    12 bytes a pixel of visibility to memory, nor fault them in on a process's first render.
+    """
+    from pixelpath.raster._scan_kernels import BAND_ROWS
+
+    shape = (BAND_ROWS, width)
+    buffers = getattr(_SCRATCH, "band", None)
+    if buffers is None or buffers.inv_depth.shape != shape:
+        buffers = Visibility(np.empty(shape), np.empty(shape, dtype=np.int32))
+        _SCRATCH.band = buffers
+    return buffers
+
+
 def surfaces(prepared: Prepared, scene: Scene, view: View):
     """Return what the shading kernels read, as their ``Surfaces`` record."""
     from pixelpath.raster import _kernels

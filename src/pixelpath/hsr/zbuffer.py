@@ -11,8 +11,9 @@ The front end and the shading pass are the shared ones of :mod:`pixelpath.hsr.pi
 z-buffer runs them band by band: each band of 32 rows is scan-converted with the depth test
 and shaded at once, while its buffers are still in the processor's cache.
 
-Memory: 12 bytes per pixel for the buffers (1/w and triangle) besides the image, whatever the
-scene; time grows with the pixels the triangles cover (their *depth complexity*).
+Memory: 12 bytes per pixel of one band for each thread's buffers (1/w and triangle) besides
+the image, whatever the scene (of the whole region with ``explain``, whose report reads them);
+time grows with the pixels the triangles cover (their *depth complexity*).
 """
 
 from __future__ import annotations
@@ -62,7 +63,9 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     from pixelpath.raster import _kernels, _scan_kernels
 
     prepared = pipeline.prepare(scene, view, options)
-    visibility = pipeline.visibility_buffers(view)
+    # The region's visibility is kept only for the report; otherwise each thread reuses one
+    # band's buffers, which stay in cache.
+    visibility = pipeline.visibility_buffers(view) if options.explain else None
     offsets, items = pipeline.binned(prepared, view)
     out = pipeline.output_buffers(view)
     surfaces = pipeline.surfaces(prepared, scene, view)
@@ -70,9 +73,10 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     _, order = pipeline.bands(view)
     runs = pipeline.slices(view)
     def render_run(run: np.ndarray) -> None:
+        buffers = visibility or pipeline.band_buffers(view.width)
         _kernels.render_bands(
             run, prepared.setup, prepared.rows, offsets, items, _scan_kernels.BAND_ROWS, view.x0,
-            view.y0, *visibility, cutouts, surfaces, out,
+            view.y0, *buffers, cutouts, surfaces, out,
         )
 
     for start, stop in runs:

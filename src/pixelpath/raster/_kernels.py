@@ -216,20 +216,24 @@ def render_bands(bands, setup, rows, offsets, items, band_rows, x0, y0, inv_dept
     """Rasterize the listed bands of rows with the depth test, then shade them (the z-buffer).
 
     One pass per band: its depth and triangle buffers are still in cache when it is shaded.
+    ``inv_depth`` and ``triangle_id`` are the region's visibility buffers (h, w), left filled
+    for whatever reads them afterwards, or one band's (``band_rows``, w), which every band
+    reuses: those stay in cache, and a frame's 12 bytes a pixel of them never reach memory.
     Serial, and called on runs of the band list from several threads at once (it releases
     the GIL): a ``parallel=True`` loop cost seconds more to compile on a first run.
     """
-    height = inv_depth.shape[0]
+    height = out.depth.shape[0]
     for k in range(bands.shape[0]):
         band = bands[k]
+        first, stop = _band_rows(band, band_rows, y0, height)
+        top = y0 if inv_depth.shape[0] == height else first  # the buffers' first image row
         _rasterize_band(
-            setup, rows, offsets, items, band, band_rows, x0, y0, inv_depth, triangle_id,
+            setup, rows, offsets, items, band, first, stop, x0, top, inv_depth, triangle_id,
             cutouts,
         )
         batch = _new_batch(inv_depth.shape[1])
-        first, stop = _band_rows(band, band_rows, y0, height)
         for j in range(first, stop):
-            _shade_row(j, x0, y0, triangle_id, inv_depth, surfaces, out, batch)
+            _shade_row(j, x0, y0, triangle_id[j - top], inv_depth[j - top], surfaces, out, batch)
 
 
 @njit
@@ -247,12 +251,15 @@ def shade_bands(bands, band_rows, x0, y0, inv_depth, triangle_id, surfaces, out)
         batch = _new_batch(inv_depth.shape[1])
         first, stop = _band_rows(bands[k], band_rows, y0, height)
         for j in range(first, stop):
-            _shade_row(j, x0, y0, triangle_id, inv_depth, surfaces, out, batch)
+            _shade_row(j, x0, y0, triangle_id[j - y0], inv_depth[j - y0], surfaces, out, batch)
 
 
 @njit(refcount=False)
-def _shade_row(j, x0, y0, triangle_id, inv_depth, surfaces, out, batch):
+def _shade_row(j, x0, y0, ids, keys, surfaces, out, batch):
     """Fill image row j of the output buffers from the triangle seen at each of its pixels.
+
+    ``ids`` and ``keys`` are the row's triangles (-1 where none) and depth keys (1/w, 0 where
+    none); the output buffers cover the region whose top-left pixel is (x0, y0).
 
     This is the one shading pass of every raster method. Phong pixels are gathered
     (interpolated point and unit normal, planar, and the object colour) into ``batch`` and
@@ -270,9 +277,8 @@ def _shade_row(j, x0, y0, triangle_id, inv_depth, surfaces, out, batch):
     line_triangle = -1
     line = (0.0,) * 14
     y = j + 0.5
-    _fill_row(inv_depth[row], s.background, rgb, out.depth[row], out.object_id[row], normal,
+    _fill_row(keys, s.background, rgb, out.depth[row], out.object_id[row], normal,
               s.orthographic, s.near, s.far)
-    ids = triangle_id[row]
     half = s.colors.shape[1] // 2  # Gouraud: the columns of the light from the front
     if s.uv.shape[0] > 0 or s.vertex_colors.shape[0] > 0:
         _row_surface_colors(j, x0, ids, s.info, s.setup, s.triangles, s.uv, s.vertex_colors,

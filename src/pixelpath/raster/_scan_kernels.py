@@ -90,22 +90,23 @@ def _clear_band(first, stop, y0, inv_depth, triangle_id):
 
 
 @njit
-def _rasterize_band(setup, rows, offsets, items, band, band_rows, x0, y0, inv_depth, triangle_id,
-                    cutouts):
-    """Clear one band of rows, then depth-test its triangles' pixels (nearest 1/w wins).
+def _rasterize_band(setup, rows, offsets, items, band, band_first, band_stop, x0, top, inv_depth,
+                    triangle_id, cutouts):
+    """Clear band ``band`` (image rows [band_first, band_stop)), then depth-test its pixels.
 
-    The buffers (h, w) cover image columns [x0, x0 + w) and rows [y0, y0 + h); pixel centres
-    are computed in image coordinates, so a region gets exactly the pixels of the whole image.
-    Alpha-tested triangles (``cutouts.masked``) go through :func:`_draw_masked`.
+    The nearest 1/w wins. The buffers (h, w) cover image columns [x0, x0 + w) and rows
+    [top, top + h): the whole region's (``top`` its first row), or the band's alone (``top``
+    is ``band_first``). Pixel centres are computed in image coordinates, so a region gets
+    exactly the pixels of the whole image. Alpha-tested triangles (``cutouts.masked``) go
+    through :func:`_draw_masked`.
     """
-    height, width = inv_depth.shape
-    band_first, band_stop = _band_rows(band, band_rows, y0, height)
-    _clear_band(band_first, band_stop, y0, inv_depth, triangle_id)
+    width = inv_depth.shape[1]
+    _clear_band(band_first, band_stop, top, inv_depth, triangle_id)
     masked = cutouts.masked
     for k in range(offsets[band], offsets[band + 1]):
         t = items[k]
         if masked[t]:
-            _draw_masked(t, max(rows[t, 0], band_first), min(rows[t, 1], band_stop), x0, y0,
+            _draw_masked(t, max(rows[t, 0], band_first), min(rows[t, 1], band_stop), x0, top,
                          inv_depth, triangle_id, cutouts, True)
             continue
         record = setup[t]
@@ -116,9 +117,9 @@ def _rasterize_band(setup, rows, offsets, items, band, band_rows, x0, y0, inv_de
             row_value = pb * y + pc
             for i in range(first, stop):
                 inv_w = pa * (i + 0.5) + row_value
-                if inv_w > inv_depth[j - y0, i - x0]:
-                    inv_depth[j - y0, i - x0] = inv_w
-                    triangle_id[j - y0, i - x0] = t
+                if inv_w > inv_depth[j - top, i - x0]:
+                    inv_depth[j - top, i - x0] = inv_w
+                    triangle_id[j - top, i - x0] = t
 
 
 @njit
@@ -155,9 +156,9 @@ def rasterize_bands(bands, setup, rows, offsets, items, band_rows, x0, y0, inv_d
     """
     for k in range(bands.shape[0]):
         band = bands[k]
+        first, stop = _band_rows(band, band_rows, y0, inv_depth.shape[0])
         _rasterize_band(
-            setup, rows, offsets, items, band, band_rows, x0, y0, inv_depth, triangle_id,
-            cutouts,
+            setup, rows, offsets, items, band, first, stop, x0, y0, inv_depth, triangle_id, cutouts
         )
 
 
