@@ -125,3 +125,39 @@ def test_growing_a_buffer_keeps_its_rows():
     items = np.arange(3)
     longer = _grown(items, 7)
     assert longer.shape == (7,) and np.array_equal(longer[:3], items)
+
+
+def _classify_by_corners(clip, triangles, keep):
+    """The frustum classification written out per triangle corner, in NumPy."""
+    x, y, z, w = (clip[triangles][..., k] for k in range(4))  # (T, 3) each
+    planes = [z < -w, z > w, x < -w, x > w, y < -w, y > w]
+    dropped = np.any([side.all(axis=1) for side in planes], axis=0)
+    band = 8.0 * w  # raster._setup_kernels.GUARD_BAND
+    cut = ((z < -w) | (z > w) | (np.abs(x) > band) | (np.abs(y) > band)).any(axis=1)
+    return np.where(~keep | dropped, 0, np.where(cut, 2, 1))
+
+
+def _random_case(seed):
+    """Vertices inside, beyond single planes, past the guard band, behind the eye and NaN,
+    shared between triangles, and a keep mask."""
+    rng = np.random.default_rng(seed)
+    clip = rng.normal(size=(40, 4)) * rng.choice([0.3, 1.0, 12.0], size=(40, 1))
+    clip[:, 3] = rng.choice([1.0, 0.5, -1.0], size=40) * rng.uniform(0.5, 2.0, size=40)
+    clip[rng.random((40, 4)) < 0.02] = np.nan
+    triangles = rng.integers(0, 40, size=(120, 3)).astype(np.intp)
+    return clip, triangles, rng.random(120) < 0.8
+
+
+def test_the_random_frustum_cases_hold_every_status():
+    assert set(_classify_by_corners(*_random_case(0)).tolist()) == {0, 1, 2}
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.integers(0, 2**32 - 1))
+def test_frustum_classification_matches_the_corner_by_corner_rule(seed):
+    from pixelpath.raster import _setup_kernels
+
+    clip, triangles, keep = _random_case(seed)
+    status = np.empty(len(triangles), dtype=np.int8)
+    _setup_kernels.classify_triangles(clip, triangles, keep, status)
+    assert np.array_equal(status, _classify_by_corners(clip, triangles, keep))

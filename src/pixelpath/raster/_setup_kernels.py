@@ -77,6 +77,10 @@ def front_facing_many(normals, points, eye, out):
         out[f] = not faces_away(normals[f], points[f], eye)
 
 
+_ALL_PLANES = 63  # the six bits of _outcode
+_NEEDS_CLIP = 64  # a vertex's classify bit: outside the near, far or guard-band planes
+
+
 @njit(inline="always")
 def _outcode(x, y, z, w):
     """Return bit p set when the vertex is outside FRUSTUM_PLANES[p]."""
@@ -98,22 +102,28 @@ def _outcode(x, y, z, w):
 
 @njit
 def classify_triangles(clip, triangles, keep, status):
-    """Sort each kept triangle (T,) into OUTSIDE, INSIDE or CROSSING the view frustum."""
+    """Sort each kept triangle (T,) into OUTSIDE, INSIDE or CROSSING the view frustum.
+
+    Each vertex is classified once (its outcode, and whether it lies outside the near, far or
+    guard-band planes), then each triangle combines its corners' bytes: a mesh's vertices are
+    shared by about six triangles, and testing the corners triangle by triangle took three
+    times as long for the bunny.
+    """
+    codes = np.empty(clip.shape[0], dtype=np.uint8)
+    for v in range(clip.shape[0]):
+        x, y, z, w = clip[v, 0], clip[v, 1], clip[v, 2], clip[v, 3]
+        code = _outcode(x, y, z, w)
+        band = GUARD_BAND * w
+        if z < -w or z > w or abs(x) > band or abs(y) > band:
+            code |= _NEEDS_CLIP
+        codes[v] = code
     for t in range(triangles.shape[0]):
         status[t] = OUTSIDE
         if not keep[t]:
             continue
-        outside_all = 63
-        needs_clip = False
-        for corner in range(3):
-            v = triangles[t, corner]
-            x, y, z, w = clip[v, 0], clip[v, 1], clip[v, 2], clip[v, 3]
-            outside_all &= _outcode(x, y, z, w)
-            band = GUARD_BAND * w
-            if z < -w or z > w or abs(x) > band or abs(y) > band:
-                needs_clip = True
-        if outside_all == 0:
-            status[t] = CROSSING if needs_clip else INSIDE
+        a, b, c = codes[triangles[t, 0]], codes[triangles[t, 1]], codes[triangles[t, 2]]
+        if a & b & c & _ALL_PLANES == 0:
+            status[t] = CROSSING if (a | b | c) & _NEEDS_CLIP else INSIDE
 
 
 @njit
