@@ -248,7 +248,9 @@ def _clip_to_view(geometry, camera, keep, front, mode, lighting, blends) -> dict
     info[:, 0] = geometry.polygon_object[polygon]
     info[:, 1] = ~front[polygon]
     face_normals = np.take(geometry.polygon_normals, polygon, axis=0)
-    face_normals *= np.where(info[:, 1:], -1.0, 1.0)  # turned to the viewer
+    back = info[:, 1].astype(bool)
+    if back.any():  # culling leaves none: the multiplication's 0.2 ms for the bunny spared
+        face_normals[back] *= -1.0  # turned to the viewer
     named.update(zip(names, columns, strict=True))
     culled = len(keep) - int(np.count_nonzero(keep))
     outside = len(keep) - culled - len(inside) - len(crossing)
