@@ -244,11 +244,11 @@ def _clip_to_view(geometry, camera, keep, front, mode, lighting, blends) -> dict
     triangles = np.concatenate([np.take(geometry.triangles, inside, axis=0), new_triangles])
     source = np.concatenate([inside, new_source])
     polygon = geometry.triangle_polygon[source]
+    back = ~front[polygon]
     info = np.empty((len(polygon), 2), dtype=np.intp)
     info[:, 0] = geometry.polygon_object[polygon]
-    info[:, 1] = ~front[polygon]
+    info[:, 1] = back
     face_normals = np.take(geometry.polygon_normals, polygon, axis=0)
-    back = info[:, 1].astype(bool)
     if back.any():  # culling leaves none: the multiplication's 0.2 ms for the bunny spared
         face_normals[back] *= -1.0  # turned to the viewer
     named.update(zip(names, columns, strict=True))
