@@ -129,10 +129,12 @@ def test_growing_a_buffer_keeps_its_rows():
 
 def _classify_by_corners(clip, triangles, keep):
     """The frustum classification written out per triangle corner, in NumPy."""
+    from pixelpath.raster._setup_kernels import GUARD_BAND
+
     x, y, z, w = (clip[triangles][..., k] for k in range(4))  # (T, 3) each
     planes = [z < -w, z > w, x < -w, x > w, y < -w, y > w]
     dropped = np.any([side.all(axis=1) for side in planes], axis=0)
-    band = 8.0 * w  # raster._setup_kernels.GUARD_BAND
+    band = GUARD_BAND * w
     cut = ((z < -w) | (z > w) | (np.abs(x) > band) | (np.abs(y) > band)).any(axis=1)
     return np.where(~keep | dropped, 0, np.where(cut, 2, 1))
 
