@@ -177,23 +177,23 @@ def build(destination: Path, groups: Iterable[str] = BUILT_GROUPS) -> dict:
     root = cache_root()
     if root is None or numba.config.DISABLE_JIT:
         raise RuntimeError("kernels cannot be compiled into a cache (JIT disabled or no folder)")
-    folder = marker_folder(root)
-    compile_groups(cold_groups(groups, folder), folder)
+    markers = marker_folder(root)
+    compile_groups(cold_groups(groups, markers), markers)
     shutil.rmtree(destination, ignore_errors=True)
     digest = hashlib.sha256()
-    for folder in _source_folders():
-        compiled = kernel_cache_folder(root, folder)
+    for sources in _source_folders():
+        compiled = kernel_cache_folder(root, sources)
         if not compiled.is_dir():
             continue
-        target = destination / folder.relative_to(PACKAGE_DIR)
-        for path, index in _current_indexes(compiled, folder).items():
+        target = destination / sources.relative_to(PACKAGE_DIR)
+        for path, index in _current_indexes(compiled, sources).items():
             target.mkdir(parents=True, exist_ok=True)
             for name in sorted(index.data_files | {path.name}):
                 shutil.copyfile(compiled / name, target / name)
                 digest.update(name.encode() + (target / name).read_bytes())
     manifest = {
         **_compiled_for(),
-        "groups": {group: round(recorded_seconds(group, folder), 3) for group in groups},
+        "groups": {group: round(recorded_seconds(group, markers), 3) for group in groups},
         "id": digest.hexdigest()[:16],
     }
     (destination / MANIFEST).write_text(json.dumps(manifest, indent=1) + "\n")
