@@ -75,8 +75,11 @@ from pixelpath.raster._setup_kernels import (
 )
 from pixelpath.scene._texture_kernels import (
     HAS_COLORS,
+    NEAREST,
     TEXTURE,
     base_color,
+    bilinear_taps,
+    blend_taps,
     footprint_squared,
     mip_level_squared,
     sample_level,
@@ -114,6 +117,8 @@ class PhongBatch(NamedTuple):
     lookup_columns: np.ndarray  # (w,) intp: the pixel column of each lookup
     lookup_textures: np.ndarray  # (w,) intp: the texture each lookup reads
     lookup_levels: np.ndarray  # (w,) intp: the mip level each lookup reads first
+    lookup_taps: np.ndarray  # (4, w) intp: the texels of a base-level lookup (-1: another kind)
+    lookup_fractions: np.ndarray  # (2, w) the base-level lookups' blend fractions (fx, fy)
 
 
 class Surfaces(NamedTuple):
@@ -207,6 +212,8 @@ def _new_batch(width):
         np.empty(width, dtype=np.intp),
         np.empty(width, dtype=np.intp),
         np.empty(width, dtype=np.intp),
+        np.empty((4, width), dtype=np.intp),
+        np.empty((2, width)),
     )
 
 
@@ -282,8 +289,7 @@ def _shade_row(j, x0, y0, ids, keys, surfaces, out, batch):
     half = s.colors.shape[1] // 2  # Gouraud: the columns of the light from the front
     if s.uv.shape[0] > 0 or s.vertex_colors.shape[0] > 0:
         _row_surface_colors(j, x0, ids, s.info, s.setup, s.triangles, s.uv, s.vertex_colors,
-                            s.tables, s.materials, s.coloured, batch.row_colors, batch.lookups,
-                            batch.lookup_columns, batch.lookup_textures, batch.lookup_levels)
+                            s.tables, s.materials, s.coloured, batch.row_colors, batch)
     for i in range(ids.shape[0]):
         t = ids[i]
         if t < 0:
@@ -423,8 +429,7 @@ def texture_at(line, x):
 
 @njit(refcount=False)
 def _row_surface_colors(j, x0, ids, info, setup, triangles, uv, vertex_colors, tables,
-                        materials, coloured, out, lookups, lookup_columns, lookup_textures,
-                        lookup_levels):
+                        materials, coloured, out, batch):
     """Write the surface colour (r, g, b) of row j's pixels that show a coloured object.
 
     One call per row, compiled without reference counting: the lookups' arrays are handed
@@ -441,6 +446,9 @@ def _row_surface_colors(j, x0, ids, info, setup, triangles, uv, vertex_colors, t
     a textured pixel of the bunny than one loop doing it all).
     """
     y = j + 0.5
+    lookups, lookup_columns, lookup_textures = (
+        batch.lookups, batch.lookup_columns, batch.lookup_textures
+    )
     count = np.intp(0)  # not a literal 0: that would compile a second _apply_lookups
     line_triangle = -1
     obj = texture = a = b = c = np.intp(0)
@@ -485,8 +493,7 @@ def _row_surface_colors(j, x0, ids, info, setup, triangles, uv, vertex_colors, t
             lookup_textures[count] = texture
             count += 1
     if count > 0:
-        _apply_lookups(count, tables, lookups, lookup_columns, lookup_textures, lookup_levels,
-                       out)
+        _apply_lookups(count, tables, batch, out)
 
 
 # A kernel of its own, called once per row. Numba inlines the lookups (sample_level) by copying
@@ -495,18 +502,53 @@ def _row_surface_colors(j, x0, ids, info, setup, triangles, uv, vertex_colors, t
 # z-buffer's group took to compile; into this small kernel, 0.8 s. The textured Duck's frame
 # takes the same time.
 @njit(refcount=False)
-def _apply_lookups(count, tables, lookups, lookup_columns, lookup_textures, lookup_levels, out):
-    """Choose the listed lookups' mip levels, then multiply their texels into ``out``'s pixels."""
+def _apply_lookups(count, tables, batch, out):
+    """Make the row's listed texture lookups and multiply their colours into ``out``'s pixels.
+
+    First the lookups' mip levels. Then, in a row whose first lookup is of the commonest kind,
+    one bilinear blend on the base level of the row's texture (a magnified texture, as on most
+    of the Duck's pixels), the lookups of that kind get a loop of their own that finds their
+    texels, with the level's place and size read once instead of at every lookup, and a last
+    loop blends them and makes the other lookups: 18 ns a lookup of that kind instead of 24 on
+    one core, with the same bits. Other rows (a minified texture's, whose lookups blend two
+    levels) make their lookups in one loop, as the extra loop cost them more than it saved.
+    """
+    lookups, levels, textures = batch.lookups, batch.lookup_levels, batch.lookup_textures
+    taps, fractions = batch.lookup_taps, batch.lookup_fractions
     for q in range(count):
-        lookup_levels[q], lookups[2, q] = mip_level_squared(tables, lookup_textures[q],
-                                                            lookups[2, q])
+        levels[q], lookups[2, q] = mip_level_squared(tables, textures[q], lookups[2, q])
+    texture = textures[0]
+    first, wrap = tables.textures[texture, 0], tables.textures[texture, 3]
+    start, width, height = tables.levels[first, 0], tables.levels[first, 1], tables.levels[first, 2]
+    if tables.textures[texture, 2] == NEAREST or levels[0] != 0 or lookups[2, 0] != 0.0:
+        for q in range(count):
+            color = sample_level(tables, textures[q], lookups[0, q], lookups[1, q], levels[q],
+                                 lookups[2, q])
+            _tint(out, batch.lookup_columns[q], color)
+        return
     for q in range(count):
-        tr, tg, tb, _ = sample_level(tables, lookup_textures[q], lookups[0, q], lookups[1, q],
-                                     lookup_levels[q], lookups[2, q])
-        i = lookup_columns[q]
-        out[i, 0] *= tr
-        out[i, 1] *= tg
-        out[i, 2] *= tb
+        if textures[q] == texture and levels[q] == 0 and lookups[2, q] == 0.0:
+            (taps[0, q], taps[1, q], taps[2, q], taps[3, q], fractions[0, q],
+             fractions[1, q]) = bilinear_taps(start, width, height, wrap, lookups[0, q],
+                                              lookups[1, q])
+        else:
+            taps[0, q] = -1  # a texel index is never negative
+    for q in range(count):
+        if taps[0, q] >= 0:
+            color = blend_taps(tables, taps[0, q], taps[1, q], taps[2, q], taps[3, q],
+                               fractions[0, q], fractions[1, q])
+        else:
+            color = sample_level(tables, textures[q], lookups[0, q], lookups[1, q], levels[q],
+                                 lookups[2, q])
+        _tint(out, batch.lookup_columns[q], color)
+
+
+@njit(inline="always")
+def _tint(out, i, color):
+    """Multiply pixel i's surface colour in ``out`` by a texture lookup's (r, g, b, a)."""
+    out[i, 0] *= color[0]
+    out[i, 1] *= color[1]
+    out[i, 2] *= color[2]
 
 
 @njit

@@ -66,13 +66,13 @@ def wrapped(index, size, wrap):
 
 
 @njit(refcount=False)
-def _texel(tables, start, width, col, row):
-    """Linear (r, g, b, a) of texel (col, row) of the level at ``start`` and ``width`` texels wide.
+def _texel(tables, index):
+    """Linear (r, g, b, a) of texel ``index`` of ``tables.texels``.
 
     Every array is indexed in full (``texels[k]``, not a row view): a view per texel would
     cost a reference count update on the shared table, per lookup.
     """
-    word = tables.texels[start + row * width + col]
+    word = tables.texels[index]
     decode = tables.decode
     return (decode[word & 255], decode[(word >> 8) & 255], decode[(word >> 16) & 255],
             (word >> 24) / 255.0)
@@ -109,12 +109,32 @@ def _neighbours(x, size, wrap):
 def _bilinear(tables, level, wrap, u, v):
     """Bilinear blend of the four texels around (u, v) on one level."""
     start, width, height = tables.levels[level, 0], tables.levels[level, 1], tables.levels[level, 2]
+    i00, i10, i01, i11, fx, fy = bilinear_taps(start, width, height, wrap, u, v)
+    return blend_taps(tables, i00, i10, i01, i11, fx, fy)
+
+
+@njit(inline="always")
+def bilinear_taps(start, width, height, wrap, u, v):
+    """The four texels a bilinear lookup of (u, v) blends on a level, and the blend's fractions.
+
+    The level's texels start at ``start`` in ``tables.texels``, ``width`` × ``height`` of them.
+    Returns ``(i00, i10, i01, i11, fx, fy)``: the texels' indices (left and right column, upper
+    and lower row) and how far (u, v) lies past the left column and the upper row, which
+    :func:`blend_taps` turns into the colour.
+    """
     c0, c1, fx = _neighbours(u * width - 0.5, width, wrap)
     r0, r1, fy = _neighbours((1.0 - v) * height - 0.5, height, wrap)
-    a = _texel(tables, start, width, c0, r0)
-    b = _texel(tables, start, width, c1, r0)
-    c = _texel(tables, start, width, c0, r1)
-    d = _texel(tables, start, width, c1, r1)
+    upper, lower = start + r0 * width, start + r1 * width
+    return upper + c0, upper + c1, lower + c0, lower + c1, fx, fy
+
+
+@njit(inline="always")
+def blend_taps(tables, i00, i10, i01, i11, fx, fy):
+    """Linear (r, g, b, a) of the bilinear blend of the texels :func:`bilinear_taps` found."""
+    a = _texel(tables, i00)
+    b = _texel(tables, i10)
+    c = _texel(tables, i01)
+    d = _texel(tables, i11)
     w00, w10, w01, w11 = (1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy
     return (
         w00 * a[0] + w10 * b[0] + w01 * c[0] + w11 * d[0],
@@ -204,7 +224,7 @@ def sample_level(tables, texture, u, v, level, blend):
         width, height = tables.levels[first, 1], tables.levels[first, 2]
         col = _neighbours(u * width, width, wrap)[0]
         row = _neighbours((1.0 - v) * height, height, wrap)[0]
-        return _texel(tables, tables.levels[first, 0], width, col, row)
+        return _texel(tables, tables.levels[first, 0] + row * width + col)
     a = _bilinear(tables, first + level, wrap, u, v)
     if blend == 0.0:
         return a
