@@ -115,7 +115,7 @@ def _bilinear(tables, level, wrap, u, v):
 
 @njit(inline="always")
 def bilinear_taps(start, width, height, wrap, u, v):
-    """The four texels a bilinear lookup of (u, v) blends on a level, and the blend's fractions.
+    """Return the four texels a bilinear lookup of (u, v) blends on a level, and the fractions.
 
     The level's texels start at ``start`` in ``tables.texels``, ``width`` × ``height`` of them.
     Returns ``(i00, i10, i01, i11, fx, fy)``: the texels' indices (left and right column, upper
