@@ -500,7 +500,8 @@ def _row_surface_colors(j, x0, ids, info, setup, triangles, uv, vertex_colors, t
 # their code, and a copy costs more the larger the function receiving it: into the row loop
 # above, which had taken in the other helpers already, it took 3.9 s of the 18 s of CPU the
 # z-buffer's group took to compile; into this small kernel, 0.8 s. The textured Duck's frame
-# takes the same time.
+# takes the same time. One copy only: a second, for rows that skip the base-level loop, made
+# the group take 20 s to compile instead of 17.
 @njit(refcount=False)
 def _apply_lookups(count, tables, batch, out):
     """Make the row's listed texture lookups and multiply their colours into ``out``'s pixels.
@@ -511,7 +512,7 @@ def _apply_lookups(count, tables, batch, out):
     texels, with the level's place and size read once instead of at every lookup, and a last
     loop blends them and makes the other lookups: 18 ns a lookup of that kind instead of 24 on
     one core, with the same bits. Other rows (a minified texture's, whose lookups blend two
-    levels) make their lookups in one loop, as the extra loop cost them more than it saved.
+    levels) skip the base-level loop's work, which cost them more than it saved.
     """
     lookups, levels, textures = batch.lookups, batch.lookup_levels, batch.lookup_textures
     taps, fractions = batch.lookup_taps, batch.lookup_fractions
@@ -520,14 +521,9 @@ def _apply_lookups(count, tables, batch, out):
     texture = textures[0]
     first, wrap = tables.textures[texture, 0], tables.textures[texture, 3]
     start, width, height = tables.levels[first, 0], tables.levels[first, 1], tables.levels[first, 2]
-    if tables.textures[texture, 2] == NEAREST or levels[0] != 0 or lookups[2, 0] != 0.0:
-        for q in range(count):
-            color = sample_level(tables, textures[q], lookups[0, q], lookups[1, q], levels[q],
-                                 lookups[2, q])
-            _tint(out, batch.lookup_columns[q], color)
-        return
+    common = tables.textures[texture, 2] != NEAREST and levels[0] == 0 and lookups[2, 0] == 0.0
     for q in range(count):
-        if textures[q] == texture and levels[q] == 0 and lookups[2, q] == 0.0:
+        if common and textures[q] == texture and levels[q] == 0 and lookups[2, q] == 0.0:
             (taps[0, q], taps[1, q], taps[2, q], taps[3, q], fractions[0, q],
              fractions[1, q]) = bilinear_taps(start, width, height, wrap, lookups[0, q],
                                               lookups[1, q])
