@@ -114,7 +114,7 @@ def primary_hits(y, x0, width, scene, settings, work):
     there is traced again alone, with the alpha test (the packet search makes none). Writes
     ``work.primary`` (t, w1, w2) and ``work.primary_hit`` (kind, index; index MISS when
     nothing is hit) and adds the nodes and triangle tests to ``work.counts``. Arrays are
-    taken out of their tuples once, as in :func:`trace_row`.
+    taken out of their tuples once, as in ``render_rows``.
     """
     spheres, planes, plane_back = scene.spheres, scene.planes, scene.plane_back
     bounds, links, tris = scene.bounds, scene.links, scene.tris
@@ -181,8 +181,8 @@ def primary_shadows(count, scene, settings, work):
     """Test the shadow rays of the first ``count`` primary hits of a row, a packet at a time.
 
     First each hit's object, point and normals (:func:`hit_geometry`) go into
-    ``work.primary_geometry``, where :func:`trace_row` reads them back. Then, light by light,
-    the shadow ray of each hit in front of which the light is (the one :func:`trace_row`
+    ``work.primary_geometry``, where ``render_rows`` reads them back. Then, light by light,
+    the shadow ray of each hit in front of which the light is (the one ``render_rows``
     would make) is tested against the spheres and planes, and the rays that none of them
     blocks are gathered, ``BLOCK`` at a time, and tested against the triangles four by four
     (``any_triangles4``): neighbouring pixels' rays towards one light run through the same

@@ -3,7 +3,7 @@
 Also the numbers that name the fields the tracer's kernels and its Python side
 (:mod:`pixelpath.raytrace.tracer`, :mod:`pixelpath.raytrace.explain`) share: a material row's,
 a row's counters', a logged ray's, a pending ray's and a stored primary hit's. ``new_work``
-allocates one thread's work space (compiled: the row loop calls it).
+allocates one thread's work space, which the thread keeps for all the rows it traces.
 """
 
 from __future__ import annotations
@@ -12,7 +12,6 @@ from typing import NamedTuple
 
 import numpy as np
 
-from pixelpath._jit import njit
 from pixelpath.raytrace._traversal_kernels import BLOCK, LANES, Cutouts
 from pixelpath.scene._texture_kernels import SurfaceTables
 
@@ -124,9 +123,22 @@ class Work(NamedTuple):
     shadow_of: np.ndarray  # (BLOCK, 2) intp the primary ray and the light of each
 
 
-@njit
-def new_work(scene, settings, bvh_depth, log_size, row_width):
-    """Return one thread's scratch space for rows of ``row_width`` pixels and ``log_size`` logs."""
+def new_work(
+    scene: TraceScene, settings: Settings, bvh_depth: int, log_size: int, row_width: int
+) -> Work:
+    """Return one thread's scratch space for rows of ``row_width`` pixels and ``log_size`` logs.
+
+    Plain Python, not a kernel: it runs once per thread and render, and compiled it cost
+    about a second of the ray tracer's compile.
+
+    Examples
+    --------
+    >>> from pixelpath.raytrace._records import new_work
+    >>> from pixelpath.raytrace.tracer import warmup_scene
+    >>> scene, settings, bvh_depth = warmup_scene()
+    >>> new_work(scene, settings, bvh_depth, 0, 4).primary.shape[0] == 4 * settings.samples
+    True
+    """
     lights = scene.lights.shape[0]
     primary_rays = row_width * settings.samples
     return Work(

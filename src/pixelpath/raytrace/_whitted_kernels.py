@@ -34,7 +34,7 @@ weight, and every ray adds its share as it is traced: no recursion, no values pa
 * A ray is traced only when its depth is at most ``max_depth`` and its weight at least
   ``MIN_WEIGHT``.
 
-``trace_row`` can record every ray it traces into a log (``ray_tree`` runs it on one pixel
+``render_rows`` can record every ray it traces into a log (``ray_tree`` runs it on one pixel
 and reads it); the renderer passes an empty log.
 
 This module holds the row loop and the log. The records it works on are
@@ -154,27 +154,39 @@ def _clamp01(value):
     return min(max(value, 0.0), 1.0)
 
 
-# Fields of a traced pixel (trace_row's output).
+# Fields of a traced pixel in render_rows' row of pixels (``out``).
 RED, GREEN, BLUE, PIXEL_DEPTH, PIXEL_OBJECT, PIXEL_NORMAL = 0, 1, 2, 3, 4, 5
 PIXEL_FIELDS = 8
 
 
 @njit(refcount=False)
-def trace_row(y, x0, width, scene, settings, work, out):
-    """Trace pixels x0 .. x0 + width − 1 of row y of the whole image into out (width, 5).
+def render_rows(rows, scene, settings, work, out, x0, y0, rgb, image_depth, object_id, normal,
+                row_counts):
+    """Trace the listed rows of the region whose top-left pixel is (x0, y0) of the image.
 
-    A pixel's fields are r, g, b (the mean of the clamped colours of its samples), depth and
-    object (from the nearest sample that hit something). Each sample's eye ray and its tree
-    are followed with the stack work.rays: a ray adds ``weight × I_local`` as it is traced.
-    The eye rays' nearest hits are found first, for the whole row (:func:`primary_hits`).
+    Writes rgb (h, w, 3) float32, image_depth (h, w) float32 (inf where nothing was hit),
+    object_id (h, w) int32 (-1 there), the unit normal (h, w, 3) float32 seen at the nearest
+    hit (0 there) and each row's counters into row_counts (h, COUNTS). ``work`` is the calling
+    thread's scratch space (:func:`pixelpath.raytrace._records.new_work`) and ``out`` (w,
+    PIXEL_FIELDS) its row of traced pixels, where the last row's values stay in full
+    precision. Serial: the caller runs disjoint lists of rows from several threads (the kernel
+    releases the GIL), each with its own ``work`` and ``out``.
 
-    The loops over pixels, samples and rays, and the local light of a hit, share this one
-    function on purpose: a compiled call passes each array as several machine words, more
+    A pixel's fields are r, g, b (the mean of the clamped colours of its samples), depth,
+    object and normal (from the nearest sample that hit something). Each sample's eye ray and
+    its tree are followed with the stack work.rays: a ray adds ``weight × I_local`` as it is
+    traced. The eye rays' nearest hits are found first, for the whole row
+    (:func:`primary_hits`).
+
+    The loops over rows, pixels, samples and rays, and the local light of a hit, share this
+    one function on purpose: a compiled call passes each array as several machine words, more
     work than a ray that misses needs. So the scene's and the scratch arrays are taken out of
-    their tuples once per row; per secondary ray only the nearest-hit searches are called (a
+    their tuples once per call; per secondary ray only the nearest-hit searches are called (a
     few arrays each, the triangles' only when the ray enters the root box), per packet of eye
     rays the packet's search, per shadow ray the any-hit search, and per hit the normal and
-    Phong kernels. Like the searches, the row kernels count no references
+    Phong kernels. The rows' loop is here too: in a kernel of its own that called this one per
+    row, LLVM optimized and generated this one's code a second time (2.6 s of the ray
+    tracer's compile). Like the searches, the row kernels count no references
     (``njit(refcount=False)``): counted, the scene's arrays had their counts updated atomically
     at each of those calls and inlined helpers, per ray, from every thread.
     """
@@ -216,210 +228,197 @@ def trace_row(y, x0, width, scene, settings, work, out):
     primary_geometry = work.primary_geometry
     # Not the literal False: the searches would be compiled a second time for it.
     cull_none = np.bool_(False)
-    primary_hits(y, x0, width, scene, settings, work)
-    primary_shadows(width * samples, scene, settings, work)
-    for i in range(width):
-        red = green = blue = 0.0
-        nearest = math.inf
-        nearest_object = MISS
-        nearest_normal = (0.0, 0.0, 0.0)
-        for sample in range(samples):
-            ray = i * samples + sample  # its eye ray's place in the row's primary pass
-            if primary_hit[ray, 1] == MISS and log.shape[0] == 0:
-                # An eye ray that hits nothing brings the background: no tree to follow.
-                counts[COUNT_PRIMARY] += 1
-                counts[COUNT_MISSED] += 1
-                red += _clamp01(background[0])
-                green += _clamp01(background[1])
-                blue += _clamp01(background[2])
-                continue
-            top = _push(rays, 0, primary_found[ray, 6], primary_found[ray, 7],
-                        primary_found[ray, 8], primary_found[ray, 3],
-                        primary_found[ray, 4], primary_found[ray, 5], 1.0, 0.0, float(PRIMARY),
-                        -1.0)
-            r = g = b = 0.0
-            first_t = math.inf
-            first_object = MISS
-            first_normal = (0.0, 0.0, 0.0)
-            while top > 0:
-                top -= 1
-                ox, oy, oz = rays[top, 0], rays[top, 1], rays[top, 2]
-                dx, dy, dz = rays[top, 3], rays[top, 4], rays[top, 5]
-                weight, depth, kind = rays[top, 6], rays[top, 7], rays[top, 8]
-                primary = depth == 0.0
-                if primary:  # found for the whole row beforehand
-                    counts[COUNT_PRIMARY] += 1
-                    t, w1, w2 = primary_found[ray, 0], primary_found[ray, 1], primary_found[ray, 2]
-                    hit_kind, index = primary_hit[ray, 0], primary_hit[ray, 1]
-                else:  # secondary rays see both sides of everything, from their origin on
-                    counts[COUNT_REFLECTED if kind == REFLECTED else COUNT_REFRACTED] += 1
-                    t, hit_kind, index = nearest_analytic(
-                        spheres, planes, plane_back, ox, oy, oz, dx, dy, dz, 0.0, math.inf,
-                        cull_none,
-                    )
-                    w1 = w2 = 0.0
-                    if has_triangles and enters_box(bounds, 0, ox, oy, oz, dx, dy, dz, 0.0, t):
-                        if holes:
-                            t_tri, tri, b1, b2, nodes, tests = closest_triangle(
-                                bounds, links, tris, tri_source, tri_back, cull_none, ox, oy, oz,
-                                dx, dy, dz, 0.0, t, stack, stack_t, cutouts,
-                            )
-                        else:
-                            t_tri, tri, b1, b2, nodes, tests = closest_triangle(
-                                bounds, links, tris, tri_source, tri_back, cull_none, ox, oy, oz,
-                                dx, dy, dz, 0.0, t, stack, stack_t,
-                            )
-                        counts[COUNT_NODES] += nodes
-                        counts[COUNT_TESTS] += tests
-                        if tri != MISS:
-                            t, hit_kind, index, w1, w2 = t_tri, TRIANGLE, tri, b1, b2
-                logged = logged_rays[0]
-                logged_rays[0] += 1
-                if logged < log.shape[0]:
-                    _log_ray(log, logged, rays[top, 9], kind, depth, weight, ox, oy, oz, dx, dy,
-                             dz, sample)
-                if index == MISS:
-                    counts[COUNT_MISSED] += 1
-                    r += weight * background[0]
-                    g += weight * background[1]
-                    b += weight * background[2]
-                    if logged < log.shape[0]:
-                        _log_miss(log, logged, background)
-                    continue
-                if primary:
-                    px, py, pz, gx, gy, gz, nx, ny, nz = _stored_geometry(primary_geometry, ray)
-                    obj = int(primary_geometry[ray, GEOMETRY_OBJECT])
-                    entering = primary_geometry[ray, GEOMETRY_ENTERING] != 0.0
-                else:
-                    obj, px, py, pz, gx, gy, gz, nx, ny, nz, entering = hit_geometry(
-                        spheres, sphere_object, planes, plane_object, tris, tri_normals,
-                        tri_flat, tri_object, settings.flat, ox, oy, oz, dx, dy, dz, t, hit_kind,
-                        index, w1, w2,
-                    )
-                # Local light: a light behind the surface (N·L <= 0) contributes nothing and
-                # needs no shadow ray; each other light enters the model scaled by the light
-                # its shadow ray lets through (work.lights holds them).
-                lit_count = 0
-                for light in range(lights.shape[0]):
-                    lx, ly, lz = light_direction(lights, light, px, py, pz)
-                    through = -1.0  # not tested
-                    blocker = MISS
-                    if nx * lx + ny * ly + nz * lz > 0.0:
-                        counts[COUNT_SHADOW] += 1
-                        if primary:  # tested for the whole row beforehand
-                            through = primary_shadow[ray, light, 0]
-                            blocker = int(primary_shadow[ray, light, 1])
-                        else:
-                            through, blocker, sx, sy, sz, lx, ly, lz, t_light = shadow_start(
-                                spheres, sphere_object, planes, plane_object, materials, lights,
-                                light, px, py, pz, gx, gy, gz, lx, ly, lz, settings.epsilon,
-                                has_analytic,
-                            )
-                            if blocker == MISS and has_triangles:  # the any-hit query
-                                if holes:
-                                    fraction, hit, nodes, tests = any_triangle(
-                                        bounds, links, tris, tri_pass, sx, sy, sz, lx, ly, lz,
-                                        0.0, t_light, stack, cutouts,
-                                    )
-                                else:
-                                    fraction, hit, nodes, tests = any_triangle(
-                                        bounds, links, tris, tri_pass, sx, sy, sz, lx, ly, lz,
-                                        0.0, t_light, stack,
-                                    )
-                                counts[COUNT_NODES] += nodes
-                                counts[COUNT_TESTS] += tests
-                                if hit != MISS:
-                                    through, blocker = 0.0, tri_object[hit]
-                                else:
-                                    through *= fraction
-                        if through > 0.0:
-                            for field in range(4):
-                                lit[lit_count, field] = lights[light, field]
-                            for field in range(4, 7):
-                                lit[lit_count, field] = lights[light, field] * through
-                            lit_count += 1
-                    if logged < log.shape[0]:
-                        log_lights[logged, light, 0] = through
-                        log_lights[logged, light, 1] = blocker
-                material = materials[obj]
-                if hit_kind == TRIANGLE and colored(scene.tables, obj):
-                    material = _coloured_material(scene, work.material, obj, index, w1, w2, px,
-                                                  py, pz, nx, ny, nz, dx, dy, dz)
-                shade_point(px, py, pz, nx, ny, nz, ox, oy, oz, 1.0, material, lit[:lit_count],
-                            ambient, settings.blinn, shaded)
-                r += weight * shaded[0]
-                g += weight * shaded[1]
-                b += weight * shaded[2]
-                if primary:
-                    first_t, first_object = t, obj
-                    # The normal the viewer sees: turned against the eye ray.
-                    facing = -1.0 if nx * dx + ny * dy + nz * dz > 0.0 else 1.0
-                    first_normal = (facing * nx, facing * ny, facing * nz)
-                ux, uy, uz = _unit(dx, dy, dz)
-                bounce = depth < settings.max_depth
-                kr, kt, total, fresnel, eta, tx, ty, tz = transmission(
-                    ux, uy, uz, nx, ny, nz, entering, materials[obj, REFLECTIVITY],
-                    materials[obj, TRANSPARENCY], materials[obj, IOR], bounce, settings.fresnel,
-                )
-                if total:
-                    counts[COUNT_TOTAL_REFLECTION] += 1
-                if logged < log.shape[0]:
-                    _log_hit(log, logged, t, obj, hit_kind, index, tri_source, px, py, pz, nx,
-                             ny, nz, gx, gy, gz, entering, shaded, kr, kt, total, fresnel, eta)
-                if not bounce:
-                    continue
-                if kt > 0.0 and weight * kt >= MIN_WEIGHT:
-                    sx, sy, sz = _offset(px, py, pz, gx, gy, gz, tx, ty, tz, settings.epsilon)
-                    top = _push(rays, top, sx, sy, sz, tx, ty, tz, weight * kt, depth + 1.0,
-                                float(REFRACTED), float(logged))
-                if kr > 0.0 and weight * kr >= MIN_WEIGHT:
-                    rx, ry, rz = reflect_direction(ux, uy, uz, nx, ny, nz)
-                    sx, sy, sz = _offset(px, py, pz, gx, gy, gz, rx, ry, rz, settings.epsilon)
-                    top = _push(rays, top, sx, sy, sz, rx, ry, rz, weight * kr, depth + 1.0,
-                                float(REFLECTED), float(logged))
-            red += _clamp01(r)
-            green += _clamp01(g)
-            blue += _clamp01(b)
-            if first_t < nearest:
-                nearest, nearest_object, nearest_normal = first_t, first_object, first_normal
-        scale = 1.0 / samples
-        out[i, RED] = red * scale
-        out[i, GREEN] = green * scale
-        out[i, BLUE] = blue * scale
-        out[i, PIXEL_DEPTH] = nearest
-        out[i, PIXEL_OBJECT] = nearest_object
-        for axis in range(3):
-            out[i, PIXEL_NORMAL + axis] = nearest_normal[axis]
-
-
-@njit
-def render_rows(rows, scene, settings, bvh_depth, x0, y0, rgb, depth, object_id, normal,
-                counts):
-    """Trace the listed rows of the region whose top-left pixel is (x0, y0) of the image.
-
-    Writes rgb (h, w, 3) float32, depth (h, w) float32 (inf where nothing was hit), object_id
-    (h, w) int32 (-1 there), the unit normal (h, w, 3) float32 seen at the nearest hit (0
-    there) and each row's counters into counts (h, COUNTS). Serial: the
-    caller runs disjoint lists of rows from several threads (the kernel releases the GIL).
-    """
     width = rgb.shape[1]
-    out = np.empty((width, PIXEL_FIELDS))
-    work = new_work(scene, settings, bvh_depth, np.intp(0), width)  # no log (not a literal 0)
     for k in range(rows.shape[0]):
         row = rows[k]
+        y = y0 + row
         for c in range(COUNTS):
-            work.counts[c] = 0
-        trace_row(y0 + row, x0, width, scene, settings, work, out)
+            counts[c] = 0
+        primary_hits(y, x0, width, scene, settings, work)
+        primary_shadows(width * samples, scene, settings, work)
+        for i in range(width):
+            red = green = blue = 0.0
+            nearest = math.inf
+            nearest_object = MISS
+            nearest_normal = (0.0, 0.0, 0.0)
+            for sample in range(samples):
+                ray = i * samples + sample  # its eye ray's place in the row's primary pass
+                if primary_hit[ray, 1] == MISS and log.shape[0] == 0:
+                    # An eye ray that hits nothing brings the background: no tree to follow.
+                    counts[COUNT_PRIMARY] += 1
+                    counts[COUNT_MISSED] += 1
+                    red += _clamp01(background[0])
+                    green += _clamp01(background[1])
+                    blue += _clamp01(background[2])
+                    continue
+                top = _push(rays, 0, primary_found[ray, 6], primary_found[ray, 7],
+                            primary_found[ray, 8], primary_found[ray, 3],
+                            primary_found[ray, 4], primary_found[ray, 5], 1.0, 0.0, float(PRIMARY),
+                            -1.0)
+                r = g = b = 0.0
+                first_t = math.inf
+                first_object = MISS
+                first_normal = (0.0, 0.0, 0.0)
+                while top > 0:
+                    top -= 1
+                    ox, oy, oz = rays[top, 0], rays[top, 1], rays[top, 2]
+                    dx, dy, dz = rays[top, 3], rays[top, 4], rays[top, 5]
+                    weight, depth, kind = rays[top, 6], rays[top, 7], rays[top, 8]
+                    primary = depth == 0.0
+                    if primary:  # found for the whole row beforehand
+                        counts[COUNT_PRIMARY] += 1
+                        t = primary_found[ray, 0]
+                        w1, w2 = primary_found[ray, 1], primary_found[ray, 2]
+                        hit_kind, index = primary_hit[ray, 0], primary_hit[ray, 1]
+                    else:  # secondary rays see both sides of everything, from their origin on
+                        counts[COUNT_REFLECTED if kind == REFLECTED else COUNT_REFRACTED] += 1
+                        t, hit_kind, index = nearest_analytic(
+                            spheres, planes, plane_back, ox, oy, oz, dx, dy, dz, 0.0, math.inf,
+                            cull_none,
+                        )
+                        w1 = w2 = 0.0
+                        if has_triangles and enters_box(bounds, 0, ox, oy, oz, dx, dy, dz, 0.0, t):
+                            if holes:
+                                t_tri, tri, b1, b2, nodes, tests = closest_triangle(
+                                    bounds, links, tris, tri_source, tri_back, cull_none, ox, oy,
+                                    oz, dx, dy, dz, 0.0, t, stack, stack_t, cutouts,
+                                )
+                            else:
+                                t_tri, tri, b1, b2, nodes, tests = closest_triangle(
+                                    bounds, links, tris, tri_source, tri_back, cull_none, ox, oy,
+                                    oz, dx, dy, dz, 0.0, t, stack, stack_t,
+                                )
+                            counts[COUNT_NODES] += nodes
+                            counts[COUNT_TESTS] += tests
+                            if tri != MISS:
+                                t, hit_kind, index, w1, w2 = t_tri, TRIANGLE, tri, b1, b2
+                    logged = logged_rays[0]
+                    logged_rays[0] += 1
+                    if logged < log.shape[0]:
+                        _log_ray(log, logged, rays[top, 9], kind, depth, weight, ox, oy, oz, dx, dy,
+                                 dz, sample)
+                    if index == MISS:
+                        counts[COUNT_MISSED] += 1
+                        r += weight * background[0]
+                        g += weight * background[1]
+                        b += weight * background[2]
+                        if logged < log.shape[0]:
+                            _log_miss(log, logged, background)
+                        continue
+                    if primary:
+                        px, py, pz, gx, gy, gz, nx, ny, nz = _stored_geometry(primary_geometry, ray)
+                        obj = int(primary_geometry[ray, GEOMETRY_OBJECT])
+                        entering = primary_geometry[ray, GEOMETRY_ENTERING] != 0.0
+                    else:
+                        obj, px, py, pz, gx, gy, gz, nx, ny, nz, entering = hit_geometry(
+                            spheres, sphere_object, planes, plane_object, tris, tri_normals,
+                            tri_flat, tri_object, settings.flat, ox, oy, oz, dx, dy, dz, t,
+                            hit_kind, index, w1, w2,
+                        )
+                    # Local light: a light behind the surface (N·L <= 0) contributes nothing and
+                    # needs no shadow ray; each other light enters the model scaled by the light
+                    # its shadow ray lets through (work.lights holds them).
+                    lit_count = 0
+                    for light in range(lights.shape[0]):
+                        lx, ly, lz = light_direction(lights, light, px, py, pz)
+                        through = -1.0  # not tested
+                        blocker = MISS
+                        if nx * lx + ny * ly + nz * lz > 0.0:
+                            counts[COUNT_SHADOW] += 1
+                            if primary:  # tested for the whole row beforehand
+                                through = primary_shadow[ray, light, 0]
+                                blocker = int(primary_shadow[ray, light, 1])
+                            else:
+                                through, blocker, sx, sy, sz, lx, ly, lz, t_light = shadow_start(
+                                    spheres, sphere_object, planes, plane_object, materials, lights,
+                                    light, px, py, pz, gx, gy, gz, lx, ly, lz, settings.epsilon,
+                                    has_analytic,
+                                )
+                                if blocker == MISS and has_triangles:  # the any-hit query
+                                    if holes:
+                                        fraction, hit, nodes, tests = any_triangle(
+                                            bounds, links, tris, tri_pass, sx, sy, sz, lx, ly, lz,
+                                            0.0, t_light, stack, cutouts,
+                                        )
+                                    else:
+                                        fraction, hit, nodes, tests = any_triangle(
+                                            bounds, links, tris, tri_pass, sx, sy, sz, lx, ly, lz,
+                                            0.0, t_light, stack,
+                                        )
+                                    counts[COUNT_NODES] += nodes
+                                    counts[COUNT_TESTS] += tests
+                                    if hit != MISS:
+                                        through, blocker = 0.0, tri_object[hit]
+                                    else:
+                                        through *= fraction
+                            if through > 0.0:
+                                for field in range(4):
+                                    lit[lit_count, field] = lights[light, field]
+                                for field in range(4, 7):
+                                    lit[lit_count, field] = lights[light, field] * through
+                                lit_count += 1
+                        if logged < log.shape[0]:
+                            log_lights[logged, light, 0] = through
+                            log_lights[logged, light, 1] = blocker
+                    material = materials[obj]
+                    if hit_kind == TRIANGLE and colored(scene.tables, obj):
+                        material = _coloured_material(scene, work.material, obj, index, w1, w2, px,
+                                                      py, pz, nx, ny, nz, dx, dy, dz)
+                    shade_point(px, py, pz, nx, ny, nz, ox, oy, oz, 1.0, material, lit[:lit_count],
+                                ambient, settings.blinn, shaded)
+                    r += weight * shaded[0]
+                    g += weight * shaded[1]
+                    b += weight * shaded[2]
+                    if primary:
+                        first_t, first_object = t, obj
+                        # The normal the viewer sees: turned against the eye ray.
+                        facing = -1.0 if nx * dx + ny * dy + nz * dz > 0.0 else 1.0
+                        first_normal = (facing * nx, facing * ny, facing * nz)
+                    ux, uy, uz = _unit(dx, dy, dz)
+                    bounce = depth < settings.max_depth
+                    kr, kt, total, fresnel, eta, tx, ty, tz = transmission(
+                        ux, uy, uz, nx, ny, nz, entering, materials[obj, REFLECTIVITY],
+                        materials[obj, TRANSPARENCY], materials[obj, IOR], bounce, settings.fresnel,
+                    )
+                    if total:
+                        counts[COUNT_TOTAL_REFLECTION] += 1
+                    if logged < log.shape[0]:
+                        _log_hit(log, logged, t, obj, hit_kind, index, tri_source, px, py, pz, nx,
+                                 ny, nz, gx, gy, gz, entering, shaded, kr, kt, total, fresnel, eta)
+                    if not bounce:
+                        continue
+                    if kt > 0.0 and weight * kt >= MIN_WEIGHT:
+                        sx, sy, sz = _offset(px, py, pz, gx, gy, gz, tx, ty, tz, settings.epsilon)
+                        top = _push(rays, top, sx, sy, sz, tx, ty, tz, weight * kt, depth + 1.0,
+                                    float(REFRACTED), float(logged))
+                    if kr > 0.0 and weight * kr >= MIN_WEIGHT:
+                        rx, ry, rz = reflect_direction(ux, uy, uz, nx, ny, nz)
+                        sx, sy, sz = _offset(px, py, pz, gx, gy, gz, rx, ry, rz, settings.epsilon)
+                        top = _push(rays, top, sx, sy, sz, rx, ry, rz, weight * kr, depth + 1.0,
+                                    float(REFLECTED), float(logged))
+                red += _clamp01(r)
+                green += _clamp01(g)
+                blue += _clamp01(b)
+                if first_t < nearest:
+                    nearest, nearest_object, nearest_normal = first_t, first_object, first_normal
+            scale = 1.0 / samples
+            out[i, RED] = red * scale
+            out[i, GREEN] = green * scale
+            out[i, BLUE] = blue * scale
+            out[i, PIXEL_DEPTH] = nearest
+            out[i, PIXEL_OBJECT] = nearest_object
+            for axis in range(3):
+                out[i, PIXEL_NORMAL + axis] = nearest_normal[axis]
         for i in range(width):
             rgb[row, i, 0] = out[i, RED]
             rgb[row, i, 1] = out[i, GREEN]
             rgb[row, i, 2] = out[i, BLUE]
-            depth[row, i] = out[i, PIXEL_DEPTH]
+            image_depth[row, i] = out[i, PIXEL_DEPTH]
             object_id[row, i] = int(out[i, PIXEL_OBJECT])
             for axis in range(3):
                 normal[row, i, axis] = out[i, PIXEL_NORMAL + axis]
         for c in range(COUNTS):
-            counts[row, c] = work.counts[c]
+            row_counts[row, c] = counts[c]
 
 
 def warmup() -> None:
@@ -427,10 +426,12 @@ def warmup() -> None:
     from pixelpath.raytrace.tracer import warmup_scene
 
     scene, settings, bvh_depth = warmup_scene()
+    work = new_work(scene, settings, bvh_depth, 0, 1)
     rgb = np.empty((1, 1, 3), dtype=np.float32)
     depth = np.empty((1, 1), dtype=np.float32)
     ids = np.empty((1, 1), dtype=np.int32)
     counts = np.empty((1, COUNTS), dtype=np.int64)
     with slab_nan_allowed():
-        render_rows(np.zeros(1, dtype=np.intp), scene, settings, bvh_depth, 0, 0, rgb, depth,
-                    ids, np.empty((1, 1, 3), dtype=np.float32), counts)
+        render_rows(np.zeros(1, dtype=np.intp), scene, settings, work,
+                    np.empty((1, PIXEL_FIELDS)), 0, 0, rgb, depth, ids,
+                    np.empty((1, 1, 3), dtype=np.float32), counts)

@@ -37,6 +37,7 @@ target distance and the bounded objects: far above the rounding error of a hit p
 from __future__ import annotations
 
 import dataclasses
+import threading
 from typing import Any
 
 import numpy as np
@@ -383,7 +384,7 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     from pixelpath.raster import _pool
     from pixelpath.raytrace import _whitted_kernels as wk
     from pixelpath.raytrace._hit_kernels import slab_nan_allowed
-    from pixelpath.raytrace._records import COUNTS
+    from pixelpath.raytrace._records import COUNTS, new_work
 
     world, settings, bvh_depth, triangles = pack(scene, view.camera, options)
     options.progress(1)
@@ -403,10 +404,16 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
                             -(-view.height // ROWS_PER_BLOCK))
     rows = np.concatenate([blocks[k] for k in spread(len(blocks))])
 
+    scratch: dict[int, tuple] = {}  # each thread's work space, kept for all its runs
+
     def trace(run: np.ndarray) -> None:
+        thread = threading.get_ident()
+        if thread not in scratch:
+            scratch[thread] = (new_work(world, settings, bvh_depth, 0, view.width),
+                               np.empty((view.width, wk.PIXEL_FIELDS)))
         with slab_nan_allowed():
-            wk.render_rows(run, world, settings, bvh_depth, view.x0, view.y0, rgb, depth,
-                           object_id, normal, counts)
+            wk.render_rows(run, world, settings, *scratch[thread], view.x0, view.y0, rgb,
+                           depth, object_id, normal, counts)
 
     runs = min(len(rows), TRACE_SLICES * RUNS_PER_STEP)
     finished = 0
