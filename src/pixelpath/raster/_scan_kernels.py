@@ -162,7 +162,8 @@ def rasterize_bands(bands, setup, rows, offsets, items, band_rows, x0, y0, inv_d
         )
 
 
-@njit
+# Inlined by Numba into its one caller, the loop over bands (see pixelpath._jit).
+@njit(inline="always")
 def _paint_band(setup, rows, offsets, items, order, band, band_rows, x0, y0, inv_depth,
                 triangle_id, cutouts):
     """Clear one band, then draw ``order``'s triangles over each other, later ones on top.

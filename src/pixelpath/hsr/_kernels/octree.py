@@ -371,7 +371,8 @@ def traverse(tree, rects, outside, eye, scan, bands, x0, y0, inv_depth, triangle
                        triangle_id, decided, stamp, stats[bands[k]], outcomes[bands[k]])
 
 
-@njit
+# Inlined by Numba into its one caller, the loop over bands (see pixelpath._jit).
+@njit(inline="always")
 def _traverse_band(tree, rects, outside, eye, scan, band, x0, y0, inv_depth, triangle_id,
                    decided, stamp, stats, outcome):
     height, width = inv_depth.shape

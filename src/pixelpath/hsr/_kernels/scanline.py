@@ -78,7 +78,8 @@ def scan_bands(bands, setup, rows, offsets, items, band_rows, x0, y0, inv_depth,
                    inv_depth, triangle_id, counts, cutouts)
 
 
-@njit
+# Inlined by Numba into its one caller, the loop over bands (see pixelpath._jit).
+@njit(inline="always")
 def _scan_band(setup, rows, band_items, first_row, stop_row, x0, y0, inv_depth, triangle_id,
                counts, cutouts):
     """Scan rows [first_row, stop_row) with the band's triangles ``band_items``.

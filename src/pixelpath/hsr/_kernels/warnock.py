@@ -96,7 +96,7 @@ def classify(record, box, area):
     return SURROUNDING if full else DISJOINT
 
 
-@njit
+@njit(refcount=False)
 def decide_level(areas, offsets, candidates, setup, boxes, x0, y0, inv_depth, triangle_id,
                  cutouts, kept, decisions, first, stop):
     """Decide areas first..stop-1 of one level, or mark them for subdivision.
@@ -114,7 +114,8 @@ def decide_level(areas, offsets, candidates, setup, boxes, x0, y0, inv_depth, tr
                                     boxes, x0, y0, inv_depth, triangle_id, kept, cutouts)
 
 
-@njit(refcount=False)
+# Inlined by Numba into its one caller, the loop over bands (see pixelpath._jit).
+@njit(inline="always")
 def _decide_area(area, lo, hi, candidates, setup, boxes, x0, y0, inv_depth, triangle_id, kept,
                  cutouts):
     """Classify an area's candidates and apply the first rule that decides it.
