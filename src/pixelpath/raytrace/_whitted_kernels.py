@@ -185,10 +185,11 @@ def render_rows(rows, scene, settings, work, out, x0, y0, rgb, image_depth, obje
     few arrays each, the triangles' only when the ray enters the root box), per packet of eye
     rays the packet's search, per shadow ray the any-hit search, and per hit the normal and
     Phong kernels. The rows' loop is here too: in a kernel of its own that called this one per
-    row, LLVM optimized and generated this one's code a second time (2.6 s of the ray
-    tracer's compile). Like the searches, the row kernels count no references
-    (``njit(refcount=False)``): counted, the scene's arrays had their counts updated atomically
-    at each of those calls and inlined helpers, per ray, from every thread.
+    row, LLVM optimized and generated this one's code a second time (about 3 s of LLVM's
+    time in the ray tracer's compile, ``docs/performance.md``). Like the searches, the row
+    kernel counts no references (``njit(refcount=False)``): counted, the scene's arrays had
+    their counts updated atomically at each of those calls and inlined helpers, per ray, from
+    every thread.
     """
     spheres = scene.spheres
     planes = scene.planes
