@@ -114,7 +114,7 @@ def decide_level(areas, offsets, candidates, setup, boxes, x0, y0, inv_depth, tr
                                     boxes, x0, y0, inv_depth, triangle_id, kept, cutouts)
 
 
-# Inlined by Numba into its one caller, the loop over bands (see pixelpath._jit).
+# Inlined by Numba into its one caller, the loop over a level's areas (see pixelpath._jit).
 @njit(inline="always")
 def _decide_area(area, lo, hi, candidates, setup, boxes, x0, y0, inv_depth, triangle_id, kept,
                  cutouts):
