@@ -230,6 +230,35 @@ def test_samples_are_identical_across_thread_counts():
     assert np.array_equal(one.depth, many.depth)
 
 
+def test_a_threads_kept_work_space_carries_nothing_from_one_render_to_the_next():
+    scene = _busy_scene()
+    first = pp.render(scene, "raytrace", samples=4)
+    # in between: the same sizes (the work space kept), then smaller ones (made again), which
+    # the first scene's second render must not reuse
+    pp.render(_busy_scene(width=48, height=20), "raytrace", samples=4)
+    pp.render(scene, "raytrace", samples=1, max_depth=0)
+    again = pp.render(scene, "raytrace", samples=4)
+    assert np.array_equal(np.asarray(first), np.asarray(again))
+    assert np.array_equal(first.depth, again.depth)
+    assert np.array_equal(first.object_id, again.object_id)
+    assert np.array_equal(first.normal, again.normal)
+
+
+def test_a_threads_kept_work_space_has_the_sizes_of_the_render_at_hand():
+    from pixelpath.contract import RenderOptions
+    from pixelpath.raytrace._records import new_work
+    from pixelpath.raytrace.tracer import _thread_work, pack
+
+    scene = _busy_scene()
+    for samples, max_depth, width in [(4, 5, 48), (1, 0, 48), (4, 5, 48), (4, 5, 20)]:
+        options = RenderOptions(samples=samples, max_depth=max_depth)
+        world, settings, bvh_depth, _ = pack(scene, scene.camera, options)
+        work, out = _thread_work(world, settings, bvh_depth, width)
+        fresh = new_work(world, settings, bvh_depth, 0, width)
+        assert [a.shape for a in work] == [a.shape for a in fresh]
+        assert out.shape[0] == width
+
+
 def test_supersampling_is_seeded_and_smooths_edges():
     scene = _busy_scene()
     first = np.asarray(pp.render(scene, "raytrace", samples=4))

@@ -128,8 +128,9 @@ def new_work(
 ) -> Work:
     """Return one thread's scratch space for rows of ``row_width`` pixels and ``log_size`` logs.
 
-    Plain Python, not a kernel: it runs once per thread and render, and compiled it cost
-    about a second of the ray tracer's compile.
+    Plain Python, not a kernel: a thread makes it once and keeps it while the sizes it
+    depends on stay the same (``pixelpath.raytrace.tracer``), and compiled it cost about a
+    second of the ray tracer's compile.
 
     Examples
     --------

@@ -384,7 +384,7 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     from pixelpath.raster import _pool
     from pixelpath.raytrace import _whitted_kernels as wk
     from pixelpath.raytrace._hit_kernels import slab_nan_allowed
-    from pixelpath.raytrace._records import COUNTS, new_work
+    from pixelpath.raytrace._records import COUNTS
 
     world, settings, bvh_depth, triangles = pack(scene, view.camera, options)
     options.progress(1)
@@ -404,16 +404,11 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
                             -(-view.height // ROWS_PER_BLOCK))
     rows = np.concatenate([blocks[k] for k in spread(len(blocks))])
 
-    scratch: dict[int, tuple] = {}  # each thread's work space, kept for all its runs
-
     def trace(run: np.ndarray) -> None:
-        thread = threading.get_ident()
-        if thread not in scratch:
-            scratch[thread] = (new_work(world, settings, bvh_depth, 0, view.width),
-                               np.empty((view.width, wk.PIXEL_FIELDS)))
+        work, out = _thread_work(world, settings, bvh_depth, view.width)
         with slab_nan_allowed():
-            wk.render_rows(run, world, settings, *scratch[thread], view.x0, view.y0, rgb,
-                           depth, object_id, normal, counts)
+            wk.render_rows(run, world, settings, work, out, view.x0, view.y0, rgb, depth,
+                           object_id, normal, counts)
 
     runs = min(len(rows), TRACE_SLICES * RUNS_PER_STEP)
     finished = 0
@@ -480,6 +475,28 @@ def _report(stats: dict[str, int], triangles: SceneTriangles, settings) -> Any:
             "weighing less than 1/4096 are not traced",
         ),
     )
+
+
+_SCRATCH = threading.local()  # each thread's work space, kept from run to run and render to render
+
+
+def _thread_work(world, settings, bvh_depth: int, width: int) -> tuple:
+    """Return the calling thread's (work, out) for ``render_rows`` on rows ``width`` wide.
+
+    Made once per thread (:func:`pixelpath.raytrace._records.new_work` and a row of traced
+    pixels), as :func:`pixelpath.hsr.pipeline.band_buffers` keeps a thread's band buffers, and
+    made again only when a render needs other sizes: the scene's lights, the samples per pixel,
+    the ray depth, the tree's depth or the row's width.
+    """
+    from pixelpath.raytrace import _whitted_kernels as wk
+    from pixelpath.raytrace._records import new_work
+
+    sizes = (world.lights.shape[0], settings.samples, settings.max_depth, bvh_depth, width)
+    if getattr(_SCRATCH, "sizes", None) != sizes:
+        _SCRATCH.work = new_work(world, settings, bvh_depth, 0, width)
+        _SCRATCH.out = np.empty((width, wk.PIXEL_FIELDS))
+        _SCRATCH.sizes = sizes
+    return _SCRATCH.work, _SCRATCH.out
 
 
 def warmup_scene():
