@@ -335,16 +335,24 @@ def mirrored(directions, out):
         out[k] = reflect_direction(directions[k, 0], directions[k, 1], directions[k, 2],
                                    0.0, 0.0, 1.0)
 
+def twice(x):
+    return 2.0 * x
+
 kernel = njit(refcount=False, cache=False)(mirrored)
 directions = np.array([[1.0, 0.0, -1.0], [0.0, 2.0, -3.0]])
 out = np.empty((2, 3))
 kernel(directions, out)
 ir = kernel.inspect_llvm(kernel.signatures[0])
+forced = njit(refcount=False, forceinline=True, cache=False)(twice)
+forced(1.0)
+forced_ir = forced.inspect_llvm(forced.signatures[0])
+attributes = re.findall(r"attributes #\\d+ = [{]([^}]*)[}]", forced_ir)
 print(json.dumps({
     "out": out.tolist(),
     "calls": len(re.findall(r"call [^\\n]*reflect_direction", ir)),
     "plain": reflect_direction.targetoptions.get("inline", "never"),
-    "numba_inlined": triangle_t.targetoptions.get("inline"),
+    "forced": triangle_t.targetoptions.get("forceinline", False),
+    "always_inline": any("alwaysinline" in group for group in attributes),
 }))
 """
 
@@ -352,9 +360,12 @@ print(json.dumps({
 def test_plain_helpers_are_inlined_by_llvm_into_their_callers():
     # pixelpath._jit's rule: a small helper compiled as a function of its own costs no call in
     # the kernels that use it, as LLVM inlines it; were that to stop (another Numba or LLVM),
-    # the ray tracer's plain helpers would become calls per ray.
+    # the ray tracer's plain helpers would become calls per ray. The helpers that LLVM would
+    # leave calls in the traversal loops (the triangle test) are marked for LLVM to inline
+    # wherever they are called: Numba's forceinline must reach LLVM as alwaysinline.
     result = run_python(INLINED, **JIT_ON)
     assert result["out"] == [[1.0, 0.0, 1.0], [0.0, 2.0, 3.0]]
     assert result["plain"] == "never"  # compiled on its own, not inlined by Numba
-    assert result["numba_inlined"] == "always"  # as the helpers LLVM leaves as calls are
+    assert result["forced"] is True
+    assert result["always_inline"] is True
     assert result["calls"] == 0

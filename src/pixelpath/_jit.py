@@ -22,11 +22,18 @@ The rules live here, once:
   as functions of their own (``njit(refcount=False)``), which LLVM inlines into their callers,
   rather than with ``njit(inline="always")``, which inlines them in Numba's own IR and so types
   them afresh at every call site, in Python: the ray tracer's compile went from 43 s to 32 s
-  of CPU that way, with the same pixels and speed. ``inline="always"`` stays where LLVM
-  declines to inline (a helper whose call stays a call in the compiled kernel, found in its
-  LLVM IR: the triangle and sphere tests, for example) and where a benchmark showed the
-  LLVM-inlined code slower; a comment says which. The other kernels' helpers stay inlined by
-  Numba: converting them saved little or no compile time (``docs/performance.md``).
+  of CPU that way, with the same pixels and speed.
+* Where LLVM would leave such a helper a call, and the call costs speed (the triangle and
+  sphere tests in the traversal loops, the texture lookups in the shading pass), the helper
+  is still compiled once, as a function of its own, and marked for LLVM to inline into every
+  caller (``njit(refcount=False, forceinline=True)``, Numba's ``forceinline``: LLVM's
+  ``alwaysinline``). Copied by Numba instead (``inline="always"``), it was typed again at
+  each call site: the triangle test six times in the ray tracer's kernels, the bilinear
+  lookup twice in every shading pass. Numba hands ``forceinline`` on to the callees it
+  compiles for the first time inside such a helper, which LLVM then inlines too.
+  ``inline="always"`` stays where a benchmark showed the LLVM-inlined code slower, or where
+  a helper has one call site; a comment says which. The other kernels' helpers stay inlined
+  by Numba: converting them saved little or no compile time (``docs/performance.md``).
 * A kernel that only loops over bands (or rows, or areas) and calls one big kernel for each
   is not a kernel of its own: Numba links each callee's compiled code into its caller, and
   LLVM optimizes and generates all of it again there, so a thin loop around a big kernel

@@ -360,7 +360,8 @@ def _store_normal(normal, i, normals, a, b, c, b0, b1, b2, flipped):
     normal[i, 2] = nz * scale
 
 
-@njit(inline="always")
+# Compiled once and inlined by LLVM into its three callers (see pixelpath._jit).
+@njit(refcount=False, forceinline=True)
 def _line_weights(setup, t, y):
     """Return the perspective weights' numerators ``t_k = s_k / w_k`` of triangle t on row y.
 
@@ -387,7 +388,8 @@ def _weights_at(numerators, x):
     return t0 * inv, t1 * inv, t2 * inv
 
 
-@njit(inline="always")
+# Compiled once and inlined by LLVM into its callers (see pixelpath._jit).
+@njit(refcount=False, forceinline=True)
 def texture_line(setup, t, y, uv, a, b, c):
     """Texture coordinates of set-up triangle t (vertices a, b, c) along scan line y.
 
@@ -496,12 +498,13 @@ def _row_surface_colors(j, x0, ids, info, setup, triangles, uv, vertex_colors, t
         _apply_lookups(count, tables, batch, out)
 
 
-# A kernel of its own, called once per row. Numba inlines the lookups (sample_level) by copying
-# their code, and a copy costs more the larger the function receiving it: into the row loop
-# above, which had taken in the other helpers already, it took 3.9 s of the 18 s of CPU the
-# z-buffer's group took to compile; into this small kernel, 0.8 s. The textured Duck's frame
-# takes the same time. One copy only: a second, for rows that skip the base-level loop, made
-# the group take 20 s to compile instead of 17.
+# A kernel of its own, called once per row. When Numba still copied the lookups (sample_level)
+# into their callers, a copy cost more the larger the function receiving it: into the row loop
+# above, which had taken in the other helpers already, 3.9 s of the 18 s of CPU the z-buffer's
+# group took to compile; into this small kernel, 0.8 s (the lookups are now compiled once and
+# inlined by LLVM, see pixelpath._jit). The textured Duck's frame takes the same time. One
+# general lookup only: a second, for rows that skip the base-level loop, made the group take
+# 20 s to compile instead of 17.
 @njit(refcount=False)
 def _apply_lookups(count, tables, batch, out):
     """Make the row's listed texture lookups and multiply their colours into ``out``'s pixels.

@@ -41,8 +41,8 @@ SURFACE_TOLERANCE = 4.0 * EPS
 BOX_SLACK = 2.0 * (3.0 * EPS / (1.0 - 3.0 * EPS))
 
 
-# Inlined by Numba: as a function of its own LLVM leaves it a call (see pixelpath._jit).
-@njit(inline="always")
+# Inlined by LLVM into its three callers (see pixelpath._jit), which left it a call otherwise.
+@njit(refcount=False, forceinline=True)
 def sphere_roots(ox, oy, oz, dx, dy, dz, cx, cy, cz, radius):
     """Return the roots t0 <= t1 of the ray-sphere quadratic, (inf, inf) when it misses."""
     fx = ox - cx
@@ -132,9 +132,9 @@ def shear_setup(ox, oy, oz, dx, dy, dz):
     return kx, ky, kz, o[kx], o[ky], o[kz], d[kx] * inv, d[ky] * inv, inv
 
 
-# Inlined by Numba: as a function of its own LLVM leaves it a call in the traversal loops,
-# which then took 10-14 % longer to cast the same rays (see pixelpath._jit).
-@njit(inline="always")
+# Inlined by LLVM into its six callers (see pixelpath._jit): left a call, the traversal loops
+# took 10-14 % longer to cast the same rays.
+@njit(refcount=False, forceinline=True)
 def triangle_t(tris, i, kx, ky, kz, okx, oky, okz, sx, sy, sz):
     """Return (t, w1, w2) of the ray with triangle i of tris (T, 9); t = inf on a miss.
 

@@ -78,8 +78,10 @@ def _texel(tables, index):
             (word >> 24) / 255.0)
 
 
-# Inlined by Numba: as a function of its own LLVM leaves it a call (see pixelpath._jit).
-@njit(inline="always")
+# The lookups' helpers are inlined by LLVM into every caller (see pixelpath._jit): left
+# calls, they cost a textured frame speed; copied by Numba, they were typed again in every
+# shading pass and alpha test.
+@njit(refcount=False, forceinline=True)
 def _neighbours(x, size, wrap):
     """Return the texels (i0, i1) on either side of texel coordinate x, and x's fraction past i0.
 
@@ -105,7 +107,7 @@ def _neighbours(x, size, wrap):
     return wrapped(i, size, wrap), wrapped(i + 1, size, wrap), fraction
 
 
-@njit(inline="always")
+@njit(refcount=False, forceinline=True)
 def _bilinear(tables, level, wrap, u, v):
     """Bilinear blend of the four texels around (u, v) on one level."""
     start, width, height = tables.levels[level, 0], tables.levels[level, 1], tables.levels[level, 2]
@@ -113,7 +115,7 @@ def _bilinear(tables, level, wrap, u, v):
     return blend_taps(tables, i00, i10, i01, i11, fx, fy)
 
 
-@njit(inline="always")
+@njit(refcount=False, forceinline=True)
 def bilinear_taps(start, width, height, wrap, u, v):
     """Return the four texels a bilinear lookup of (u, v) blends on a level, and the fractions.
 
@@ -128,7 +130,7 @@ def bilinear_taps(start, width, height, wrap, u, v):
     return upper + c0, upper + c1, lower + c0, lower + c1, fx, fy
 
 
-@njit(inline="always")
+@njit(refcount=False, forceinline=True)
 def blend_taps(tables, i00, i10, i01, i11, fx, fy):
     """Linear (r, g, b, a) of the bilinear blend of the texels :func:`bilinear_taps` found."""
     a = _texel(tables, i00)
@@ -195,13 +197,12 @@ def mip_level_squared(tables, texture, squared):
     return mip_level(tables, texture, math.sqrt(squared))
 
 
-# A kernel of its own, not inlined at Numba's level into its callers (the ray tracer's
-# surface colour, every alpha test): typed afresh into each of them with the lookups it
-# inlines, it made the z-buffer's kernels take 35 s of CPU to compile instead of 31 and the
-# ray tracer's 70 s instead of 48 (one caller, the alpha test, 13 s alone). A textured hit of
-# the ray tracer pays a call for it (2-3 % of a textured frame). The rasterizer's row loop,
-# where a call per pixel cost half a textured frame, inlines the lookups themselves
-# (sample_level, mip_level): as kernels of their own they stayed calls there. The
+# A kernel of its own, which LLVM may leave a call in its callers (the ray tracer's surface
+# colour, every alpha test): inlined into each, with the lookups it inlines, it made the
+# z-buffer's kernels take 35 s of CPU to compile instead of 31 and the ray tracer's 70 s
+# instead of 48 (one caller, the alpha test, 13 s alone). A textured hit of the ray tracer pays
+# a call for it (2-3 % of a textured frame). The rasterizer's lookups, where a call per pixel
+# cost half a textured frame, call sample_level and mip_level, which are inlined. The
 # lookups allocate nothing and only read the tables they are given: compiled without reference
 # counting, which would update the shared tables' counts atomically per pixel.
 @njit(refcount=False)
@@ -216,7 +217,7 @@ def sample(tables, texture, u, v, footprint):
     return sample_level(tables, texture, u, v, level, blend)
 
 
-@njit(inline="always")
+@njit(refcount=False, forceinline=True)
 def sample_level(tables, texture, u, v, level, blend):
     """:func:`sample` once :func:`mip_level` has chosen the ``level`` and ``blend``."""
     first, wrap = tables.textures[texture, 0], tables.textures[texture, 3]
@@ -244,7 +245,7 @@ def colored(tables, obj):
     return tables.objects[obj, TEXTURE] >= 0 or tables.objects[obj, HAS_COLORS] != 0
 
 
-@njit(inline="always")
+@njit(refcount=False, forceinline=True)
 def base_color(tables, materials, obj, colors, a, b, c, w0, w1, w2):
     """:func:`surface_color` before the texture: the material's colour × the vertex colours.
 
