@@ -31,9 +31,11 @@ The rules live here, once:
   each call site: the triangle test six times in the ray tracer's kernels, the bilinear
   lookup twice in every shading pass. Numba hands ``forceinline`` on to the callees it
   compiles for the first time inside such a helper, which LLVM then inlines too.
-  ``inline="always"`` stays where a benchmark showed the LLVM-inlined code slower, or where
-  a helper has one call site; a comment says which. The other kernels' helpers stay inlined
-  by Numba: converting them saved little or no compile time (``docs/performance.md``).
+  ``inline="always"`` stays for helpers with one call site, for small ones whose conversion
+  saved no compile time (the ray tracer's ``_unit`` and ``_offset``), and where a benchmark
+  showed LLVM's inlined code slower (the BVH build's helpers). The other kernels' helpers stay
+  inlined by Numba: converting them saved little or no compile time
+  (``docs/performance.md``).
 * A kernel that only loops over bands (or rows, or areas) and calls one big kernel for each
   is not a kernel of its own: Numba links each callee's compiled code into its caller, and
   LLVM optimizes and generates all of it again there, so a thin loop around a big kernel

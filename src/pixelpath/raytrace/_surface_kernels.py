@@ -20,9 +20,10 @@ from pixelpath.raytrace._records import PLANE, SPHERE, TRANSPARENCY
 from pixelpath.raytrace._traversal_kernels import MISS
 from pixelpath.scene._texture_kernels import surface_color
 
-# These helpers are inlined into their callers, by LLVM where they have several (forceinline)
-# and by Numba otherwise (see pixelpath._jit): as functions of their own that LLVM was free to
-# leave calls, the showcase's ray-traced frame took 7-14 % longer.
+# These helpers are inlined into their callers (see pixelpath._jit): by LLVM (forceinline) the
+# larger ones called from several places, by Numba the others, whose conversion saved no
+# compile time. As functions of their own that LLVM was free to leave calls, the showcase's
+# ray-traced frame took 7-14 % longer.
 
 
 @njit(refcount=False, forceinline=True)

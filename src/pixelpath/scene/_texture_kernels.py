@@ -78,9 +78,10 @@ def _texel(tables, index):
             (word >> 24) / 255.0)
 
 
-# The lookups' helpers are inlined by LLVM into every caller (see pixelpath._jit): left
-# calls, they cost a textured frame speed; copied by Numba, they were typed again in every
-# shading pass and alpha test.
+# This helper, the bilinear lookup's below, sample_level and base_color are compiled once and
+# inlined by LLVM into every caller (forceinline, see pixelpath._jit): left calls, they cost
+# a textured frame speed; copied by Numba, they were typed again in every shading pass and
+# alpha test.
 @njit(refcount=False, forceinline=True)
 def _neighbours(x, size, wrap):
     """Return the texels (i0, i1) on either side of texel coordinate x, and x's fraction past i0.
@@ -197,13 +198,13 @@ def mip_level_squared(tables, texture, squared):
     return mip_level(tables, texture, math.sqrt(squared))
 
 
-# A kernel of its own, which LLVM may leave a call in its callers (the ray tracer's surface
-# colour, every alpha test): inlined into each, with the lookups it inlines, it made the
-# z-buffer's kernels take 35 s of CPU to compile instead of 31 and the ray tracer's 70 s
-# instead of 48 (one caller, the alpha test, 13 s alone). A textured hit of the ray tracer pays
-# a call for it (2-3 % of a textured frame). The rasterizer's lookups, where a call per pixel
-# cost half a textured frame, call sample_level and mip_level, which are inlined. The
-# lookups allocate nothing and only read the tables they are given: compiled without reference
+# A kernel of its own, not inlined by Numba into its callers (the ray tracer's surface colour,
+# every alpha test): copied into each, with the lookups it inlines, it made the z-buffer's
+# kernels take 35 s of CPU to compile instead of 31 and the ray tracer's 70 s instead of 48
+# (one caller, the alpha test, 13 s alone). A textured hit of the ray tracer pays a call for it
+# (2-3 % of a textured frame). The rasterizer's lookups, where a call per pixel cost half a
+# textured frame, use sample_level and mip_level, which are inlined into them. The lookups
+# allocate nothing and only read the tables they are given: compiled without reference
 # counting, which would update the shared tables' counts atomically per pixel.
 @njit(refcount=False)
 def sample(tables, texture, u, v, footprint):
