@@ -422,17 +422,25 @@ def render_rows(rows, scene, settings, work, out, x0, y0, rgb, image_depth, obje
             row_counts[row, c] = counts[c]
 
 
+def trace_pixel(x: int, y: int, scene, settings, work) -> np.ndarray:
+    """Trace pixel (x, y) alone with :func:`render_rows`; return its fields in full precision.
+
+    The (PIXEL_FIELDS,) row ``render_rows`` leaves in its ``out``, before the image's float32
+    buffers (here one pixel each, thrown away) round it; ``work`` is a scratch space for rows
+    one pixel wide, whose log records the pixel's rays when it has room.
+    """
+    out = np.empty((1, PIXEL_FIELDS))
+    with slab_nan_allowed():
+        render_rows(np.zeros(1, dtype=np.intp), scene, settings, work, out, x, y,
+                    np.empty((1, 1, 3), dtype=np.float32), np.empty((1, 1), dtype=np.float32),
+                    np.empty((1, 1), dtype=np.int32), np.empty((1, 1, 3), dtype=np.float32),
+                    np.empty((1, COUNTS), dtype=np.int64))
+    return out[0]
+
+
 def warmup() -> None:
     """Compile the tracer on a one-pixel scene holding a sphere, a plane and a triangle."""
     from pixelpath.raytrace.tracer import warmup_scene
 
     scene, settings, bvh_depth = warmup_scene()
-    work = new_work(scene, settings, bvh_depth, 0, 1)
-    rgb = np.empty((1, 1, 3), dtype=np.float32)
-    depth = np.empty((1, 1), dtype=np.float32)
-    ids = np.empty((1, 1), dtype=np.int32)
-    counts = np.empty((1, COUNTS), dtype=np.int64)
-    with slab_nan_allowed():
-        render_rows(np.zeros(1, dtype=np.intp), scene, settings, work,
-                    np.empty((1, PIXEL_FIELDS)), 0, 0, rgb, depth, ids,
-                    np.empty((1, 1, 3), dtype=np.float32), counts)
+    trace_pixel(0, 0, scene, settings, new_work(scene, settings, bvh_depth, 0, 1))

@@ -280,8 +280,7 @@ def ray_tree(
     from pixelpath._validate import choice, int_in
     from pixelpath.contract import RenderOptions
     from pixelpath.raytrace import _whitted_kernels as wk
-    from pixelpath.raytrace._hit_kernels import slab_nan_allowed
-    from pixelpath.raytrace._records import COUNTS, new_work
+    from pixelpath.raytrace._records import new_work
     from pixelpath.raytrace.tracer import pack
 
     if not isinstance(scene, Scene):
@@ -299,13 +298,8 @@ def ray_tree(
     world, settings, bvh_depth, _ = pack(scene, scene.camera, options)
     bound = options.samples * (2 ** min(options.max_depth + 1, 20) - 1)
     work = new_work(world, settings, bvh_depth, min(bound, LOG_LIMIT), 1)
-    out = np.empty((1, wk.PIXEL_FIELDS))  # the pixel in full precision
-    with slab_nan_allowed():
-        wk.render_rows(np.zeros(1, dtype=np.intp), world, settings, work, out, x, y,
-                       np.empty((1, 1, 3), dtype=np.float32), np.empty((1, 1), dtype=np.float32),
-                       np.empty((1, 1), dtype=np.int32), np.empty((1, 1, 3), dtype=np.float32),
-                       np.empty((1, COUNTS), dtype=np.int64))
-    red, green, blue, depth, obj = out[0, : wk.PIXEL_NORMAL].tolist()
+    pixel_fields = wk.trace_pixel(x, y, world, settings, work)
+    red, green, blue, depth, obj = pixel_fields[: wk.PIXEL_NORMAL].tolist()
     logged = int(work.logged[0])
     count = min(logged, len(work.log))
     roots = _nodes(scene, world, settings, work.log[:count], work.log_lights[:count])
