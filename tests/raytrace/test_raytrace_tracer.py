@@ -7,9 +7,11 @@ import math
 import numba
 import numpy as np
 import pytest
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
 
 import pixelpath as pp
-from pixelpath.raytrace import ray_tree
+from pixelpath.raytrace import ray_tree, tracer
 from pixelpath.renderer import render_steps
 
 DARK = pp.Material(color=(1, 1, 1), ka=0.0, kd=0.0, ks=0.0)  # no light of its own
@@ -330,3 +332,93 @@ def test_ray_tree_refuses_pixels_outside_the_image():
         ray_tree(_busy_scene(8, 6), (8, 0))
     with pytest.raises(TypeError, match="pixel"):
         ray_tree(_busy_scene(8, 6), (1.5, 0))
+
+
+# --- eye rays outside the scene's screen bounds ----------------------------------------------
+
+CUBE = np.array([[-1.0, -1.0, -1.0, 1.0, 1.0, 1.0]])
+
+
+def _shifted(x=0.0, y=0.0, z=0.0):
+    return CUBE + np.array([x, y, z, x, y, z])
+
+
+def _head_on(**options):
+    return pp.Camera(eye=(0, 0, 5), target=(0, 0, 0), width=100, height=100, **options)
+
+
+def test_screen_bounds_of_a_cube_seen_head_on():
+    # Perspective, fov 90: the near face (depth 4, half-width 1) spans ndc ±1/4, pixels
+    # 37.5-62.5; orthographic with a view 4 high: ndc ±1/2, pixels 25-75. Then 2 pixels more
+    # on each side (SCREEN_MARGIN), after rounding outwards.
+    assert tracer.screen_bounds(_head_on(fov=90), CUBE).tolist() == [35, 65, 35, 65]
+    orthographic = _head_on(projection="orthographic", view_height=4.0)
+    assert tracer.screen_bounds(orthographic, CUBE).tolist() == [23, 77, 23, 77]
+    # Moved right by 2: from x = 1 at depth 6 (ndc 1/6, pixel 58.3) to x = 3 at depth 4
+    # (ndc 3/4, pixel 87.5).
+    moved = _shifted(x=2.0)
+    assert tracer.screen_bounds(_head_on(fov=90), moved).tolist() == [56, 90, 35, 65]
+
+
+def test_screen_bounds_when_nothing_or_everything_can_be_hit():
+    camera = _head_on(fov=90)
+    whole, nothing = [0, 100, 0, 100], [0, 0, 0, 0]
+    assert tracer.screen_bounds(camera, None).tolist() == whole  # a plane
+    assert tracer.screen_bounds(camera, np.empty((0, 6))).tolist() == nothing
+    assert tracer.screen_bounds(camera, _shifted(z=10.0)).tolist() == nothing  # behind
+    assert tracer.screen_bounds(camera, CUBE * 10).tolist() == whole  # the eye inside
+    assert tracer.screen_bounds(camera, np.vstack([CUBE, [[-1, -1, 4, 1, 1, 7]]])).tolist() \
+        == whole  # one box beside the eye's plane
+    assert tracer.screen_bounds(camera, CUBE * [1, 1, 1, 1, 1, np.inf]).tolist() == whole
+    # Far to the side: cut to the image, empty.
+    assert tracer.screen_bounds(camera, _shifted(x=90.0)).tolist()[:2] == [100, 100]
+
+
+def _same_render(scene, monkeypatch, **options):
+    """Assert a render equals the same render with every eye ray searched."""
+    culled = pp.render(scene, "raytrace", **options)
+    with monkeypatch.context() as patch:
+        patch.setattr(tracer, "screen_bounds", lambda camera, boxes: np.array(
+            [0, camera.width, 0, camera.height], dtype=np.intp))
+        searched = pp.render(scene, "raytrace", **options)
+    for field in ("rgb", "depth", "object_id", "normal", "alpha"):
+        assert np.array_equal(getattr(culled, field), getattr(searched, field)), field
+    work = ("BVH nodes visited", "triangle tests")  # fewer where rays are not searched
+    assert {k: v for k, v in culled.stats.items() if k not in work} == {
+        k: v for k, v in searched.stats.items() if k not in work
+    }
+
+
+@settings(max_examples=30, deadline=None)
+@given(
+    eye=st.tuples(*[st.floats(-4, 4)] * 3),
+    target=st.tuples(*[st.floats(-1, 1)] * 3),
+    orthographic=st.booleans(),
+    size=st.tuples(st.integers(1, 23), st.integers(1, 17)),
+    samples=st.sampled_from([1, 2, 4]),
+)
+def test_eye_rays_left_out_would_have_missed_everything(
+    eye, target, orthographic, size, samples
+):
+    # Meshes and spheres seen from anywhere (inside their boxes too), at sizes whose rows end
+    # mid-packet: the pixels, depths, ids, normals and ray counts are those of a render that
+    # searches every eye ray. (monkeypatch is function-scoped: hypothesis wants a context.)
+    view = np.subtract(target, eye)
+    assume(np.linalg.norm(np.cross(view, (0, 1, 0))) > 1e-3)  # a camera needs an up
+    projection = {"projection": "orthographic", "view_height": 3.0} if orthographic else {}
+    camera = pp.Camera(eye=eye, target=target, width=size[0], height=size[1], **projection)
+    scene = pp.Scene(camera, [
+        pp.scene.icosphere(2),
+        pp.Sphere((1.5, 0.5, 0.0), 0.4),
+        pp.scene.Box((-2.0, -1.0, -1.0), (-1.2, 0.0, 0.5)),
+    ], lights=[pp.PointLight((2, 4, 3))])
+    with pytest.MonkeyPatch.context() as monkeypatch:
+        _same_render(scene, monkeypatch, samples=samples)
+
+
+def test_a_region_and_supersampling_leave_out_the_same_eye_rays(monkeypatch):
+    camera = pp.Camera(eye=(0, 0.5, 6), target=(0, 0, 0), width=61, height=37, fov=40)
+    scene = pp.Scene(camera, [pp.scene.icosphere(3)], lights=[pp.PointLight((2, 4, 3))])
+    _same_render(scene, monkeypatch)
+    _same_render(scene, monkeypatch, samples=4, region=(9, 3, 50, 30))
+    _same_render(scene, monkeypatch, ssaa=2)

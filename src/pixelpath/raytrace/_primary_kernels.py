@@ -26,6 +26,7 @@ from pixelpath.raytrace._records import (
 from pixelpath.raytrace._surface_kernels import hit_geometry, nearest_analytic, shadow_start
 from pixelpath.raytrace._traversal_kernels import (
     BLOCK,
+    LANES,
     MISS,
     any_triangle,
     any_triangles4,
@@ -115,6 +116,10 @@ def primary_hits(y, x0, width, scene, settings, work):
     ``work.primary`` (t, w1, w2) and ``work.primary_hit`` (kind, index; index MISS when
     nothing is hit) and adds the nodes and triangle tests to ``work.counts``. Arrays are
     taken out of their tuples once, as in ``render_rows``.
+
+    Only the rays :func:`searched_rays` leaves in are made and searched; the others, whose
+    pixels lie outside ``scene.screen_bounds``, are marked as misses. Returns the first and
+    stop of the searched rays.
     """
     spheres, planes, plane_back = scene.spheres, scene.planes, scene.plane_back
     bounds, links, tris = scene.bounds, scene.links, scene.tris
@@ -127,10 +132,16 @@ def primary_hits(y, x0, width, scene, settings, work):
     samples = settings.samples
     near, far, cull = settings.near, settings.far, settings.cull
     count = width * samples
-    x = x0  # the pixel and sample of the next ray
-    sample = 0
-    for start in range(0, count, BLOCK):
-        batch = min(BLOCK, count - start)
+    first, stop = searched_rays(y, x0, width, samples, scene.screen_bounds,
+                                work.log.shape[0] > 0)
+    for ray in range(first):
+        found_hit[ray, 1] = MISS
+    for ray in range(stop, count):
+        found_hit[ray, 1] = MISS
+    x = x0 + first // samples  # the pixel and sample of the next ray
+    sample = first % samples
+    for start in range(first, stop, BLOCK):
+        batch = min(BLOCK, stop - start)
         for r in range(batch):
             sx, sy = sample_position(y * settings.image_width + x, sample, samples)
             ox, oy, oz, dx, dy, dz = primary_ray(
@@ -174,11 +185,36 @@ def primary_hits(y, x0, width, scene, settings, work):
                 found[start + r, 3 + field] = packet[r, 3 + field]  # the direction
                 found[start + r, 6 + field] = packet[r, field]  # the origin
             found_hit[start + r, 0] = kinds[r]
+    return first, stop
 
 
 @njit(refcount=False)
-def primary_shadows(count, scene, settings, work):
-    """Test the shadow rays of the first ``count`` primary hits of a row, a packet at a time.
+def searched_rays(y, x0, width, samples, screen_bounds, logging):
+    """Return the first and stop of the eye rays of row y that :func:`primary_hits` searches.
+
+    Ray j is sample ``j % samples`` of pixel ``x0 + j // samples``. ``screen_bounds`` holds
+    the first and stop pixel columns, then rows, outside of which no eye ray can hit
+    anything (:func:`pixelpath.raytrace.tracer.screen_bounds`); the rays of other pixels
+    need no search. The span is widened to whole packets of ``LANES`` rays counted from the
+    row's first, so the searched rays travel in the same packets as in a search of the whole
+    row, and find the same hits. A logged render (``logging``) searches every ray: the log
+    records each eye ray's origin and direction.
+    """
+    count = width * samples
+    if logging:
+        return 0, count
+    if y < screen_bounds[2] or y >= screen_bounds[3]:
+        return 0, 0
+    first = max(screen_bounds[0] - x0, 0) * samples
+    stop = min(max(screen_bounds[1] - x0, 0) * samples, count)
+    if first >= stop:
+        return 0, 0
+    return first - first % LANES, min(stop + (-stop) % LANES, count)
+
+
+@njit(refcount=False)
+def primary_shadows(first, stop, scene, settings, work):
+    """Test the shadow rays of the primary hits ``first`` to ``stop`` of a row, packets at a time.
 
     First each hit's object, point and normals (:func:`hit_geometry`) go into
     ``work.primary_geometry``, where ``render_rows`` reads them back. Then, light by light,
@@ -202,7 +238,7 @@ def primary_shadows(count, scene, settings, work):
     stack, counts = work.stack, work.counts
     has_analytic = spheres.shape[0] > 0 or planes.shape[0] > 0
     has_triangles = links.shape[0] > 0
-    for ray in range(count):
+    for ray in range(first, stop):
         if found_hit[ray, 1] != MISS:
             obj, px, py, pz, gx, gy, gz, nx, ny, nz, entering = hit_geometry(
                 spheres, sphere_object, planes, plane_object, tris, tri_normals, tri_flat,
@@ -216,7 +252,7 @@ def primary_shadows(count, scene, settings, work):
             geometry[ray, GEOMETRY_ENTERING] = entering
     for light in range(lights.shape[0]):
         queued = np.intp(0)  # not the literal 0, for which any_triangles4 was compiled again
-        for ray in range(count):
+        for ray in range(first, stop):
             if found_hit[ray, 1] == MISS:
                 continue
             px, py, pz, gx, gy, gz, nx, ny, nz = _stored_geometry(geometry, ray)

@@ -78,6 +78,9 @@ class TraceScene(NamedTuple):
     tri_texel_scale: np.ndarray  # (T,) uv units per world unit on each triangle
     pixel_cone: np.ndarray  # (2,) a pixel's footprint width at the eye, growth per distance
     cutouts: Cutouts  # the alpha-tested triangles (``masked`` has no rows when there are none)
+    # (4,) intp first and stop pixel columns, then rows, outside of which no eye ray can hit
+    # anything: those rays are not searched (pixelpath.raytrace.tracer.screen_bounds)
+    screen_bounds: np.ndarray
 
 
 class Settings(NamedTuple):

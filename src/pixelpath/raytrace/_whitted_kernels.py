@@ -230,14 +230,33 @@ def render_rows(rows, scene, settings, work, out, x0, y0, rgb, image_depth, obje
     # Not the literal False: the searches would be compiled a second time for it.
     cull_none = np.bool_(False)
     width = rgb.shape[1]
+    scale = 1.0 / samples
+    # A pixel none of whose eye rays was searched (outside scene.screen_bounds) shows the
+    # background: the same sums as the per-sample loop below makes for rays that miss.
+    missed_red = missed_green = missed_blue = 0.0
+    for _ in range(samples):
+        missed_red += _clamp01(background[0])
+        missed_green += _clamp01(background[1])
+        missed_blue += _clamp01(background[2])
     for k in range(rows.shape[0]):
         row = rows[k]
         y = y0 + row
         for c in range(COUNTS):
             counts[c] = 0
-        primary_hits(y, x0, width, scene, settings, work)
-        primary_shadows(width * samples, scene, settings, work)
-        for i in range(width):
+        first, stop = primary_hits(y, x0, width, scene, settings, work)
+        primary_shadows(first, stop, scene, settings, work)
+        searched_first, searched_stop = first // samples, -(-stop // samples)  # pixels
+        if searched_first >= searched_stop:
+            searched_first = searched_stop = 0
+        counts[COUNT_PRIMARY] += (width - (searched_stop - searched_first)) * samples
+        counts[COUNT_MISSED] += (width - (searched_stop - searched_first)) * samples
+        for i in range(searched_first):
+            _store_pixel(out, i, missed_red * scale, missed_green * scale, missed_blue * scale,
+                         math.inf, MISS, 0.0, 0.0, 0.0)
+        for i in range(searched_stop, width):
+            _store_pixel(out, i, missed_red * scale, missed_green * scale, missed_blue * scale,
+                         math.inf, MISS, 0.0, 0.0, 0.0)
+        for i in range(searched_first, searched_stop):
             red = green = blue = 0.0
             nearest = math.inf
             nearest_object = MISS
@@ -402,14 +421,9 @@ def render_rows(rows, scene, settings, work, out, x0, y0, rgb, image_depth, obje
                 blue += _clamp01(b)
                 if first_t < nearest:
                     nearest, nearest_object, nearest_normal = first_t, first_object, first_normal
-            scale = 1.0 / samples
-            out[i, RED] = red * scale
-            out[i, GREEN] = green * scale
-            out[i, BLUE] = blue * scale
-            out[i, PIXEL_DEPTH] = nearest
-            out[i, PIXEL_OBJECT] = nearest_object
-            for axis in range(3):
-                out[i, PIXEL_NORMAL + axis] = nearest_normal[axis]
+            _store_pixel(out, i, red * scale, green * scale, blue * scale, nearest,
+                         nearest_object, nearest_normal[0], nearest_normal[1],
+                         nearest_normal[2])
         for i in range(width):
             rgb[row, i, 0] = out[i, RED]
             rgb[row, i, 1] = out[i, GREEN]
@@ -420,6 +434,19 @@ def render_rows(rows, scene, settings, work, out, x0, y0, rgb, image_depth, obje
                 normal[row, i, axis] = out[i, PIXEL_NORMAL + axis]
         for c in range(COUNTS):
             row_counts[row, c] = counts[c]
+
+
+@njit(inline="always")
+def _store_pixel(out, i, red, green, blue, depth, obj, nx, ny, nz):
+    """Write pixel i's fields into ``out``, the row of traced pixels."""
+    out[i, RED] = red
+    out[i, GREEN] = green
+    out[i, BLUE] = blue
+    out[i, PIXEL_DEPTH] = depth
+    out[i, PIXEL_OBJECT] = obj
+    out[i, PIXEL_NORMAL] = nx
+    out[i, PIXEL_NORMAL + 1] = ny
+    out[i, PIXEL_NORMAL + 2] = nz
 
 
 def trace_pixel(x: int, y: int, scene, settings, work) -> np.ndarray:

@@ -264,6 +264,7 @@ def pack(scene: Scene, camera: Camera, options: RenderOptions):
         pixel_cone=_pixel_cone(camera),
         cutouts=Cutouts(_masked(cut, triangles.objects), triangles.objects, triangles.uv,
                         triangles.colors, triangles.tables),
+        screen_bounds=screen_bounds(camera, _bounded_boxes(triangles, spheres, planes)),
     )
     settings = rec.Settings(
         max_depth=options.max_depth,
@@ -279,6 +280,90 @@ def pack(scene: Scene, camera: Camera, options: RenderOptions):
         image_height=camera.height,
     )
     return world, settings, max(triangles.bvh.depth, 1), triangles
+
+
+def _bounded_boxes(triangles: SceneTriangles, spheres: list, planes: list) -> np.ndarray | None:
+    """(B, 6) boxes (min x, y, z, max x, y, z) of everything an eye ray can hit; None if unbounded.
+
+    The triangles' tree's root box and each sphere's box; a plane has no bounds.
+    """
+    if planes:
+        return None
+    boxes = [triangles.bvh.bounds[:1]] if triangles.bvh.links.shape[0] > 0 else []
+    boxes += [np.concatenate([s.center - s.radius, s.center + s.radius])[None] for _, s in spheres]
+    return np.concatenate(boxes) if boxes else np.empty((0, 6))
+
+
+# Pixels added on each side of the projected boxes: far more than the rounding of any ray's
+# search, so that no ray that would hit something is left out.
+SCREEN_MARGIN = 2
+
+
+def screen_bounds(camera: Camera, boxes: np.ndarray | None) -> np.ndarray:
+    """Return the pixels whose eye rays can hit something inside ``boxes``.
+
+    An eye ray meets a box only if its pixel lies in the box's picture, which is inside the
+    rectangle around the pictures of its eight corners when all of them lie in front of the
+    eye. Returns (4,) intp: the first and stop pixel columns, then rows, of the union of
+    those rectangles, widened by ``SCREEN_MARGIN`` pixels and cut to the image. The whole
+    image when ``boxes`` is None (something unbounded, as a plane), when a perspective
+    camera's eye lies beside a box, neither wholly in front of it nor behind, or when a
+    box or its picture is not finite; nothing (all zeros) when no box lies in front of the eye.
+    The tracer does not search the eye rays of the other pixels: they miss everything.
+
+    Parameters
+    ----------
+    camera : Camera
+        The view (perspective or orthographic) and its size in pixels.
+    boxes : (B, 6) array or None
+        Boxes as (min x, y, z, max x, y, z).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from pixelpath.scene import Camera
+    >>> from pixelpath.raytrace.tracer import screen_bounds
+    >>> camera = Camera(eye=(0, 0, 5), target=(0, 0, 0), fov=90, width=100, height=100)
+    >>> screen_bounds(camera, np.array([[-1.0, -1, -1, 1, 1, 1]])).tolist()
+    [35, 65, 35, 65]
+    >>> screen_bounds(camera, None).tolist()
+    [0, 100, 0, 100]
+    """
+    whole = np.array([0, camera.width, 0, camera.height], dtype=np.intp)
+    if boxes is None or not np.isfinite(boxes).all():
+        return whole
+    if boxes.shape[0] == 0:
+        return np.zeros(4, dtype=np.intp)
+    corner_picks = np.array([[(k >> axis) & 1 for axis in range(3)] for k in range(8)])
+    corners = np.where(corner_picks[None], boxes[:, None, 3:], boxes[:, None, :3])
+    u, v, w = camera.basis()
+    offset = corners - np.asarray(camera.eye, dtype=np.float64)
+    depth = offset @ -w  # (B, 8)
+    # Eye rays go forward from the eye's plane: a box wholly behind it is out of their reach.
+    in_reach = (depth > 0.0).any(axis=1)
+    offset, depth = offset[in_reach].reshape(-1, 3), depth[in_reach].ravel()
+    if offset.shape[0] == 0:
+        return np.zeros(4, dtype=np.intp)
+    if camera.orthographic:
+        half_height = camera.view_height / 2.0
+        ndc_x = offset @ u / (half_height * camera.aspect)
+        ndc_y = offset @ v / half_height
+    else:
+        if not (depth > 0.0).all():
+            return whole
+        tan_y = np.tan(np.radians(camera.fov) / 2.0)
+        ndc_x = offset @ u / (depth * tan_y * camera.aspect)
+        ndc_y = offset @ v / (depth * tan_y)
+    columns = (ndc_x + 1.0) * camera.width / 2.0
+    rows = (1.0 - ndc_y) * camera.height / 2.0
+    if not (np.isfinite(columns).all() and np.isfinite(rows).all()):
+        return whole
+    return np.array([
+        np.clip(np.floor(columns.min()) - SCREEN_MARGIN, 0, camera.width),
+        np.clip(np.ceil(columns.max()) + SCREEN_MARGIN, 0, camera.width),
+        np.clip(np.floor(rows.min()) - SCREEN_MARGIN, 0, camera.height),
+        np.clip(np.ceil(rows.max()) + SCREEN_MARGIN, 0, camera.height),
+    ], dtype=np.intp)
 
 
 def _alpha_tested(tables) -> np.ndarray:
