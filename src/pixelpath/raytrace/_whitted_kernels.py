@@ -436,7 +436,8 @@ def render_rows(rows, scene, settings, work, out, x0, y0, rgb, image_depth, obje
             row_counts[row, c] = counts[c]
 
 
-@njit(inline="always")
+# Compiled once and inlined by LLVM into its three places in render_rows (see pixelpath._jit).
+@njit(refcount=False, forceinline=True)
 def _store_pixel(out, i, red, green, blue, depth, obj, nx, ny, nz):
     """Write pixel i's fields into ``out``, the row of traced pixels."""
     out[i, RED] = red
