@@ -77,6 +77,30 @@ def test_newell_normal_of_rotated_regular_polygons(k, radius, axis_angle, shift)
     assert len(mesh.triangles) == k - 2
 
 
+@settings(max_examples=40, deadline=None)
+@given(
+    sizes=st.lists(st.integers(3, 12), min_size=1, max_size=30),
+    scale=st.sampled_from([1e-3, 1.0, 1e4]),
+    seed=st.integers(0, 2**32 - 1),
+)
+def test_newell_vectors_are_the_sums_over_each_faces_corners_in_order(sizes, scale, seed):
+    # The kernel's sum of Newell's terms, coordinate by coordinate, bit for bit equals the
+    # plain form: the (N, 3) terms of every corner summed face by face (np.add.reduceat).
+    rng = np.random.default_rng(seed)
+    vertices = rng.normal(size=(40, 3)) * scale
+    faces = [rng.choice(40, size=k, replace=False).tolist() for k in sizes]
+    mesh = Mesh(vertices, faces)
+    corners = mesh.vertices[mesh.face_indices]
+    following = np.concatenate([np.roll(np.arange(a, b), -1) for a, b in
+                                zip(mesh.face_offsets[:-1], mesh.face_offsets[1:], strict=True)])
+    after = mesh.vertices[mesh.face_indices[following]]
+    (x, y, z), (xn, yn, zn) = corners.T, after.T
+    terms = np.stack([(y - yn) * (z + zn), (z - zn) * (x + xn), (x - xn) * (y + yn)], axis=1)
+    plain = np.add.reduceat(terms, mesh.face_offsets[:-1], axis=0)
+    assert np.array_equal(mesh._newell, plain)
+    assert np.array_equal(np.signbit(mesh._newell), np.signbit(plain))
+
+
 def test_vertex_normal_is_area_weighted():
     # Vertex 0 is shared by a triangle of area 2 facing +z and one of area 0.5 facing +y:
     # its normal is normalize(2·(0, 0, 1) + 0.5·(0, 1, 0)) = (0, 0.5, 2)/√4.25.

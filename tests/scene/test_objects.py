@@ -105,6 +105,16 @@ def test_plane_to_mesh_is_a_ccw_square_on_the_plane():
     np.testing.assert_allclose(np.cross(t1, t2), n, atol=1e-15)
 
 
+def test_plane_corners_are_its_quads_and_its_tangents_are_the_callers_to_change():
+    plane = Plane(point=(0, 1, 0), normal=(1, 1, 1))
+    quad = plane.to_mesh(center=(5, 5, 5), half_size=2)
+    assert plane.corners(center=(5, 5, 5), half_size=2).tobytes() == quad.vertices.tobytes()
+    t1, _ = plane.tangents()
+    t1[:] = 0.0  # the plane keeps its own frame (kept per normal, for every plane)
+    assert np.linalg.norm(plane.tangents()[0]) == pytest.approx(1.0)
+    assert plane.corners(center=(5, 5, 5), half_size=2).tobytes() == quad.vertices.tobytes()
+
+
 def test_material_packing_and_validation():
     packed = Material(color=(0.2, 0.4, 0.6), ka=0.1, kd=0.5, ks=0.25, shininess=20).packed()
     assert packed.dtype == np.float64

@@ -21,6 +21,7 @@ from collections.abc import Callable, Hashable
 
 import numpy as np
 
+from pixelpath._validate import frozen
 from pixelpath.scene import Box, Camera, Mesh, Plane, Scene, Sphere
 from pixelpath.scene._texture_kernels import HAS_COLORS, TEXTURE, SurfaceTables
 from pixelpath.scene.texture import surface_tables
@@ -164,20 +165,30 @@ def _sphere_mesh(sphere: Sphere) -> Mesh:
 
 def _plane_grid(plane: Plane, camera: Camera) -> Mesh:
     """Return a square grid on the plane, centred below the eye, covering all it can see."""
-    quad = plane.to_mesh(center=camera.eye, half_size=view_reach(camera))
-    corner, across, up = quad.vertices[0], quad.vertices[1], quad.vertices[3]
+    corner, across, _, up = plane.corners(center=camera.eye, half_size=view_reach(camera))
+    u, v, quads = _grid_layout()
+    points = corner + u * (across - corner) + v * (up - corner)
+    normals = np.broadcast_to(plane.normal, points.shape)
+    return Mesh(points, quads, plane.material, normals=normals, name="plane")
+
+
+@functools.cache
+def _grid_layout() -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Return a plane grid's (N, 1) steps across and up its quad, and its (F, 4) cells.
+
+    The same for every plane and camera: a turntable's frames, each seen from a new eye, fit
+    the floor's grid afresh and only its corners change.
+    """
     # Cell borders at s = ±(k / half)^2 of the way out, k = 0..half: fine near the centre.
     half = PLANE_GRID // 2
     ramp = (np.arange(half + 1) / half) ** 2
     steps = 0.5 + 0.5 * np.concatenate([-ramp[:0:-1], ramp])
     u, v = np.meshgrid(steps, steps, indexing="xy")
-    points = corner + u.reshape(-1, 1) * (across - corner) + v.reshape(-1, 1) * (up - corner)
     n = len(steps)
     row, col = np.divmod(np.arange((n - 1) * (n - 1)), n - 1)
     first = row * n + col
     quads = np.stack([first, first + 1, first + n + 1, first + n], axis=1)
-    normals = np.broadcast_to(plane.normal, points.shape)
-    return Mesh(points, quads, plane.material, normals=normals, name="plane")
+    return frozen(u.reshape(-1, 1)), frozen(v.reshape(-1, 1)), frozen(quads)
 
 
 def view_reach(camera: Camera) -> float:
