@@ -176,7 +176,8 @@ def render_rows(rows, scene, settings, work, out, x0, y0, rgb, image_depth, obje
     object and normal (from the nearest sample that hit something). Each sample's eye ray and
     its tree are followed with the stack work.rays: a ray adds ``weight × I_local`` as it is
     traced. The eye rays' nearest hits are found first, for the whole row
-    (:func:`primary_hits`).
+    (:func:`primary_hits`); pixels outside ``scene.screen_bounds``, whose eye rays can hit
+    nothing, take the background without a search.
 
     The loops over rows, pixels, samples and rays, and the local light of a hit, share this
     one function on purpose: a compiled call passes each array as several machine words, more
