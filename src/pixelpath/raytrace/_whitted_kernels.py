@@ -247,10 +247,9 @@ def render_rows(rows, scene, settings, work, out, x0, y0, rgb, image_depth, obje
         first, stop = primary_hits(y, x0, width, scene, settings, work)
         primary_shadows(first, stop, scene, settings, work)
         searched_first, searched_stop = first // samples, -(-stop // samples)  # pixels
-        if searched_first >= searched_stop:
-            searched_first = searched_stop = 0
-        counts[COUNT_PRIMARY] += (width - (searched_stop - searched_first)) * samples
-        counts[COUNT_MISSED] += (width - (searched_stop - searched_first)) * samples
+        unsearched = (width - (searched_stop - searched_first)) * samples
+        counts[COUNT_PRIMARY] += unsearched
+        counts[COUNT_MISSED] += unsearched
         for i in range(searched_first):
             _store_pixel(out, i, missed_red * scale, missed_green * scale, missed_blue * scale,
                          math.inf, MISS, 0.0, 0.0, 0.0)

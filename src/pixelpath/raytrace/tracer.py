@@ -303,13 +303,15 @@ def screen_bounds(camera: Camera, boxes: np.ndarray | None) -> np.ndarray:
     """Return the pixels whose eye rays can hit something inside ``boxes``.
 
     An eye ray meets a box only if its pixel lies in the box's picture, which is inside the
-    rectangle around the pictures of its eight corners when all of them lie in front of the
-    eye. Returns (4,) intp: the first and stop pixel columns, then rows, of the union of
-    those rectangles, widened by ``SCREEN_MARGIN`` pixels and cut to the image. The whole
+    rectangle around the pictures of its eight corners, projected as the rasterizer projects
+    them (:func:`~pixelpath.raster.transform.world_to_clip`), when all of them lie in front
+    of the eye. Returns (4,) intp: the first and stop pixel columns, then rows, of the union
+    of those rectangles, widened by ``SCREEN_MARGIN`` pixels and cut to the image. The whole
     image when ``boxes`` is None (something unbounded, as a plane), when a perspective
-    camera's eye lies beside a box, neither wholly in front of it nor behind, or when a
-    box or its picture is not finite; nothing (all zeros) when no box lies in front of the eye.
-    The tracer does not search the eye rays of the other pixels: they miss everything.
+    camera's eye lies beside a box, neither wholly in front of it nor behind, or when a box
+    or its picture is not finite; nothing (all zeros) when every box lies behind a
+    perspective camera's eye. The tracer does not search the eye rays of the other pixels:
+    they miss everything.
 
     Parameters
     ----------
@@ -329,33 +331,23 @@ def screen_bounds(camera: Camera, boxes: np.ndarray | None) -> np.ndarray:
     >>> screen_bounds(camera, None).tolist()
     [0, 100, 0, 100]
     """
+    from pixelpath.raster.transform import world_to_clip
+
     whole = np.array([0, camera.width, 0, camera.height], dtype=np.intp)
     if boxes is None or not np.isfinite(boxes).all():
         return whole
-    if boxes.shape[0] == 0:
-        return np.zeros(4, dtype=np.intp)
     corner_picks = np.array([[(k >> axis) & 1 for axis in range(3)] for k in range(8)])
     corners = np.where(corner_picks[None], boxes[:, None, 3:], boxes[:, None, :3])
-    u, v, w = camera.basis()
-    offset = corners - np.asarray(camera.eye, dtype=np.float64)
-    depth = offset @ -w  # (B, 8)
-    # Eye rays go forward from the eye's plane: a box wholly behind it is out of their reach.
-    in_reach = (depth > 0.0).any(axis=1)
-    offset, depth = offset[in_reach].reshape(-1, 3), depth[in_reach].ravel()
-    if offset.shape[0] == 0:
-        return np.zeros(4, dtype=np.intp)
-    if camera.orthographic:
-        half_height = camera.view_height / 2.0
-        ndc_x = offset @ u / (half_height * camera.aspect)
-        ndc_y = offset @ v / half_height
-    else:
-        if not (depth > 0.0).all():
+    clip = world_to_clip(corners.reshape(-1, 3), camera).reshape(-1, 8, 4)
+    if not camera.orthographic:  # w is the depth along the view (1 when orthographic)
+        # Eye rays go forward from the eye: a box wholly behind its plane is out of reach.
+        clip = clip[(clip[..., 3] > 0.0).any(axis=1)]
+        if not (clip[..., 3] > 0.0).all():
             return whole
-        tan_y = np.tan(np.radians(camera.fov) / 2.0)
-        ndc_x = offset @ u / (depth * tan_y * camera.aspect)
-        ndc_y = offset @ v / (depth * tan_y)
-    columns = (ndc_x + 1.0) * camera.width / 2.0
-    rows = (1.0 - ndc_y) * camera.height / 2.0
+    if clip.shape[0] == 0:
+        return np.zeros(4, dtype=np.intp)
+    columns = (clip[..., 0] / clip[..., 3] + 1.0) * camera.width / 2.0
+    rows = (1.0 - clip[..., 1] / clip[..., 3]) * camera.height / 2.0
     if not (np.isfinite(columns).all() and np.isfinite(rows).all()):
         return whole
     return np.array([
