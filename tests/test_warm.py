@@ -57,14 +57,16 @@ def test_every_module_with_compiled_kernels_is_counted_in_the_warmup_report():
 
 def test_groups_for_lists_each_group_once_in_table_order():
     assert _warm.groups_for(["warnock", "zbuffer", "warnock"], ["phong"]) == (
-        "front", "back", "shade", "warnock")
+        "front", "depth-test", "back", "shade", "warnock")
     assert _warm.groups_for([]) == ()
 
 
 def test_groups_for_adds_vertex_shading_to_raster_methods_only():
-    assert _warm.groups_for(["zbuffer"], ["phong"]) == ("front", "back")
-    assert _warm.groups_for(["zbuffer"], ["flat", "phong"]) == ("front", "vertex-shading", "back")
-    assert _warm.groups_for(["zbuffer"]) == ("front", "vertex-shading", "back")  # every mode
+    assert _warm.groups_for(["zbuffer"], ["phong"]) == ("front", "depth-test", "back")
+    assert _warm.groups_for(["zbuffer"], ["flat", "phong"]) == (
+        "front", "vertex-shading", "depth-test", "back")
+    assert _warm.groups_for(["zbuffer"]) == (
+        "front", "vertex-shading", "depth-test", "back")  # every mode
     assert "vertex-shading" not in _warm.groups_for(["raytrace", "wireframe"], ["flat"])
 
 
@@ -90,6 +92,22 @@ def test_a_group_that_follows_another_shares_its_process_after_it(tmp_path):
         assert len(shares) == 3
         alone = _warm._share_out([follower, "scan"], 8, tmp_path)
         assert sorted(alone) == sorted([[follower], ["scan"]])
+
+
+def test_a_group_that_feeds_another_goes_first_in_its_process(tmp_path):
+    for feeder, fed in _warm.FEEDS.items():
+        groups = [fed, "front", "scan", feeder]
+        for processes in (1, 2, 8):
+            shares = _warm._share_out(groups, processes, tmp_path)
+            assert sorted(g for share in shares for g in share) == sorted(groups)
+            assert [share.index(feeder) for share in shares if feeder in share] == [0]
+        assert _warm._share_out(groups, 1, tmp_path) == [[feeder, fed, "front", "scan"]]
+
+
+def test_every_method_that_runs_a_fed_group_runs_its_feeder():
+    for groups in _warm.METHOD_GROUPS.values():
+        for feeder, fed in _warm.FEEDS.items():
+            assert (fed in groups) == (feeder in groups)
 
 
 def test_recorded_seconds_replace_the_estimate(tmp_path):
@@ -223,3 +241,44 @@ def test_with_the_kernels_compiled_at_build_time_a_first_render_compiles_nothing
                             check=True, capture_output=True, text=True)
     assert json.loads(result.stdout) == []
     assert (tmp_path / "numba" / "precompiled").is_dir()  # copied from the package, not compiled
+
+
+_COMPILE_GROUPS = textwrap.dedent(
+    """
+    import json, sys
+    from numba.core import event
+    from pixelpath import _warm
+    compiled = []
+
+    class Count(event.Listener):  # pixelpath's kernels (Numba's own helpers are not cached)
+        def on_start(self, e):
+            function = e.data["dispatcher"].py_func
+            if function.__module__.startswith("pixelpath."):
+                compiled.append(f"{function.__module__}.{function.__qualname__}")
+
+        def on_end(self, e):
+            pass
+
+    event.register("numba:compile", Count())
+    _warm._compile_here(sys.argv[1:])
+    print(json.dumps(compiled))
+    """
+)
+
+
+@needs_jit
+@pytest.mark.slow
+def test_a_fed_group_loads_what_its_feeder_compiled_and_compiles_the_rest_once(tmp_path):
+    # Each in a process of its own into one empty cache, the feeder first: the fed group must
+    # not compile any kernel again, which it would if its warm-up passed other types.
+    env = {**os.environ, "PIXELPATH_CACHE_DIR": str(tmp_path), "PIXELPATH_PRECOMPILED": "0"}
+    env.pop("NUMBA_CACHE_DIR", None)
+    for feeder, fed in _warm.FEEDS.items():
+        by_group = {}
+        for group in (feeder, fed):
+            result = subprocess.run([sys.executable, "-c", _COMPILE_GROUPS, group], env=env,
+                                    check=True, capture_output=True, text=True)
+            by_group[group] = json.loads(result.stdout)
+        assert by_group[feeder], "the feeder compiled nothing: the test checks nothing"
+        assert set(by_group[feeder]) & set(by_group[fed]) == set()
+        assert len(by_group[fed]) == len(set(by_group[fed]))

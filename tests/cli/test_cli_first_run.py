@@ -41,7 +41,7 @@ def test_the_notice_shows_only_on_a_terminal_and_the_kernels_compile_either_way(
     compile_kernels(["warnock"], ["phong"], quiet=quiet)
     expected = "compiling kernels for the first run, about 12 s; later runs are instant\n"
     assert stream.getvalue() == (expected if shown else "")
-    assert compiled == [["front", "back", "shade", "warnock"]]
+    assert compiled == [["front", "depth-test", "back", "shade", "warnock"]]
 
 
 def test_a_warm_cache_means_no_notice_and_no_compiling(compiled, monkeypatch):

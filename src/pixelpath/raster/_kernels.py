@@ -738,12 +738,30 @@ def _tiny_shading_pass():
 
 
 def warm_back() -> None:
-    """Compile the z-buffer's fused pass: depth test and shading, band by band."""
+    """Compile the z-buffer's fused pass: depth test and shading, band by band.
+
+    Its row shading first, then the pass: by the time the pass needs its depth test, the
+    group ``depth-test``, compiled at once in another process (``pixelpath._warm.FEEDS``),
+    has put that in the disk cache, and this process loads it instead of compiling it too.
+    """
     bands, setup, rows, offsets, items, inv_depth, triangle_id, surfaces, out = (
         _tiny_shading_pass()
     )
+    # The types the pass hands its row shading: a row of each visibility buffer, int64 rows.
+    _shade_row(np.intp(0), 0, 0, triangle_id[0], inv_depth[0], surfaces, out,
+               _new_batch(inv_depth.shape[1]))
     render_bands(bands, setup, rows, offsets, items, BAND_ROWS, 0, 0, inv_depth, triangle_id,
                  tiny_cutouts(setup, surfaces.triangles), surfaces, out)
+
+
+def warm_depth_test() -> None:
+    """Compile the z-buffer's depth test of a band, with the types its fused pass passes."""
+    bands, setup, rows, offsets, items, inv_depth, triangle_id, surfaces, _ = (
+        _tiny_shading_pass()
+    )
+    first, stop = _band_rows(bands[0], BAND_ROWS, 0, inv_depth.shape[0])
+    _rasterize_band(setup, rows, offsets, items, bands[0], first, stop, 0, first, inv_depth,
+                    triangle_id, tiny_cutouts(setup, surfaces.triangles))
 
 
 def warm_shade() -> None:
