@@ -80,7 +80,9 @@ GROUPS: dict[str, tuple[str, float]] = {
     # back-face test), so it also compiles those kernels if no other process did. Its packet
     # searches (four rays at a time, vectorized) make it the longest group to compile: 30 s
     # after "raytrace-bvh" in the same process, 45 s before it.
-    "raytrace": ("pixelpath.raytrace._whitted_kernels:warmup", 30.0),
+    # The eye rays' shadow search, which "raytrace" loads from the cache (FEEDS).
+    "raytrace-shadows": ("pixelpath.raytrace._whitted_kernels:warm_shadow_rays", 8.0),
+    "raytrace": ("pixelpath.raytrace._whitted_kernels:warmup", 24.0),
     "octree": ("pixelpath.hsr._kernels.octree:warmup", 9.0),
     "lines": ("pixelpath.raster._line_kernels:warmup", 3.0),
     # 8-bit encoding of float32 pictures (to_uint8); built with the render groups (BUILT_GROUPS).
@@ -95,7 +97,7 @@ METHOD_GROUPS: dict[str, tuple[str, ...]] = {
     "painter": ("front", "depth-test", "back", "shade", "scan", "painter"),
     "bsp": ("front", "depth-test", "back", "shade", "scan", "bsp"),
     "octree": ("front", "depth-test", "back", "shade", "octree"),
-    "raytrace": ("lighting", "raytrace-bvh", "raytrace"),
+    "raytrace": ("lighting", "raytrace-bvh", "raytrace-shadows", "raytrace"),
     "wireframe": ("lines",),
     "hidden-line": ("lines",),
 }
@@ -119,9 +121,11 @@ FOLLOWS: dict[str, str] = {"shade": "back", "raytrace": "raytrace-bvh"}
 # cache: each goes first in its process, and the other group compiles the rest of its
 # kernels first, so that two processes share the work of one kernel that calls both parts.
 # The z-buffer's fused pass ("back", 13 s alone) calls its depth test (4 s) and its row
-# shading (7 s): split so, a cold z-buffer render's groups took 9-10 s in two processes.
+# shading (7 s); the tracer's row kernel ("raytrace", 20 s after "raytrace-bvh") its eye
+# rays' search (5 s) and then their shadow rays' (7 s). Split so, a cold z-buffer render took
+# 12 s instead of 15, a cold ray-traced one 21-24 s instead of 31-34 (docs/performance.md).
 # Should the other process be late, the kernels are compiled twice, as they were unsplit.
-FEEDS: dict[str, str] = {"depth-test": "back"}
+FEEDS: dict[str, str] = {"depth-test": "back", "raytrace-shadows": "raytrace"}
 
 # Kernel modules without a warm-up of their own, after the module whose warm-ups compile their
 # kernels: the report of that module counts theirs too (a file split by concern keeps one

@@ -467,8 +467,26 @@ def trace_pixel(x: int, y: int, scene, settings, work) -> np.ndarray:
 
 
 def warmup() -> None:
-    """Compile the tracer on a one-pixel scene holding a sphere, a plane and a triangle."""
+    """Compile the tracer on a one-pixel scene holding a sphere, a plane and a triangle.
+
+    Its eye rays' shadow search comes from the disk cache when the group
+    ``raytrace-shadows`` compiled it first in another process (``pixelpath._warm.FEEDS``):
+    the row kernel reaches it after the eye rays' own search.
+    """
     from pixelpath.raytrace.tracer import warmup_scene
 
     scene, settings, bvh_depth = warmup_scene()
     trace_pixel(0, 0, scene, settings, new_work(scene, settings, bvh_depth, 0, 1))
+
+
+def warm_shadow_rays() -> None:
+    """Compile the shadow search of a row's eye-ray hits (``primary_shadows``) alone.
+
+    With the types :func:`render_rows` passes it, on a scene packed without triangles, so
+    that nothing of the BVH's group compiles here; called on no hits (nothing runs).
+    """
+    from pixelpath.raytrace.tracer import warmup_scene
+
+    scene, settings, bvh_depth = warmup_scene(triangles=False)
+    primary_shadows(np.intp(0), np.intp(0), scene, settings,
+                    new_work(scene, settings, bvh_depth, 0, 1))
