@@ -56,37 +56,38 @@ __all__ = [
 # Every kernel module's warm-up, the one registry of them. Group name -> (warm-up function as
 # "module:function", seconds it took to compile on the 2-core machine pixelpath is developed
 # on; only used to share out work and to say how long a first run will take, before anything
-# was measured here). Measured 2026-11-23 in cold demos and renders that compile them in two
-# processes side by side; clip and color alone in one process, and the ray tracer's three
-# groups one after the other in one process, on 2026-11-26.
+# was measured here). Measured 2026-11-27 in the build step (python -m pixelpath._precompiled,
+# every group a render calls, in two processes into one empty cache, each group after those
+# its process compiled before it); clip and color, which the build leaves out, alone in one
+# process on 2026-11-26.
 GROUPS: dict[str, tuple[str, float]] = {
-    "front": ("pixelpath.raster._kernels:warm_front", 5.0),
-    "vertex-shading": ("pixelpath.raster._kernels:warm_vertex_shading", 1.0),
+    "front": ("pixelpath.raster._kernels:warm_front", 3.0),
+    "vertex-shading": ("pixelpath.raster._kernels:warm_vertex_shading", 0.2),
     # The fused pass's depth test, which "back" loads from the cache (FEEDS).
-    "depth-test": ("pixelpath.raster._kernels:warm_depth_test", 6.0),
-    "back": ("pixelpath.raster._kernels:warm_back", 16.0),
+    "depth-test": ("pixelpath.raster._kernels:warm_depth_test", 4.2),
+    "back": ("pixelpath.raster._kernels:warm_back", 10.0),
     # After "back" (every method that needs it needs "back" too): it reuses that one's kernels.
-    "shade": ("pixelpath.raster._kernels:warm_shade", 1.0),
-    "scan": ("pixelpath.raster._kernels:warm_scan", 1.5),
-    "scanline": ("pixelpath.hsr._kernels.scanline:warmup", 6.5),
-    "warnock": ("pixelpath.hsr._kernels.warnock:warmup", 4.5),
-    "painter": ("pixelpath.hsr._kernels.painter:warmup", 7.5),
-    "bsp": ("pixelpath.hsr._kernels.bsp:warmup", 16.0),
-    "lighting": ("pixelpath.lighting._kernels:warmup", 1.0),
+    "shade": ("pixelpath.raster._kernels:warm_shade", 1.9),
+    "scan": ("pixelpath.raster._kernels:warm_scan", 2.4),
+    "scanline": ("pixelpath.hsr._kernels.scanline:warmup", 6.8),
+    "warnock": ("pixelpath.hsr._kernels.warnock:warmup", 3.7),
+    "painter": ("pixelpath.hsr._kernels.painter:warmup", 6.4),
+    "bsp": ("pixelpath.hsr._kernels.bsp:warmup", 9.7),
+    "lighting": ("pixelpath.lighting._kernels:warmup", 0.2),
     "clip": ("pixelpath.clip._kernels:warmup", 13.0),
     "color": ("pixelpath.color._kernels:warmup", 12.0),
-    "raytrace-bvh": ("pixelpath.raytrace._bvh_kernels:warmup", 14.0),
+    "raytrace-bvh": ("pixelpath.raytrace._bvh_kernels:warmup", 7.2),
     # The tracer's warm-up packs a one-pixel scene with the renderer's own code (BVH build,
     # back-face test), so it also compiles those kernels if no other process did. Its packet
     # searches (four rays at a time, vectorized) make it the longest group to compile: 30 s
     # after "raytrace-bvh" in the same process, 45 s before it.
     # The eye rays' shadow search, which "raytrace" loads from the cache (FEEDS).
-    "raytrace-shadows": ("pixelpath.raytrace._whitted_kernels:warm_shadow_rays", 8.0),
-    "raytrace": ("pixelpath.raytrace._whitted_kernels:warmup", 24.0),
-    "octree": ("pixelpath.hsr._kernels.octree:warmup", 9.0),
-    "lines": ("pixelpath.raster._line_kernels:warmup", 3.0),
+    "raytrace-shadows": ("pixelpath.raytrace._whitted_kernels:warm_shadow_rays", 10.4),
+    "raytrace": ("pixelpath.raytrace._whitted_kernels:warmup", 11.4),
+    "octree": ("pixelpath.hsr._kernels.octree:warmup", 6.4),
+    "lines": ("pixelpath.raster._line_kernels:warmup", 1.6),
     # 8-bit encoding of float32 pictures (to_uint8); built with the render groups (BUILT_GROUPS).
-    "images": ("pixelpath.io._kernels:warmup", 1.0),
+    "images": ("pixelpath.io._kernels:warmup", 0.2),
 }
 
 # The groups a render with each hidden-surface method calls, and those a drawing style adds.
