@@ -283,6 +283,6 @@ def test_a_fed_group_loads_what_its_feeder_compiled_and_compiles_the_rest_once(t
             result = subprocess.run([sys.executable, "-c", _COMPILE_GROUPS, *dict.fromkeys(groups)],
                                     env=env, check=True, capture_output=True, text=True)
             by_group[group] = json.loads(result.stdout)
-        fed_kernel, _ = by_group[feeder][-1]  # the warm-up's own call: the last to end
-        assert fed_kernel not in [name for name, _ in by_group[fed]]
+        feeders_kernel, _ = by_group[feeder][-1]  # the warm-up's own call: the last to end
+        assert feeders_kernel not in [name for name, _ in by_group[fed]]
         assert len(by_group[fed]) == len({tuple(kernel) for kernel in by_group[fed]})

@@ -78,10 +78,9 @@ GROUPS: dict[str, tuple[str, float]] = {
     "color": ("pixelpath.color._kernels:warmup", 12.0),
     "raytrace-bvh": ("pixelpath.raytrace._bvh_kernels:warmup", 7.2),
     # The tracer's warm-up packs a one-pixel scene with the renderer's own code (BVH build,
-    # back-face test), so it also compiles those kernels if no other process did. Its packet
-    # searches (four rays at a time, vectorized) make it the longest group to compile: 30 s
-    # after "raytrace-bvh" in the same process, 45 s before it.
-    # The eye rays' shadow search, which "raytrace" loads from the cache (FEEDS).
+    # back-face test), so it also compiles those kernels if no other process did: it follows
+    # "raytrace-bvh" (FOLLOWS). The eye rays' shadow search, which "raytrace" loads from the
+    # cache, is a group of its own (FEEDS).
     "raytrace-shadows": ("pixelpath.raytrace._whitted_kernels:warm_shadow_rays", 10.4),
     "raytrace": ("pixelpath.raytrace._whitted_kernels:warmup", 11.4),
     "octree": ("pixelpath.hsr._kernels.octree:warmup", 6.4),
