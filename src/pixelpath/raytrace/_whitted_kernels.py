@@ -233,12 +233,16 @@ def render_rows(rows, scene, settings, work, out, x0, y0, rgb, image_depth, obje
     width = rgb.shape[1]
     scale = 1.0 / samples
     # A pixel none of whose eye rays was searched (outside scene.screen_bounds) shows the
-    # background: the same sums as the per-sample loop below makes for rays that miss.
+    # background: the same sums and scaling as the per-sample loop below makes for rays that
+    # miss.
     missed_red = missed_green = missed_blue = 0.0
     for _ in range(samples):
         missed_red += _clamp01(background[0])
         missed_green += _clamp01(background[1])
         missed_blue += _clamp01(background[2])
+    missed_red, missed_green, missed_blue = (
+        missed_red * scale, missed_green * scale, missed_blue * scale
+    )
     for k in range(rows.shape[0]):
         row = rows[k]
         y = y0 + row
@@ -251,11 +255,11 @@ def render_rows(rows, scene, settings, work, out, x0, y0, rgb, image_depth, obje
         counts[COUNT_PRIMARY] += unsearched
         counts[COUNT_MISSED] += unsearched
         for i in range(searched_first):
-            _store_pixel(out, i, missed_red * scale, missed_green * scale, missed_blue * scale,
-                         math.inf, MISS, 0.0, 0.0, 0.0)
+            _store_pixel(out, i, missed_red, missed_green, missed_blue, math.inf, MISS, 0.0,
+                         0.0, 0.0)
         for i in range(searched_stop, width):
-            _store_pixel(out, i, missed_red * scale, missed_green * scale, missed_blue * scale,
-                         math.inf, MISS, 0.0, 0.0, 0.0)
+            _store_pixel(out, i, missed_red, missed_green, missed_blue, math.inf, MISS, 0.0,
+                         0.0, 0.0)
         for i in range(searched_first, searched_stop):
             red = green = blue = 0.0
             nearest = math.inf

@@ -297,6 +297,9 @@ def _bounded_boxes(triangles: SceneTriangles, spheres: list, planes: list) -> np
 # Pixels added on each side of the projected boxes: far more than the rounding of any ray's
 # search, so that no ray that would hit something is left out.
 SCREEN_MARGIN = 2
+# The eight corners of a box, as picks of its min (0) or max (1) on each axis.
+_BOX_CORNERS = np.array([[(k >> axis) & 1 for axis in range(3)] for k in range(8)], dtype=bool)
+_BOX_CORNERS.flags.writeable = False
 
 
 def screen_bounds(camera: Camera, boxes: np.ndarray | None) -> np.ndarray:
@@ -336,8 +339,7 @@ def screen_bounds(camera: Camera, boxes: np.ndarray | None) -> np.ndarray:
     whole = np.array([0, camera.width, 0, camera.height], dtype=np.intp)
     if boxes is None or not np.isfinite(boxes).all():
         return whole
-    corner_picks = np.array([[(k >> axis) & 1 for axis in range(3)] for k in range(8)])
-    corners = np.where(corner_picks[None], boxes[:, None, 3:], boxes[:, None, :3])
+    corners = np.where(_BOX_CORNERS[None], boxes[:, None, 3:], boxes[:, None, :3])
     clip = world_to_clip(corners.reshape(-1, 3), camera).reshape(-1, 8, 4)
     if not camera.orthographic:  # w is the depth along the view (1 when orthographic)
         # Eye rays go forward from the eye: a box wholly behind its plane is out of reach.
