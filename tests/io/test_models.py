@@ -191,6 +191,55 @@ def test_stl_loads_with_the_default_camera_and_lights(tmp_path):
     assert len(scene.lights) == 3 and all(isinstance(x, DirectionalLight) for x in scene.lights)
 
 
+
+def _ascii_stl(solids: dict[str, list[list[list[float]]]]) -> str:
+    """An ASCII STL file with one ``solid NAME ... endsolid NAME`` block per entry."""
+    lines = []
+    for name, triangles in solids.items():
+        lines.append(f"solid {name}")
+        for triangle in triangles:
+            lines += ["  facet normal 0 0 1", "    outer loop"]
+            lines += [f"      vertex {x} {y} {z}" for x, y, z in triangle]
+            lines += ["    endloop", "  endfacet"]
+        lines.append(f"endsolid {name}")
+    return "\n".join(lines) + "\n"
+
+
+def test_stl_solids_become_named_objects_in_file_order(tmp_path):
+    path = tmp_path / "part.stl"
+    path.write_text(_ascii_stl({
+        "left": [[[0, 0, 0], [1, 0, 0], [0, 1, 0]]],
+        "right": [[[2, 0, 0], [3, 0, 0], [3, 1, 0]], [[2, 0, 0], [3, 1, 0], [2, 1, 0]]],
+        "nothing": [],  # a solid without facets gives no object
+    }))
+    left, right = pp.load_scene(path).objects
+    assert (left.name, right.name) == ("left", "right")
+    triangle = left.vertices[left.triangles]
+    np.testing.assert_array_equal(triangle, [[[0, 0, 0], [1, 0, 0], [0, 1, 0]]])
+    # the square's two triangles share their diagonal's corners: four vertices, not six
+    assert len(right.vertices) == 4 and right.face_count == 2
+    np.testing.assert_allclose(right.bounds(), [[2, 0, 0], [3, 1, 0]])
+    # Mesh.load reads the same file as one mesh of all the solids
+    joined = pp.Mesh.load(path)
+    assert len(joined.vertices) == 7 and joined.face_count == 3
+
+
+def test_stl_of_a_cad_part_with_two_bodies():
+    """trimesh's models/multibody.stl: two ASCII solids, as a CAD program exports them."""
+    path = DATA / "multibody.stl"
+    scene = pp.load_scene(path)
+    reference = trimesh.load(path, process=False)  # a trimesh Scene: one geometry per solid
+    assert [obj.name for obj in scene.objects] == ["bodyB", "bodyA"] == list(reference.geometry)
+    for obj, body in zip(scene.objects, reference.geometry.values(), strict=True):
+        # the same triangles (each as its nine corner coordinates), in any order
+        ours = np.unique(obj.vertices[obj.triangles].reshape(len(obj.triangles), 9), axis=0)
+        theirs = np.unique(body.vertices[body.faces].reshape(len(body.faces), 9), axis=0)
+        assert len(ours) == obj.face_count == len(body.faces)
+        np.testing.assert_array_equal(ours, theirs)
+    image = pp.render(dataclasses.replace(scene, camera=scene.camera.with_size(96, 72)))
+    assert set(np.unique(image.object_id).tolist()) == {-1, 0, 1}  # both bodies in sight
+    assert pp.Mesh.load(path).face_count == sum(len(b.faces) for b in reference.geometry.values())
+
 # --- materials ------------------------------------------------------------------------------
 
 

@@ -14,6 +14,10 @@ trimesh does the parsing. Its loaders triangulate polygons in two places, which 
   materials) are joined piece by piece, each keeping whole faces only when they are all the
   same size.
 
+STL: an ASCII file may hold several ``solid ... endsolid`` blocks (CAD programs write a part of
+several bodies so), which trimesh reads as one part each: :func:`read_mesh` joins them, and
+:func:`read_stl_solids` keeps them apart for model files, one object per solid.
+
 Normals stored in the file (OBJ ``vn``, PLY ``nx ny nz``) are returned when there is one per
 vertex. Files without them get their coincident vertices merged (keeping the order of first
 appearance), so that area-weighted vertex normals are smooth across seams: STL stores each
@@ -68,14 +72,7 @@ def read_mesh(path: str | Path) -> tuple[np.ndarray, list[np.ndarray] | np.ndarr
         raise ValueError(f"{path}: unsupported mesh format {suffix!r}; expected one of "
                          f"{', '.join(MESH_FORMATS)}")
     reader = {".obj": _read_obj, ".ply": _read_ply, ".stl": _read_stl}[suffix]
-    try:
-        vertices, faces, normals = reader(path)
-    except (IndexError, ValueError, TypeError, KeyError, AttributeError, EOFError) as exc:
-        if isinstance(exc, IndexError) and suffix == ".obj":  # load_obj indexes v by f lines
-            reason = "a face refers to a vertex that does not exist"
-        else:
-            reason = f"trimesh could not read this {suffix} file"
-        raise ValueError(f"{path}: {reason} ({type(exc).__name__}: {exc})") from None
+    vertices, faces, normals = _guarded(reader, path)
     if len(faces) == 0:
         raise ValueError(f"{path}: the file has no faces (an empty mesh or a point cloud)")
     vertices = np.asarray(vertices, dtype=np.float64)
@@ -84,6 +81,51 @@ def read_mesh(path: str | Path) -> tuple[np.ndarray, list[np.ndarray] | np.ndarr
         # area-weighted normals are smooth across seams (trimesh's default does the same).
         return *_merge_coincident(vertices, faces), None
     return vertices, faces, normals
+
+
+def read_stl_solids(path: str | Path) -> list[tuple[str, np.ndarray, np.ndarray]]:
+    """Read each solid of an STL file; return ``(name, vertices, triangles)`` per solid.
+
+    An ASCII STL file may hold several ``solid NAME ... endsolid`` blocks, as CAD programs
+    write a part of several bodies; :func:`read_mesh` joins them into one mesh, and this
+    keeps them apart, in file order, named as the file names them (a binary file, or an
+    ASCII one with a single solid, gives one solid named after the file). Coincident
+    corners are merged within each solid, as :func:`read_mesh` merges them; solids without
+    triangles are left out.
+
+    Raises
+    ------
+    ValueError
+        For files trimesh cannot read; the message starts with the path.
+
+    Examples
+    --------
+    >>> from pixelpath.io.meshes import read_stl_solids
+    >>> [name for name, _, _ in read_stl_solids("multibody.stl")]  # doctest: +SKIP
+    ['bodyB', 'bodyA']
+    """
+    path = Path(path)
+    solids = _guarded(_stl_solids, path)
+    if len(solids) == 1:
+        solids = [(path.stem, *solids[0][1:])]
+    return [
+        (name, *_merge_coincident(np.asarray(vertices, dtype=np.float64), faces))
+        for name, vertices, faces in solids
+        if len(faces)
+    ]
+
+
+def _guarded(reader, path: Path):
+    """Call ``reader(path)``, turning the errors of trimesh's parsers into a ValueError."""
+    suffix = path.suffix.lower()
+    try:
+        return reader(path)
+    except (IndexError, ValueError, TypeError, KeyError, AttributeError, EOFError) as exc:
+        if isinstance(exc, IndexError) and suffix == ".obj":  # load_obj indexes v by f lines
+            reason = "a face refers to a vertex that does not exist"
+        else:
+            reason = f"trimesh could not read this {suffix} file"
+        raise ValueError(f"{path}: {reason} ({type(exc).__name__}: {exc})") from None
 
 
 def _merge_coincident(vertices: np.ndarray, faces: Any) -> tuple[np.ndarray, Any]:
@@ -164,11 +206,27 @@ def _read_ply(path: Path) -> tuple[np.ndarray, Any, Any]:
 
 
 def _read_stl(path: Path) -> tuple[np.ndarray, Any, Any]:
+    solids = _stl_solids(path)
+    if not solids:
+        return np.zeros((0, 3)), [], None
+    offsets = np.cumsum([0] + [len(vertices) for _, vertices, _ in solids])
+    vertices = np.vstack([vertices for _, vertices, _ in solids])
+    faces = np.vstack([
+        faces + offset for (_, _, faces), offset in zip(solids, offsets[:-1], strict=True)
+    ])
+    return vertices, faces, None
+
+
+def _stl_solids(path: Path) -> list[tuple[str, np.ndarray, np.ndarray]]:
+    """Return the file's solids as trimesh reads them: (name, vertices, triangles), in order."""
     from trimesh.exchange.stl import load_stl
 
     with path.open("rb") as file:
         loaded = load_stl(file)
-    return loaded["vertices"], np.asarray(loaded["faces"]), None
+    if "geometry" in loaded:  # an ASCII file: one part per solid, by name
+        parts = loaded["geometry"].items()
+        return [(name, part["vertices"], np.asarray(part["faces"])) for name, part in parts]
+    return [(path.stem, loaded["vertices"], np.asarray(loaded["faces"]))]
 
 
 def _concatenate(parts: list[dict[str, Any]]) -> tuple[np.ndarray, list[np.ndarray], Any]:

@@ -9,8 +9,9 @@ transform as trimesh's scene graph does, to the bit.
 What a model file gives (:func:`read_model`)
 --------------------------------------------
 - **Objects**: one :class:`~pixelpath.scene.Mesh` per glTF node and primitive (per material
-  group for OBJ), named after the glTF node, else its mesh, with the node's world transform
-  applied. The graph is walked node by node (in the order of trimesh's
+  group for OBJ, per ``solid`` block of an ASCII STL file, as CAD programs write a part of
+  several bodies), named after the glTF node, else its mesh (the STL solid's name), with the
+  node's world transform applied. The graph is walked node by node (in the order of trimesh's
   ``scene.graph.nodes_geometry``), never through ``Scene.dump()``, which drops glTF
   ``COLOR_0`` stored beside a material.
 - **Texture coordinates**: pixelpath's uv have v up, (0, 0) the bottom-left of the image.
@@ -277,8 +278,8 @@ def _read_objects(path: Path) -> tuple[list[Mesh], dict | None]:
 
 def _read_checked(path: Path) -> tuple[list[Mesh], dict | None]:
     suffix = path.suffix.lower()
-    if suffix == ".stl":  # one mesh, no materials: pixelpath's own reader merges the soup
-        return [Mesh.load(path, _plain_material())], None
+    if suffix == ".stl":  # no materials; a file of several solids gives one object each
+        return _stl_objects(path), None
     resolver = _confined_resolver(path)
     if suffix in (".glb", ".gltf"):
         # the checks read the JSON, then trimesh reads the file from its start: a GLB's binary
@@ -297,6 +298,19 @@ def _read_checked(path: Path) -> tuple[list[Mesh], dict | None]:
     if not objects:
         raise ValueError(f"{path}: the file has no triangle meshes")
     return objects, gltf
+
+
+def _stl_objects(path: Path) -> list[Mesh]:
+    """Return an STL file's solids as meshes of the plain material, named after the solids."""
+    from pixelpath.io.meshes import read_stl_solids
+
+    solids = read_stl_solids(path)
+    if not solids:
+        raise ValueError(f"{path}: the file has no triangle meshes")
+    return [
+        Mesh(vertices, faces, _plain_material(), name=name, source={"path": path})
+        for name, vertices, faces in solids
+    ]
 
 
 class _Part(NamedTuple):
