@@ -298,6 +298,37 @@ def test_obj_with_spaces_and_missing_texture_warns(tmp_path):
     assert mesh.material.texture is None
 
 
+
+_TRIANGLE_OBJ = "v 0 0 0\nv 1 0 0\nv 0 1 0\n{uv}f {faces}\n"
+_TRIANGLE_PLY = (
+    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+    "property float z\n{uv_header}element face 1\nproperty list uchar int vertex_indices\n"
+    "end_header\n0 0 0{uv0}\n1 0 0{uv1}\n0 1 0{uv2}\n3 0 1 2\n"
+)
+
+
+@pytest.mark.parametrize("suffix", ["obj", "ply"])
+def test_texture_coordinates_without_a_material_keep_the_plain_material(tmp_path, suffix):
+    """uv and no texture (OBJ ``vt`` without ``.mtl``, PLY ``s t``): trimesh's 2 x 2 grey
+    stand-in picture is not a texture; the model is drawn as the same file without uv."""
+    if suffix == "obj":
+        plain = _TRIANGLE_OBJ.format(uv="", faces="1 2 3")
+        with_uv = _TRIANGLE_OBJ.format(uv="vt 0 0\nvt 1 0\nvt 0 1\n", faces="1/1 2/2 3/3")
+    else:
+        plain = _TRIANGLE_PLY.format(uv_header="", uv0="", uv1="", uv2="")
+        with_uv = _TRIANGLE_PLY.format(uv_header="property float s\nproperty float t\n",
+                                       uv0=" 0 0", uv1=" 1 0", uv2=" 0 1")
+    (tmp_path / f"plain.{suffix}").write_text(plain)
+    (tmp_path / f"uv.{suffix}").write_text(with_uv)
+    (mesh,) = read_model(tmp_path / f"uv.{suffix}").objects
+    assert mesh.uv is not None and mesh.material.texture is None
+    np.testing.assert_allclose(mesh.material.color, [0.8, 0.8, 0.8])  # "no material"
+    scenes = [pp.load_scene(tmp_path / f"{name}.{suffix}") for name in ("plain", "uv")]
+    images = [pp.render(dataclasses.replace(scene, camera=scene.camera.with_size(64, 48)))
+              for scene in scenes]
+    assert np.asarray(images[0]).max() > 0.5  # lit light grey, not the stand-in's dark grey
+    np.testing.assert_array_equal(np.asarray(images[0]), np.asarray(images[1]))
+
 # --- camera and lights --------------------------------------------------------------------------
 
 

@@ -77,8 +77,8 @@ MTL ``Ks``, ``Ns``            ``ks = mean(Ks) * min(1, Ns / 100)``, ``shininess 
 MTL ``map_Kd``                ``texture`` (a missing file: a warning and ``Kd`` alone)
 MTL ``d``                     ``transparency = 1 - d`` (``Tr`` is ignored: exporters disagree
                               on its meaning)
-no material (PLY, STL)        light grey ``(0.8, 0.8, 0.8)``, ``kd = 1``, ``ks = 0.2``,
-                              ``shininess = 32``
+no material (PLY, STL, OBJ    light grey ``(0.8, 0.8, 0.8)``, ``kd = 1``, ``ks = 0.2``,
+without ``.mtl``)             ``shininess = 32``, texture coordinates or not
 ============================  =================================================================
 
 trimesh's materials do not say which glTF material they came from, so the sampler is found
@@ -696,7 +696,7 @@ def _plain_material() -> Material:
 
 def _material(path: Path, visual: Any, gltf: dict | None, shared: dict) -> Material:
     source = getattr(visual, "material", None)
-    if source is None:
+    if source is None or _stands_in(source):
         return _plain_material()
     key = ("material", id(source))
     if key not in shared:
@@ -705,6 +705,26 @@ def _material(path: Path, visual: Any, gltf: dict | None, shared: dict) -> Mater
         else:
             shared[key] = _simple_material(path, source, shared)
     return shared[key]
+
+
+def _stands_in(source: Any) -> bool:
+    """Whether ``source`` is the material trimesh makes up for texture coordinates without one.
+
+    A PLY file with ``s, t`` columns, or an OBJ file with ``vt`` lines and no (or a missing)
+    ``.mtl`` file, has no material; trimesh gives it ``empty_material()``: no MTL values and a
+    2 x 2 picture of one grey (100/255), which, taken for a texture, darkened the model to a
+    tenth of the light grey of a file without texture coordinates.
+    """
+    from trimesh.visual.material import color_image
+
+    image = getattr(source, "image", None)
+    return (
+        type(source).__name__ == "SimpleMaterial"
+        and not getattr(source, "kwargs", None)
+        and image is not None
+        and image.size == (2, 2)
+        and image.tobytes() == color_image().tobytes()
+    )
 
 
 def _pbr_material(path: Path, source: Any, gltf: dict | None, shared: dict) -> Material:
