@@ -474,6 +474,26 @@ def test_absurd_counts_are_refused(tmp_path):
         read_model(_accessor_edit(tmp_path, 0, count=10**12))
 
 
+def _sparse(values_view: int) -> dict:
+    """A sparse block replacing element 0 with the first element of bufferView ``values_view``."""
+    return {"count": 1, "indices": {"bufferView": 2, "componentType": 5123},
+            "values": {"bufferView": values_view}}
+
+
+def test_sparse_vertex_accessors_are_refused(tmp_path):
+    # trimesh reads the dense data and ignores the substitutions: the quad would load unmoved
+    path = _accessor_edit(tmp_path, 0, sparse=_sparse(0))
+    with pytest.raises(ValueError, match=r"model\.gltf: mesh 0 primitive 0 reads accessor 0, a sp"):
+        read_model(path)
+
+
+def test_sparse_morph_targets_are_not_refused(tmp_path):
+    gltf = quad_gltf()
+    gltf["accessors"].append({**gltf["accessors"][0], "sparse": _sparse(0)})
+    gltf["meshes"][0]["primitives"][0]["targets"] = [{"POSITION": 3}]  # not drawn
+    (mesh,) = read_model(write(tmp_path, gltf)).objects
+    np.testing.assert_array_equal(mesh.vertices, QUAD)
+
 def test_indices_out_of_range_are_refused(tmp_path):
     indices = np.array([0, 1, 2, 0, 2, 99], dtype="<u2")
     with pytest.raises(ValueError, match=r"model\.gltf"):

@@ -101,7 +101,8 @@ with the file's path:
   without DracoPy, ``EXT_meshopt_compression``, ``KHR_texture_basisu``, ...) are named in the
   error, never loaded as empty geometry.
 - Accessors claiming more data than their buffer views hold (a header that says 10^12
-  vertices) are refused before anything is allocated.
+  vertices) are refused before anything is allocated, and so are primitives whose vertices or
+  indices come from a sparse accessor, which trimesh does not decode.
 - Truncated or corrupt files, undecodable textures, faces referring to missing vertices and
   non-finite positions are refused; a texture file that does not exist gives a warning and the
   material colour alone.
@@ -514,6 +515,7 @@ def _checked_gltf(path: Path, file: BinaryIO) -> dict:
                 )
     _check_extensions(path, gltf)
     _check_accessors(path, gltf, binary_length)
+    _check_not_sparse(path, gltf)
     return gltf
 
 
@@ -603,6 +605,33 @@ def _check_accessors(path: Path, gltf: dict, binary_length: int | None) -> None:
             size = min(size, binary_length) if isinstance(size, int) else binary_length
         if not isinstance(end, int) or not isinstance(size, int) or end > size:
             raise ValueError(f"{path}: bufferView {view_index} runs past the end of its buffer")
+
+
+def _check_not_sparse(path: Path, gltf: dict) -> None:
+    """Refuse primitives whose vertices or indices come from a sparse accessor.
+
+    trimesh 5 reads an accessor's dense data and ignores its ``sparse`` substitutions (or reads
+    zeros where it has no bufferView): such a model would load with the wrong geometry.
+    Sparse accessors of morph targets, which pixelpath does not draw, are left alone.
+    """
+    accessors = _list(path, gltf, "accessors")
+    for m, mesh in enumerate(_list(path, gltf, "meshes")):
+        primitives = mesh.get("primitives")
+        for p, primitive in enumerate(primitives if isinstance(primitives, list) else []):
+            if not isinstance(primitive, dict):
+                continue
+            attributes = primitive.get("attributes")
+            used = [*attributes.values()] if isinstance(attributes, dict) else []
+            for index in [*used, primitive.get("indices")]:
+                if isinstance(index, int) and 0 <= index < len(accessors) and (
+                    "sparse" in accessors[index]
+                ):
+                    raise ValueError(
+                        f"{path}: mesh {m} primitive {p} reads accessor {index}, a sparse "
+                        "accessor, which trimesh does not decode (the geometry would be "
+                        "wrong); re-export the model without sparse accessors (for example "
+                        "with gltf-transform)"
+                    )
 
 
 # --- meshes and materials ---------------------------------------------------------------------
