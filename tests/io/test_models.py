@@ -114,6 +114,20 @@ def test_real_files_load_with_their_parts_and_trimesh_bounds(name, parts):
     np.testing.assert_allclose(scene.bounds(), expected, atol=1e-9)
 
 
+def test_parts_are_named_after_their_nodes(tmp_path):
+    gltf = quad_gltf()
+    primitive = gltf["meshes"][0]["primitives"][0]
+    gltf["meshes"][0]["primitives"].append(dict(primitive))  # a mesh of two primitives
+    gltf["nodes"].append({"mesh": 0, "translation": [2, 0, 0]})  # unnamed, mesh unnamed too
+    gltf["scenes"][0]["nodes"].append(1)
+    names = sorted(obj.name for obj in read_model(write(tmp_path, gltf)).objects)
+    # each primitive of node "quad", then those of node 1, which has no name (trimesh calls
+    # such parts "GLTF", "GLTF_1")
+    assert names == ["node 1", "node 1_1", "quad", "quad_1"]
+    gltf["meshes"][0]["name"] = "square"  # an unnamed node takes its mesh's name
+    names = sorted(obj.name for obj in read_model(write(tmp_path, gltf)).objects)
+    assert names == ["quad", "quad_1", "square", "square_1"]
+
 def test_textured_files_keep_texture_and_uv():
     for name in ("Duck.glb", "BoxTextured.glb", "fuze.obj"):
         (mesh,) = read_model(DATA / name).objects

@@ -10,10 +10,11 @@ What a model file gives (:func:`read_model`)
 --------------------------------------------
 - **Objects**: one :class:`~pixelpath.scene.Mesh` per glTF node and primitive (per material
   group for OBJ, per ``solid`` block of an ASCII STL file, as CAD programs write a part of
-  several bodies), named after the glTF node, else its mesh (the STL solid's name), with the
-  node's world transform applied. The graph is walked node by node (in the order of trimesh's
-  ``scene.graph.nodes_geometry``), never through ``Scene.dump()``, which drops glTF
-  ``COLOR_0`` stored beside a material.
+  several bodies), named after the glTF node, else its mesh, else "node <index>" (the STL
+  solid's name), with the node's world transform applied; a node's second primitive is
+  "<name>_1", its third "<name>_2", and so on. The graph is walked node by node (in the
+  order of trimesh's ``scene.graph.nodes_geometry``), never through ``Scene.dump()``, which
+  drops glTF ``COLOR_0`` stored beside a material.
 - **Texture coordinates**: pixelpath's uv have v up, (0, 0) the bottom-left of the image.
   trimesh already flips glTF's v when it loads a file (OBJ's is v up already), so its uv are
   used as they are (the tests pin this with a 2 x 2 texture in a hand-written glTF).
@@ -399,7 +400,7 @@ def _gltf_parts(path: Path, resolver: Any, file: BinaryIO) -> list[_Part]:
         normals = kwargs.get("vertex_normals")
         parts.append(
             _Part(
-                node,
+                _gltf_node(parent, node),
                 name,
                 _world_matrix(parent, node, known),
                 kwargs["vertices"],
@@ -410,6 +411,18 @@ def _gltf_parts(path: Path, resolver: Any, file: BinaryIO) -> list[_Part]:
             )
         )
     return parts
+
+
+def _gltf_node(parent: dict[str, tuple[str, np.ndarray]], frame: str) -> str:
+    """Return the glTF node a part's frame stands for in trimesh's graph.
+
+    A node whose mesh has several primitives gets a child frame per primitive, named
+    "<node>_<six hex digits>"; the part is the node's all the same.
+    """
+    above = parent.get(frame, (None,))[0]
+    if above is not None and re.fullmatch(re.escape(above) + r"_[0-9a-f]{6}", frame):
+        return above
+    return frame
 
 
 _IDENTITY = np.eye(4)
@@ -516,6 +529,7 @@ def _checked_gltf(path: Path, file: BinaryIO) -> dict:
     _check_extensions(path, gltf)
     _check_accessors(path, gltf, binary_length)
     _check_not_sparse(path, gltf)
+    _list(path, gltf, "nodes")  # the parts' names are looked up in it
     return gltf
 
 
@@ -643,15 +657,39 @@ def _meshes(path: Path, parts: list[_Part], gltf: dict | None) -> list[Mesh]:
     # Parts share trimesh's material and image objects: each is mapped (and each picture
     # decoded) once, and parts sharing a picture share one Texture, packed once to render.
     shared: dict[tuple, Any] = {}
+    primitives: dict[str, int] = {}  # parts named after each node so far
     for part in parts:
         if len(part.faces) == 0:
             continue
-        name = part.node if gltf is None or part.node in node_names else part.geometry
+        name = _node_name(part.node, gltf, node_names)
+        if name is None:
+            name = part.geometry
+        else:  # a node's second primitive is "name_1", its third "name_2", as trimesh does
+            count = primitives.get(part.node, 0)
+            primitives[part.node] = count + 1
+            name = f"{name}_{count}" if count else name
         try:
             meshes.append(_mesh(path, part, name, gltf, shared))
         except (ValueError, TypeError) as exc:
             raise type(exc)(f"{path}: part {name!r}: {exc}") from None
     return meshes
+
+
+def _node_name(node: str, gltf: dict | None, node_names: set) -> str | None:
+    """Return the name a part takes from its node, or None to take its mesh's name.
+
+    A node named in the file gives its name (every part of a file without a node graph,
+    OBJ or PLY, is named so too); an unnamed node (trimesh calls it by its index) whose mesh
+    has no name either, for which trimesh makes up "GLTF", gives "node <index>".
+    """
+    if gltf is None or node in node_names:
+        return node
+    nodes, meshes = gltf.get("nodes", []), gltf.get("meshes", [])  # lists of objects (checked)
+    index = int(node) if node.isdigit() else -1
+    mesh = nodes[index].get("mesh") if 0 <= index < len(nodes) else None
+    if isinstance(mesh, int) and 0 <= mesh < len(meshes) and not meshes[mesh].get("name"):
+        return f"node {index}"
+    return None
 
 
 def _mesh(path: Path, part: _Part, name: str, gltf: dict | None, shared: dict) -> Mesh:
