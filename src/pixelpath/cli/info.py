@@ -1,4 +1,4 @@
-"""``pixelpath info``: summarize a scene file: objects, faces, triangles, lights, camera, bounds."""
+"""``pixelpath info``: summarize a scene or model file: objects, faces, lights, camera, bounds."""
 
 from __future__ import annotations
 
@@ -15,13 +15,14 @@ def register(subparsers: Any) -> None:
     parser = add_command(
         subparsers,
         "info",
-        summary="summarize a scene file: objects, faces and triangles, lights, camera, bounds",
+        summary="summarize a scene or model file: objects, faces, lights, camera, bounds",
         description=(
             "Load a TOML scene file (checking it completely, meshes included) and print its "
             "objects with their material, face and triangle counts and bounds, its lights, its "
-            "camera and the totals. SCENE may also name a bundled demo scene."
+            "camera and the totals. SCENE may also name a model file (glTF/GLB, OBJ+MTL, PLY, "
+            "STL: its parts, named after their nodes) or a bundled demo scene."
         ),
-        examples=["pixelpath info scene.toml", "pixelpath info scene.toml --json"],
+        examples=["pixelpath info scene.toml", "pixelpath info Duck.glb --json"],
         run=run,
     )
     parser.add_argument(

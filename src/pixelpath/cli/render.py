@@ -28,7 +28,7 @@ def register(subparsers: Any) -> None:
     parser = add_command(
         subparsers,
         "render",
-        summary="render a TOML scene file to an image (any hidden-surface method, ray tracing)",
+        summary="render a scene or model file to an image (any hidden-surface method, ray tracing)",
         description=(
             "Render a scene file with a hidden-surface method and a shading mode and write the "
             "image (PNG, JPEG, ... by extension; written atomically). SCENE may also name a "
