@@ -142,6 +142,14 @@ def test_resume_renders_only_what_is_missing_or_broken(tmp_path):
     assert _files(folder) == whole
 
 
+def test_the_orbit_height_recorded_is_the_one_used(tmp_path):
+    folder = tmp_path / "v"
+    pp.render_views(DUCK, 2, folder, size=(24, 24))
+    recorded = json.loads((folder / "transforms.json").read_text())["pixelpath"]["elevation"]
+    assert recorded == 22.0  # the default orbit's, not "None"
+    # the same height asked for by number is the same request: the dataset resumes
+    pp.render_views(DUCK, 2, folder, size=(24, 24), elevation=22, resume=True)
+
 def test_a_folder_holding_a_dataset_is_kept_unless_asked(tmp_path):
     folder = tmp_path / "v"
     pp.render_views(DUCK, 3, folder, size=(32, 32))

@@ -427,7 +427,10 @@ def plan_views(
         "views": len(cameras),
         "layout": layout,
         "seed": seed if layout == "random" else None,
-        "elevation": elevation if layout == "orbit" else None,
+        # the orbit's height itself, so that the default and the same number asked for
+        # make the same request (a dataset resumed either way)
+        "elevation": (_poses.ELEVATION if elevation is None else float(elevation))
+        if layout == "orbit" else None,
         "hemisphere": hemisphere if layout != "orbit" else None,
         "distance": float(np.linalg.norm(cameras.eyes[0] - cameras.target)),
         "near": cameras.near,
