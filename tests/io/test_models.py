@@ -722,6 +722,45 @@ def test_render_keeps_the_texture_orientation(tmp_path):
     assert top_right[1] > 0.5 > top_right[0]  # green
 
 
+def _transformed_quad(tmp_path, **transform) -> Path:
+    gltf = quad_gltf(image=_png(PICTURE))
+    gltf["materials"][0]["doubleSided"] = True
+    texture = gltf["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]
+    texture["extensions"] = {"KHR_texture_transform": transform}
+    gltf["extensionsUsed"] = gltf["extensionsRequired"] = ["KHR_texture_transform"]
+    return write(tmp_path, gltf)
+
+
+def test_khr_texture_transform_moves_the_texture_coordinates(tmp_path):
+    # glTF's uv (v down) of the corners (0,0,0), (1,0,0), (1,1,0), (0,1,0): (0,1), (1,1),
+    # (1,0), (0,0). Offset (0.5, 0) and scale (0.5, 1): u -> u/2 + 1/2, v kept; then v up
+    path = _transformed_quad(tmp_path, offset=[0.5, 0], scale=[0.5, 1])
+    (mesh,) = read_model(path).objects
+    np.testing.assert_allclose(mesh.uv, [[0.5, 0], [1, 0], [1, 1], [0.5, 1]])
+    # a quarter turn: (u, v) -> (cos u + sin v, -sin u + cos v) = (v, -u)
+    (mesh,) = read_model(_transformed_quad(tmp_path, rotation=math.pi / 2)).objects
+    np.testing.assert_allclose(mesh.uv, [[1, 1], [1, 2], [0, 2], [0, 1]], atol=1e-12)
+    with pytest.raises(ValueError, match=r"model\.gltf: part 'quad': KHR_texture_transform sc"):
+        read_model(_transformed_quad(tmp_path, scale=[1, "big"]))
+
+
+def test_a_second_set_of_texture_coordinates_is_warned_of(tmp_path):
+    gltf = quad_gltf(image=_png(PICTURE))
+    gltf["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["texCoord"] = 1
+    with pytest.warns(UserWarning, match=r"model\.gltf: material 'm'.*TEXCOORD_1.*set 0"):
+        (mesh,) = read_model(write(tmp_path, gltf)).objects
+    assert mesh.material.texture is not None
+
+def test_khr_texture_transform_shows_in_the_picture(tmp_path):
+    # the picture's right column (green above white) stretched over the whole quad
+    scene = read_model(_transformed_quad(tmp_path, offset=[0.5, 0], scale=[0.5, 1]))
+    camera = pp.Camera(eye=(0.5, 0.5, 3), target=(0.5, 0.5, 0), fov=20, width=40, height=40)
+    scene = pp.Scene(camera, scene.objects, [], ambient=1.0, encoding="srgb")
+    picture = np.asarray(pp.render(scene, shading="flat"))
+    bottom_left, top_left = picture[27, 13], picture[13, 13]
+    assert min(bottom_left) > 0.5  # white, where the untransformed texture shows blue
+    assert top_left[1] > 0.5 > top_left[0]  # green, where it shows red
+
 def test_cli_render_writes_a_png_of_a_model(tmp_path):
     from pixelpath.cli import main
     from pixelpath.io import read_image

@@ -61,6 +61,9 @@ glTF sampler of the           ``texture_wrap`` from ``wrapS``: REPEAT (10497, th
                               LINEAR), LINEAR (9729) "bilinear", the mipmap filters
                               (9984-9987) "trilinear", absent "trilinear" (glTF leaves the
                               choice to the viewer). No sampler: "repeat", "trilinear".
+``KHR_texture_transform``     the base-colour texture's offset, rotation and scale, applied
+(glTF)                        to the part's ``uv``; a ``texCoord`` other than 0 gives a
+                              warning, and set 0 is used
 glTF ``doubleSided``          ``double_sided``
 glTF ``alphaMode``            OPAQUE: every alpha ignored (``alpha_cutoff = None``). MASK:
                               ``alpha_cutoff`` = ``alphaCutoff`` (0.5 when absent): where
@@ -158,6 +161,7 @@ _KNOWN_REQUIRED = {
     "KHR_materials_emissive_strength",
     "KHR_materials_pbrSpecularGlossiness",
     "KHR_materials_unlit",
+    "KHR_texture_transform",  # applied to the base-colour texture's coordinates
 }
 _COMPONENT_BYTES = {5120: 1, 5121: 1, 5122: 2, 5123: 2, 5125: 4, 5126: 4}
 _TYPE_COMPONENTS = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4, "MAT2": 4, "MAT3": 9, "MAT4": 16}
@@ -704,7 +708,7 @@ def _mesh(path: Path, part: _Part, name: str, gltf: dict | None, shared: dict) -
         normals = normals if v.all_finite(normals) else None
     vertices, normals, faces = _placed(part.matrix, vertices, normals, faces, shared)
     material = _material(path, part.visual, gltf, shared)
-    uv = _uv(part.visual, len(vertices))
+    uv = _texture_transformed(_uv(part.visual, len(vertices)), part.visual, gltf)
     colors = _vertex_colors(part.colors, len(vertices), linear=gltf is not None)
     return Mesh(vertices, faces, material, normals, colors, uv, name)
 
@@ -743,6 +747,59 @@ def _uv(visual: Any, count: int) -> np.ndarray | None:
         return None
     uv = np.asarray(uv, dtype=np.float64)
     return uv if v.all_finite(uv) else None
+
+
+def _texture_transformed(uv: np.ndarray | None, visual: Any, gltf: dict | None) -> Any:
+    """Return ``uv`` moved by the base-colour texture's ``KHR_texture_transform``, if it has one.
+
+    The extension maps glTF texture coordinates (v down) by ``T(offset) R(rotation) S(scale)``:
+    u' = cos r sx u + sin r sy v + ox and v' = -sin r sx u + cos r sy v + oy. trimesh does not
+    apply it; pixelpath's uv (v up, ``1 - v`` of glTF's) are turned back, moved and turned again.
+    """
+    if uv is None:
+        return uv
+    ref = _base_color_texture(gltf, getattr(visual, "material", None))
+    extensions = ref.get("extensions") if isinstance(ref, dict) else None
+    transform = extensions.get("KHR_texture_transform") if isinstance(extensions, dict) else None
+    if not isinstance(transform, dict):
+        return uv
+    ox, oy = _numbers(transform, "offset", (0.0, 0.0))
+    sx, sy = _numbers(transform, "scale", (1.0, 1.0))
+    (rotation,) = _numbers(transform, "rotation", (0.0,))
+    cos, sin = math.cos(rotation), math.sin(rotation)
+    u, v = uv[:, 0], 1.0 - uv[:, 1]
+    moved = np.empty_like(uv)
+    moved[:, 0] = cos * sx * u + sin * sy * v + ox
+    moved[:, 1] = 1.0 - (-sin * sx * u + cos * sy * v + oy)
+    return moved
+
+
+def _base_color_texture(gltf: dict | None, source: Any) -> Any:
+    """Return the glTF texture reference of ``source``'s base colour, None when there is none.
+
+    trimesh's material is matched to the one glTF material of the same name. The reference
+    is returned as the file has it, checked by its readers.
+    """
+    index = _gltf_material_index(gltf, getattr(source, "name", None))
+    if index is None:
+        return None
+    pbr = gltf["materials"][index].get("pbrMetallicRoughness")
+    return pbr.get("baseColorTexture") if isinstance(pbr, dict) else None
+
+
+def _numbers(values: dict, key: str, default: tuple[float, ...]) -> tuple[float, ...]:
+    """Return ``values[key]``: ``len(default)`` finite numbers (one may stand alone)."""
+    found = values.get(key, default)
+    if len(default) == 1 and not isinstance(found, list | tuple):
+        found = [found]
+    if not (
+        isinstance(found, list | tuple)
+        and len(found) == len(default)
+        and all(isinstance(x, int | float) and not isinstance(x, bool) for x in found)
+        and all(math.isfinite(x) for x in found)
+    ):
+        raise ValueError(f"KHR_texture_transform {key} must be {len(default)} finite number(s)")
+    return tuple(float(x) for x in found)
 
 
 def _vertex_colors(colors: Any, count: int, *, linear: bool) -> np.ndarray | None:
@@ -991,21 +1048,24 @@ def _sampler(path: Path, source: Any, gltf: dict | None, shared: dict) -> tuple[
     ValueError
         When the texture reference or the sampler is not valid glTF.
     """
-    index = _gltf_material_index(gltf, source.name)
-    if index is None:
-        return "trilinear", "repeat"
-    name = source.name
-    pbr = gltf["materials"][index].get("pbrMetallicRoughness")
-    ref = pbr.get("baseColorTexture") if isinstance(pbr, dict) else None
+    ref = _base_color_texture(gltf, source)
     if ref is None:
         return "trilinear", "repeat"
+    name = source.name
     sampler = _sampler_json(gltf, ref, f"material {name!r}")
+    coordinates = ref.get("texCoord", 0)
+    if coordinates != 0:
+        warnings.warn(
+            f"{path}: material {name!r}: the texture reads texture coordinates set "
+            f"{coordinates!r} (TEXCOORD_{coordinates}); pixelpath reads set 0 only and uses it",
+            stacklevel=2,
+        )
     wrap_s = _code(sampler, "wrapS", _WRAPS, 10497, name)
     wrap_t = _code(sampler, "wrapT", _WRAPS, 10497, name)
     minify = _code(sampler, "minFilter", _MIN_FILTERS, None, name)
     magnify = _code(sampler, "magFilter", {_NEAREST: "nearest", _LINEAR: "bilinear"}, None, name)
-    if wrap_t != wrap_s and ("sampler warned", index) not in shared:
-        shared["sampler warned", index] = True
+    if wrap_t != wrap_s and ("sampler warned", name) not in shared:
+        shared["sampler warned", name] = True
         warnings.warn(
             f"{path}: material {name!r}: the texture's wrapT ({wrap_t}, {_WRAPS[wrap_t]!r}) "
             f"differs from its wrapS ({wrap_s}, {_WRAPS[wrap_s]!r}); pixelpath has one wrap "
