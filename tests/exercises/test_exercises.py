@@ -111,6 +111,14 @@ def test_answers_typed_as_text_are_read_and_rounded_answers_pass():
     assert clipping.check({"polygon": text}).correct
 
 
+@pytest.mark.parametrize("topic", exercises.TOPICS)
+def test_answers_typed_as_json_text_pass(topic):
+    """A script or an autograder may type lists as JSON: ["C", "D"], [[3.0, 10.0], ...]."""
+    ex = exercises.make(topic, seed=0)
+    typed = {name: json.dumps(value) if isinstance(value, list | tuple) else value
+             for name, value in ex.answer.items()}
+    assert ex.check(typed).correct
+
 def test_a_miss_is_answered_none():
     ex = next(e for e in (exercises.make("ray-sphere", s, "edge") for s in range(200))
               if e.answer["t"] is None)
