@@ -424,11 +424,13 @@ def _gltf_node(parent: dict[str, tuple[str, np.ndarray]], frame: str) -> str:
     "<node>_<six hex digits>"; the part is the node's all the same.
     """
     above = parent.get(frame, (None,))[0]
-    if above is not None and re.fullmatch(re.escape(above) + r"_[0-9a-f]{6}", frame):
-        return above
-    return frame
+    if above is None or not frame.startswith(f"{above}_"):
+        return frame
+    suffix = frame[len(above) + 1 :]
+    return above if len(suffix) == 6 and all(c in _HEX for c in suffix) else frame
 
 
+_HEX = frozenset("0123456789abcdef")
 _IDENTITY = np.eye(4)
 _IDENTITY_BYTES = _IDENTITY.tobytes()
 
@@ -633,6 +635,8 @@ def _check_not_sparse(path: Path, gltf: dict) -> None:
     Sparse accessors of morph targets, which pixelpath does not draw, are left alone.
     """
     accessors = _list(path, gltf, "accessors")
+    if not any("sparse" in accessor for accessor in accessors):
+        return
     for m, mesh in enumerate(_list(path, gltf, "meshes")):
         primitives = mesh.get("primitives")
         for p, primitive in enumerate(primitives if isinstance(primitives, list) else []):
@@ -756,8 +760,9 @@ def _texture_transformed(uv: np.ndarray | None, visual: Any, gltf: dict | None) 
     u' = cos r sx u + sin r sy v + ox and v' = -sin r sx u + cos r sy v + oy. trimesh does not
     apply it; pixelpath's uv (v up, ``1 - v`` of glTF's) are turned back, moved and turned again.
     """
-    if uv is None:
-        return uv
+    used = (gltf or {}).get("extensionsUsed")
+    if uv is None or not isinstance(used, list) or "KHR_texture_transform" not in used:
+        return uv  # glTF lists every extension a file uses
     ref = _base_color_texture(gltf, getattr(visual, "material", None))
     extensions = ref.get("extensions") if isinstance(ref, dict) else None
     transform = extensions.get("KHR_texture_transform") if isinstance(extensions, dict) else None
@@ -820,12 +825,14 @@ def _plain_material() -> Material:
 
 def _material(path: Path, visual: Any, gltf: dict | None, shared: dict) -> Material:
     source = getattr(visual, "material", None)
-    if source is None or _stands_in(source):
+    if source is None:
         return _plain_material()
     key = ("material", id(source))
     if key not in shared:
         if type(source).__name__ == "PBRMaterial":
             shared[key] = _pbr_material(path, source, gltf, shared)
+        elif _stands_in(source):
+            shared[key] = _plain_material()
         else:
             shared[key] = _simple_material(path, source, shared)
     return shared[key]
@@ -843,8 +850,7 @@ def _stands_in(source: Any) -> bool:
 
     image = getattr(source, "image", None)
     return (
-        type(source).__name__ == "SimpleMaterial"
-        and not getattr(source, "kwargs", None)
+        not getattr(source, "kwargs", None)
         and image is not None
         and image.size == (2, 2)
         and image.tobytes() == color_image().tobytes()
