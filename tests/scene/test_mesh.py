@@ -44,6 +44,54 @@ def test_fan_triangulation_of_mixed_polygons():
     assert mesh.faces == [[0, 1, 2, 3], [4, 5, 6, 7, 8], [0, 1, 9]]
 
 
+# A "C": the square 0..3 with the notch 1..3 x 1..2 cut from its right side (area 7). The fan
+# from its first corner would also cover the notch (the fan's triangles add up to 11).
+C_SHAPE = [[0, 0], [3, 0], [3, 1], [1, 1], [1, 2], [3, 2], [3, 3], [0, 3]]
+
+
+def _covers_the_polygon(mesh: Mesh, outline, turn=None) -> None:
+    """The triangles, turned back into the polygon's plane, tile the polygon exactly."""
+    from shapely.geometry import Polygon
+    from shapely.ops import unary_union
+
+    turn = np.eye(3) if turn is None else turn
+    flat = (mesh.vertices @ turn)[:, :2]  # turn is orthogonal: this undoes ``@ turn.T``
+    pieces = [Polygon(flat[t]) for t in mesh.triangles]
+    polygon = Polygon(outline)
+    assert sum(p.area for p in pieces) == pytest.approx(polygon.area, rel=1e-9)
+    assert unary_union(pieces).symmetric_difference(polygon).area < 1e-9 * polygon.area
+    # every triangle wound as the polygon, none facing against its normal (a corner on the
+    # line through its neighbours makes a triangle of no area)
+    corners = mesh.vertices[mesh.triangles]
+    normals = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
+    assert np.all(normals @ mesh.face_normals[0] > -1e-12 * np.abs(normals).max())
+
+
+def test_a_concave_polygon_is_cut_into_ears_not_fanned_over_its_notch():
+    mesh = Mesh(np.hstack([C_SHAPE, np.zeros((8, 1))]), [list(range(8))])
+    assert len(mesh.triangles) == 6 and mesh.triangle_face.tolist() == [0] * 6
+    _covers_the_polygon(mesh, C_SHAPE)
+    # a convex polygon keeps its fan, as before
+    assert Mesh(regular_polygon(6), [list(range(6))]).triangles.tolist() == [
+        [0, 1, 2], [0, 2, 3], [0, 3, 4], [0, 4, 5],
+    ]  # fmt: skip
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    radii=st.lists(st.floats(0.2, 1.0), min_size=4, max_size=14),
+    axis_angle=st.tuples(*[st.floats(-3, 3)] * 3),
+)
+def test_star_shaped_polygons_in_any_plane_are_tiled_exactly(radii, axis_angle):
+    # corners at even angles round the origin, at random distances: simple, often concave
+    angles = 2 * np.pi * np.arange(len(radii)) / len(radii)
+    outline = np.stack([radii * np.cos(angles), radii * np.sin(angles)], axis=1)
+    turn = rotation(axis_angle)
+    points = np.hstack([outline, np.zeros((len(radii), 1))]) @ turn.T
+    mesh = Mesh(points, [list(range(len(radii)))])
+    assert len(mesh.triangles) == len(radii) - 2
+    _covers_the_polygon(mesh, outline, turn)
+
 def test_rectangular_face_array_equals_the_ragged_form():
     table = Mesh(SQUARE, np.array([[0, 1, 2], [0, 2, 3]]))
     ragged = Mesh(SQUARE, [(0, 1, 2), (0, 2, 3)])

@@ -76,6 +76,25 @@ def test_ply_keeps_polygons_and_normals(tmp_path):
     np.testing.assert_allclose(mesh.vertex_normals, [[0, 0, 1]] * 5)
 
 
+@pytest.mark.parametrize("method", ["zbuffer", "raytrace"])
+def test_a_concave_obj_face_is_drawn_without_its_notch(tmp_path, method):
+    import pixelpath as pp
+
+    # one octagon face, a "C" open to the right: x in 0..3, y in 0..3, notch x > 1, 1 < y < 2
+    c_shape = [(0, 0), (3, 0), (3, 1), (1, 1), (1, 2), (3, 2), (3, 3), (0, 3)]
+    path = tmp_path / "c.obj"
+    path.write_text(obj_text([(x, y, 0) for x, y in c_shape], [list(range(8))]))
+    camera = pp.Camera(eye=(1.5, 1.5, 10), target=(1.5, 1.5, 0), width=64, height=64,
+                       projection="orthographic", view_height=4.0)
+    scene = pp.Scene(camera, [Mesh.load(path)], [pp.PointLight((1.5, 1.5, 10))])
+    ids = pp.render(scene, method).object_id
+
+    def drawn(x, y):  # 16 pixels a unit, (1.5, 1.5) at the centre, row 0 at the top
+        return ids[int(32 - (y - 1.5) * 16), int(32 + (x - 1.5) * 16)] >= 0
+
+    assert drawn(0.5, 1.5) and drawn(2.5, 0.5) and drawn(2.5, 2.5)
+    assert not drawn(1.4, 1.5) and not drawn(1.8, 1.6)  # the notch, which the fan covered
+
 def test_binary_ply_and_stl_written_by_trimesh(tmp_path):
     source = trimesh.creation.box(extents=(2, 4, 6))
     for suffix in ("ply", "stl"):

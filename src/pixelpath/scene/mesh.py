@@ -12,8 +12,12 @@ vertices of face ``f``.
 - Vertex normals, when not given, are the normalized sum of the un-normalized Newell vectors of
   the faces around the vertex, i.e. the area-weighted average of their unit normals. A vertex no
   face uses (or whose faces cancel) gets the zero vector.
-- Rendering uses the fan triangulation ``(v0, v_k, v_k+1)`` of every polygon, which is exact for
-  convex polygons; ``triangle_face`` maps each triangle back to its polygon.
+- Rendering uses the fan triangulation ``(v0, v_k, v_k+1)`` of every polygon, which is exact
+  when the polygon is convex (or every vertex is visible from v0). A polygon whose fan folds
+  over (a fan triangle facing against the polygon's Newell normal: a concave polygon, such as
+  an L or C shape from an OBJ file) is cut into ears instead, in the plane it projects to
+  best; either way a polygon of k vertices gives k - 2 triangles, wound as it is, and
+  ``triangle_face`` maps each triangle back to its polygon.
 """
 
 from __future__ import annotations
@@ -175,7 +179,7 @@ class Mesh:
 
     @functools.cached_property
     def triangles(self) -> np.ndarray:
-        """(T, 3) intp fan triangulation of every face, T = Σ (k_f − 2)."""
+        """(T, 3) intp triangles of every face, T = Σ (k_f − 2): fans, ears where concave."""
         sizes = self.face_sizes
         triangle_face = self.triangle_face
         # k-th triangle of face f is (v0, v_{k+1}, v_{k+2}): its rank inside the face is k.
@@ -183,7 +187,24 @@ class Mesh:
         rank = np.arange(len(triangle_face)) - np.repeat(first_triangle, sizes - 2)
         first = self.face_offsets[triangle_face]
         corners = np.stack([first, first + rank + 1, first + rank + 2], axis=1)
-        return v.frozen(np.ascontiguousarray(self.face_indices[corners], dtype=np.intp))
+        triangles = np.ascontiguousarray(self.face_indices[corners], dtype=np.intp)
+        for face in self._folded_faces(triangles):
+            polygon = self.face_indices[self.face_offsets[face] : self.face_offsets[face + 1]]
+            start = first_triangle[face]
+            triangles[start : start + len(polygon) - 2] = polygon[
+                _ears(self.vertices[polygon], self._newell[face])
+            ]
+        return v.frozen(triangles)
+
+    def _folded_faces(self, triangles: np.ndarray) -> np.ndarray:
+        """Return the faces of four or more vertices with a fan triangle facing backwards."""
+        in_polygon = np.flatnonzero(self.face_sizes[self.triangle_face] > 3)
+        if len(in_polygon) == 0:  # triangle meshes: nothing to look at
+            return in_polygon
+        a, b, c = (self.vertices[triangles[in_polygon, k]] for k in range(3))
+        facing = np.einsum("ij,ij->i", np.cross(b - a, c - a),
+                           self._newell[self.triangle_face[in_polygon]])
+        return np.unique(self.triangle_face[in_polygon[facing < 0.0]])
 
     @functools.cached_property
     def triangle_face(self) -> np.ndarray:
@@ -435,6 +456,53 @@ def moved(points: np.ndarray, linear: np.ndarray, shift: np.ndarray) -> np.ndarr
 
 def _same_optional(a: np.ndarray | None, b: np.ndarray | None) -> bool:
     return (a is None) == (b is None) and (a is None or np.array_equal(a, b))
+
+
+def _ears(points: np.ndarray, normal: np.ndarray) -> np.ndarray:
+    """Return (k - 2, 3) corner numbers cutting a polygon of k ``points`` into ears.
+
+    The polygon is projected on the coordinate plane its ``normal`` (Newell's vector) is most
+    nearly perpendicular to, keeping its winding counter-clockwise there. An ear is a convex
+    corner whose triangle holds no other corner; cutting one leaves a polygon of one corner
+    fewer. A polygon with no ear left (it crosses itself) keeps the fan of what remains.
+    """
+    axis = int(np.argmax(np.abs(normal)))
+    u, w = (axis + 1) % 3, (axis + 2) % 3
+    if normal[axis] < 0.0:
+        u, w = w, u
+    flat = points[:, [u, w]]
+    ring = list(range(len(points)))
+    ears = []
+    while len(ring) > 3:
+        ear = _an_ear(flat, ring)
+        if ear is None:
+            break
+        ears.append((ring[ear - 1], ring[ear], ring[(ear + 1) % len(ring)]))
+        del ring[ear]
+    ears += [(ring[0], ring[k], ring[k + 1]) for k in range(1, len(ring) - 1)]
+    return np.array(ears, dtype=np.intp)
+
+
+def _an_ear(flat: np.ndarray, ring: list[int]) -> int | None:
+    """Return the place in ``ring`` of a convex corner whose triangle holds no other corner."""
+    for k in range(len(ring)):
+        corner = (ring[k - 1], ring[k], ring[(k + 1) % len(ring)])
+        a, b, c = flat[list(corner)]
+        if _cross(a, b, c) <= 0.0:  # a reflex (or straight) corner is no ear
+            continue
+        others = flat[[j for j in ring if j not in corner]]
+        inside = (_cross(a, b, others) >= 0.0) & (_cross(b, c, others) >= 0.0) & (
+            _cross(c, a, others) >= 0.0
+        )
+        if not inside.any():
+            return k
+    return None
+
+
+def _cross(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> Any:
+    """Return the z of (b - a) × (c - a): positive when a, b, c turn counter-clockwise."""
+    c = np.asarray(c)
+    return (b[0] - a[0]) * (c[..., 1] - a[1]) - (b[1] - a[1]) * (c[..., 0] - a[0])
 
 
 def _normalized(vectors: np.ndarray) -> np.ndarray:
