@@ -27,6 +27,7 @@ borders.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -115,7 +116,7 @@ def read_stl_solids(path: str | Path) -> list[tuple[str, np.ndarray, np.ndarray]
     ]
 
 
-def _guarded(reader, path: Path):
+def _guarded(reader: Callable[[Path], Any], path: Path) -> Any:
     """Call ``reader(path)``, turning the errors of trimesh's parsers into a ValueError."""
     suffix = path.suffix.lower()
     try:
@@ -225,8 +226,13 @@ def _stl_solids(path: Path) -> list[tuple[str, np.ndarray, np.ndarray]]:
         loaded = load_stl(file)
     if "geometry" in loaded:  # an ASCII file: one part per solid, by name
         parts = loaded["geometry"].items()
-        return [(name, part["vertices"], np.asarray(part["faces"])) for name, part in parts]
-    return [(path.stem, loaded["vertices"], np.asarray(loaded["faces"]))]
+        return [(name, part["vertices"], _triangles(part["faces"])) for name, part in parts]
+    return [(path.stem, loaded["vertices"], _triangles(loaded["faces"]))]
+
+
+def _triangles(faces: Any) -> np.ndarray:
+    """(T, 3) vertex indices, also where a solid has no facets."""
+    return np.asarray(faces, dtype=np.int64).reshape(-1, 3)
 
 
 def _concatenate(parts: list[dict[str, Any]]) -> tuple[np.ndarray, list[np.ndarray], Any]:

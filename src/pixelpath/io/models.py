@@ -535,7 +535,8 @@ def _checked_gltf(path: Path, file: BinaryIO) -> dict:
     _check_extensions(path, gltf)
     _check_accessors(path, gltf, binary_length)
     _check_not_sparse(path, gltf)
-    _list(path, gltf, "nodes")  # the parts' names are looked up in it
+    for key in ("nodes", "meshes"):  # the parts' names are looked up in them
+        _list(path, gltf, key)
     return gltf
 
 
