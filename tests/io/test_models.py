@@ -343,6 +343,42 @@ def test_texture_coordinates_without_a_material_keep_the_plain_material(tmp_path
     assert np.asarray(images[0]).max() > 0.5  # lit light grey, not the stand-in's dark grey
     np.testing.assert_array_equal(np.asarray(images[0]), np.asarray(images[1]))
 
+
+def _textured_square(tmp_path, map_line: str) -> Path:
+    """An OBJ square whose .mtl names a 2 x 2 picture on ``map_line``."""
+    Image.fromarray(PICTURE).save(tmp_path / "my tex.png")
+    (tmp_path / "m.mtl").write_text(f"newmtl t\nKd 1 1 1\n{map_line}\n")
+    (tmp_path / "q.obj").write_text(
+        "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\n"
+        "vt 0 1\nusemtl t\nf 1/1 2/2 3/3 4/4\n"
+    )
+    return tmp_path / "q.obj"
+
+
+def test_mtl_map_options_are_read_past_and_named(tmp_path):
+    # trimesh hands "-s 2 2 1 -bm 0.5 my tex.png" to the resolver as the file's name
+    path = _textured_square(tmp_path, "map_Kd -s 2 2 1 -bm 0.5 my tex.png")
+    with pytest.warns(UserWarning, match=r"q\.obj: texture 'my tex\.png': its \.mtl options "
+                                         r"'-s 2 2 1 -bm 0\.5' are not applied"):
+        (mesh,) = read_model(path).objects
+    assert mesh.material.texture is not None
+    np.testing.assert_array_equal(mesh.material.texture.levels[0][..., :3], PICTURE)
+    with pytest.raises(ValueError, match=r"q\.obj: refers to .*outside the file's folder"):
+        read_model(_textured_square(tmp_path, "map_Kd -s 2 ../my tex.png"))
+
+
+def test_ply_texture_file_is_the_colour_itself(tmp_path):
+    Image.fromarray(PICTURE).save(tmp_path / "tex.png")
+    header = ["ply", "format ascii 1.0", "comment TextureFile tex.png", "element vertex 3",
+              "property float x", "property float y", "property float z", "property float s",
+              "property float t", "element face 1", "property list uchar int vertex_indices",
+              "end_header"]  # fmt: skip
+    (tmp_path / "t.ply").write_text("\n".join([*header, "0 0 0 0 0", "1 0 0 1 0", "0 1 0 0 1",
+                                               "3 0 1 2"]) + "\n")
+    (mesh,) = read_model(tmp_path / "t.ply").objects
+    assert mesh.material.texture is not None
+    np.testing.assert_allclose(mesh.material.color, [1, 1, 1])  # not the grey of no material
+
 # --- camera and lights --------------------------------------------------------------------------
 
 

@@ -82,7 +82,10 @@ MTL ``map_Kd``                ``texture`` (a missing file: a warning and ``Kd`` 
 MTL ``d``                     ``transparency = 1 - d`` (``Tr`` is ignored: exporters disagree
                               on its meaning)
 no material (PLY, STL, OBJ    light grey ``(0.8, 0.8, 0.8)``, ``kd = 1``, ``ks = 0.2``,
-without ``.mtl``)             ``shininess = 32``, texture coordinates or not
+without ``.mtl``)             ``shininess = 32``, texture coordinates or not; a PLY file's
+                              ``comment TextureFile`` picture: ``texture``, ``color`` white
+MTL map options (``-s``,      not applied, with a warning; the picture is read as it is
+``-o``, ``-bm``, ...)
 ============================  =================================================================
 
 trimesh's materials do not say which glTF material they came from, so the sampler is found
@@ -166,6 +169,7 @@ _KNOWN_REQUIRED = {
 _COMPONENT_BYTES = {5120: 1, 5121: 1, 5122: 2, 5123: 2, 5125: 4, 5126: 4}
 _TYPE_COMPONENTS = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4, "MAT2": 4, "MAT3": 9, "MAT4": 16}
 _SCHEME = re.compile(r"^[A-Za-z][A-Za-z0-9+.\-]*:")
+_NUMBER_WORD = re.compile(r"[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?")
 
 
 def read_model(
@@ -300,6 +304,9 @@ def _read_checked(path: Path) -> tuple[list[Mesh], dict | None]:
         raise ValueError(f"{path}: refers to {resolver.refused[0]!r}, outside the file's folder")
     for name in resolver.missing:
         warnings.warn(f"{path}: {name!r} not found; using the material colour", stacklevel=3)
+    for name, options in resolver.options:
+        warnings.warn(f"{path}: texture {name!r}: its .mtl options {options!r} are not applied "
+                      "(pixelpath reads the picture as it is)", stacklevel=3)
     objects = _meshes(path, parts, gltf)
     if not objects:
         raise ValueError(f"{path}: the file has no triangle meshes")
@@ -478,24 +485,58 @@ def _resolver_class() -> type:
             super().__init__(str(source))
             self.refused: list[str] = []
             self.missing: list[str] = []
+            self.options: list[tuple[str, str]] = []  # (texture, .mtl options left unapplied)
 
         def get(self, name: str) -> bytes:
-            if _outside(name, Path(self.parent)):
-                self.refused.append(name)
-                raise ValueError(f"{name!r} is outside the model's folder")
-            file = Path(self.parent) / unquote(name.strip())
-            if not file.is_file():
-                file = Path(self.parent) / name.strip()
-            if not file.is_file():
+            file = self._file(name)
+            if file is None and name.lstrip().startswith("-"):
+                # an .mtl map line's options (map_Kd -s 2 2 1 wood.png), which trimesh hands
+                # on with the file name
+                bare, options = _without_mtl_options(name)
+                file = self._file(bare) if bare else None
+                if file is not None:
+                    self.options.append((bare, options))
+            if file is None:
                 self.missing.append(name)
                 raise FileNotFoundError(name)
             return file.read_bytes()
+
+        def _file(self, name: str) -> Path | None:
+            if _outside(name, Path(self.parent)):
+                self.refused.append(name)
+                raise ValueError(f"{name!r} is outside the model's folder")
+            for candidate in (unquote(name.strip()), name.strip()):
+                file = Path(self.parent) / candidate
+                if file.is_file():
+                    return file
+            return None
 
     return ConfinedResolver
 
 
 def _confined_resolver(path: Path) -> Any:
     return _resolver_class()(path)
+
+
+# The options of an .mtl texture line and how many values each takes (-o, -s and -t one to
+# three numbers), from the Wavefront MTL specification.
+_MTL_OPTIONS = {"-blendu": 1, "-blendv": 1, "-boost": 1, "-cc": 1, "-clamp": 1, "-imfchan": 1,
+                "-mm": 2, "-texres": 1, "-bm": 1, "-type": 1, "-o": 3, "-s": 3, "-t": 3}
+
+
+def _without_mtl_options(line: str) -> tuple[str, str]:
+    """Split an .mtl texture line into its file name and its options (``"-s 2 2 1"``)."""
+    words = line.split()
+    k = 0
+    while k < len(words) and words[k] in _MTL_OPTIONS:
+        count = _MTL_OPTIONS[words[k]]
+        k += 1
+        if words[k - 1] in ("-o", "-s", "-t"):  # up to three numbers
+            while count and k < len(words) - 1 and _NUMBER_WORD.fullmatch(words[k]):
+                k, count = k + 1, count - 1
+        else:
+            k += count
+    return " ".join(words[k:]), " ".join(words[:k])
 
 
 def _outside(uri: str, folder: Path) -> bool:
@@ -945,7 +986,10 @@ def _shininess(roughness: float) -> float:
 def _simple_material(path: Path, source: Any, shared: dict) -> Material:
     """Map an MTL material (trimesh's SimpleMaterial and its raw MTL values) (see the table)."""
     raw = {key.lower(): value for key, value in (getattr(source, "kwargs", None) or {}).items()}
-    kd_color = _mtl_color(raw.get("kd"), (0.8, 0.8, 0.8))
+    # A picture with no MTL values (a PLY file's "comment TextureFile") is the colour itself.
+    plain = (1.0, 1.0, 1.0) if not raw and getattr(source, "image", None) is not None else (
+        0.8, 0.8, 0.8)
+    kd_color = _mtl_color(raw.get("kd"), plain)
     ka_color = _mtl_color(raw.get("ka"), (0.0, 0.0, 0.0))
     ks_color = _mtl_color(raw.get("ks"), (0.0, 0.0, 0.0))
     ns = _mtl_number(raw.get("ns"), 0.0)
