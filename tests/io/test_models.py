@@ -824,6 +824,10 @@ def test_orthographic_file_camera(tmp_path):
     gltf["scenes"][0]["nodes"] = [0, 1]
     camera = read_model(write(tmp_path, gltf)).camera
     assert camera.projection == "orthographic" and camera.view_height == pytest.approx(3.0)
+    # the view's width over its height is xmag / ymag, as for a perspective camera's aspect
+    assert (camera.width, camera.height) == (800, 600)
+    gltf["cameras"][0]["orthographic"]["xmag"] = 1.5
+    assert read_model(write(tmp_path, gltf)).camera.width == 600
     np.testing.assert_allclose(camera.eye, [0.5, 0.5, 5])
     np.testing.assert_allclose(camera.target[:2], [0.5, 0.5])  # looking down -Z
     assert (camera.near, camera.far) == (pytest.approx(0.1), pytest.approx(50))

@@ -24,7 +24,8 @@ What a model file gives (:func:`read_model`)
   ``"srgb"``, so a saved picture looks like the model in other viewers.
 - **Camera**: the file's first glTF camera (in scene order), at its node's world transform;
   perspective ``yfov`` (radians) becomes ``fov`` (degrees), ``aspectRatio`` sets the width
-  beside a height of 600 pixels; orthographic ``ymag`` becomes ``view_height = 2 * ymag``.
+  beside a height of 600 pixels; orthographic ``ymag`` becomes ``view_height = 2 * ymag``,
+  and ``xmag / ymag`` the aspect likewise.
   Otherwise :func:`framing_camera`: the model seen from the front (+Z, glTF's front) and
   22 degrees above, at the distance where the corners of its bounding box fill 90 % of the
   picture, near and far from its bounding sphere.
@@ -1388,9 +1389,8 @@ def _camera(spec: dict, matrix: np.ndarray, bounds: np.ndarray, size: Any) -> Ca
     target = eye + forward * max(float(np.dot(center - eye, forward)), 1e-3 * reach, 1e-6)
     if spec.get("type") == "orthographic":
         ortho = spec["orthographic"]
-        width, height = size or DEFAULT_SIZE
-        if "projection" not in Camera.__dataclass_fields__:  # orthographic cameras not yet built
-            return None
+        xmag, ymag = float(ortho["xmag"]), float(ortho["ymag"])
+        width, height = _camera_size(xmag / ymag if xmag > 0.0 and ymag > 0.0 else None, size)
         return Camera(
             eye=eye,
             target=target,
@@ -1400,13 +1400,11 @@ def _camera(spec: dict, matrix: np.ndarray, bounds: np.ndarray, size: Any) -> Ca
             near=max(float(ortho.get("znear", 0.0)), 1e-6),
             far=float(ortho["zfar"]),
             projection="orthographic",
-            view_height=2.0 * float(ortho["ymag"]),
+            view_height=2.0 * ymag,
         )
     perspective = spec["perspective"]
     aspect = perspective.get("aspectRatio")
-    if size is None:
-        width = round(DEFAULT_SIZE[1] * float(aspect)) if aspect else DEFAULT_SIZE[0]
-        size = (min(max(width, 1), v.MAX_IMAGE_SIDE), DEFAULT_SIZE[1])
+    size = _camera_size(float(aspect) if aspect else None, size)
     near = float(perspective["znear"])
     far = float(perspective.get("zfar") or max(2.0 * reach, near * 2.0))
     return Camera(
@@ -1419,6 +1417,14 @@ def _camera(spec: dict, matrix: np.ndarray, bounds: np.ndarray, size: Any) -> Ca
         near=near,
         far=far,
     )
+
+
+def _camera_size(aspect: float | None, size: tuple[int, int] | None) -> tuple[int, int]:
+    """Return ``size``, else the file camera's aspect beside a height of 600 pixels."""
+    if size is not None:
+        return size
+    width = round(DEFAULT_SIZE[1] * aspect) if aspect else DEFAULT_SIZE[0]
+    return min(max(width, 1), v.MAX_IMAGE_SIDE), DEFAULT_SIZE[1]
 
 
 def _file_lights(gltf: dict, bounds: np.ndarray) -> list[PointLight | DirectionalLight]:
