@@ -256,6 +256,15 @@ def test_missing_scene_file(tmp_path):
         load_scene(tmp_path / "nothing.toml")
 
 
+def test_a_picture_or_a_folder_is_named_as_what_it_is(tmp_path):
+    (tmp_path / "photo.jpg").write_bytes(b"\xff\xd8\xff\xe0 not text")
+    with pytest.raises(ValueError, match=r"photo\.jpg: not a UTF-8 text file .*not a TOML scene "
+                                         r"file; model files .*\.glb, \.gltf, \.obj, \.ply, \.stl"):
+        load_scene(tmp_path / "photo.jpg")
+    with pytest.raises(ValueError, match=r"is a folder; name a scene or model file in it"):
+        load_scene(tmp_path)
+
+
 def test_empty_scene_file_with_only_a_camera_loads(tmp_path):
     scene = load_scene(written(tmp_path, '[camera]\neye = [0, 0, 1]\ntarget = [0, 0, 0]\n'))
     assert scene.objects == () and scene.lights == ()

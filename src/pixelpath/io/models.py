@@ -136,6 +136,7 @@ import numpy as np
 from pixelpath import _validate as v
 from pixelpath.scene.camera import Camera
 from pixelpath.scene.lights import DirectionalLight, PointLight
+from pixelpath.scene.loader import MODEL_SUFFIXES
 from pixelpath.scene.material import Material
 from pixelpath.scene.mesh import Mesh, bounding_box, moved
 from pixelpath.scene.scene import Scene
@@ -151,7 +152,7 @@ __all__ = [
     "read_model_objects",
 ]
 
-MODEL_FORMATS = (".glb", ".gltf", ".obj", ".ply", ".stl")
+MODEL_FORMATS = MODEL_SUFFIXES
 DEFAULT_SIZE = (800, 600)
 AMBIENT = 0.2
 ELEVATION = 22.0  # degrees above the model's centre for the default camera

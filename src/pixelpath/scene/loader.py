@@ -57,6 +57,9 @@ from pixelpath.scene.schema import (
 )
 from pixelpath.scene.transform import transform_matrix, transform_object
 
+# The suffixes load_scene reads as model files (pixelpath.io.models), not as TOML.
+MODEL_SUFFIXES = (".glb", ".gltf", ".obj", ".ply", ".stl")
+
 KeyPath = tuple[str | int, ...]
 
 
@@ -95,16 +98,21 @@ def load_scene(path: str | Path) -> Scene:
     1.0
     """
     path = Path(path)
+    if path.is_dir():
+        raise ValueError(f"{path} is a folder; name a scene or model file in it")
     if not path.is_file():
         raise FileNotFoundError(f"scene file not found: {path}")
-    if path.suffix.lower() in (".glb", ".gltf", ".obj", ".ply", ".stl"):
+    if path.suffix.lower() in MODEL_SUFFIXES:
         from pixelpath.io.models import _model_scene  # it builds on this package: import late
 
         return _model_scene(path)  # read_model without checking the path a second time
     try:
         text = path.read_text(encoding="utf-8")
     except UnicodeDecodeError as exc:
-        raise ValueError(f"{path}: not a UTF-8 text file ({exc.reason})") from None
+        raise ValueError(
+            f"{path}: not a UTF-8 text file ({exc.reason}), so not a TOML scene file; model "
+            f"files are read by their suffix: {', '.join(MODEL_SUFFIXES)}"
+        ) from None
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
