@@ -67,3 +67,18 @@ def test_reflections_show_textures_the_right_way_round():
     assert rgb[10, 21].tolist() == [0, 1, 0]
     assert rgb[21, 10].tolist() == [0, 0, 1]
     assert rgb[21, 21].tolist() == [1, 1, 1]
+
+
+def test_explained_terms_use_the_textured_colour():
+    """A ray tree's ambient and diffuse terms are those of the surface colour at the hit (the
+    texture's), and with the specular terms they add up to the hit's local light."""
+    from pathlib import Path
+
+    from pixelpath.raytrace import ray_tree
+
+    duck = pp.load_scene(Path(__file__).parents[1] / "data" / "models" / "Duck.glb")
+    node = ray_tree(duck, (400, 300), max_depth=0).root
+    assert node.object == 0
+    parts = node.ambient + sum(light.diffuse + light.specular for light in node.lights)
+    np.testing.assert_allclose(parts, node.local, atol=1e-9)
+    assert node.local[2] < 0.5 * node.local[0]  # yellow, as the texture is: not grey

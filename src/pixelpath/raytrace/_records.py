@@ -38,7 +38,8 @@ COUNTS = 8
 PARENT, KIND, DEPTH, WEIGHT, ORIGIN, DIRECTION, T = 0, 1, 2, 3, 4, 7, 10
 OBJECT, PRIMITIVE, PRIMITIVE_INDEX, POINT, NORMAL, GEOMETRIC = 11, 12, 13, 14, 17, 20
 ENTERING, LOCAL, KR, KT, TOTAL_REFLECTION, FRESNEL, ETA, SAMPLE = 23, 24, 27, 28, 29, 30, 31, 32
-LOG_FIELDS = 33
+COLOR = 33  # the surface colour C at the hit: the material's, times texture and vertex colours
+LOG_FIELDS = 36
 
 # Pending rays on the stack: origin, direction, weight, depth, kind, log index of the parent.
 RAY_FIELDS = 10

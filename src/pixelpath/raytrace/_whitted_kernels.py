@@ -53,6 +53,7 @@ from pixelpath.lighting._kernels import light_direction, shade_point
 from pixelpath.raytrace._hit_kernels import enters_box, reflect_direction, slab_nan_allowed
 from pixelpath.raytrace._primary_kernels import _stored_geometry, primary_hits, primary_shadows
 from pixelpath.raytrace._records import (
+    COLOR,
     COUNT_MISSED,
     COUNT_NODES,
     COUNT_PRIMARY,
@@ -131,7 +132,7 @@ def _log_miss(log, row, background):
 
 @njit(refcount=False)
 def _log_hit(log, row, t, obj, kind, index, source, px, py, pz, nx, ny, nz, gx, gy, gz,
-             entering, shaded, kr, kt, total, fresnel, eta):
+             entering, material, shaded, kr, kt, total, fresnel, eta):
     log[row, T] = t
     log[row, OBJECT] = obj
     log[row, PRIMITIVE] = kind
@@ -142,6 +143,7 @@ def _log_hit(log, row, t, obj, kind, index, source, px, py, pz, nx, ny, nz, gx, 
     log[row, ENTERING] = 1.0 if entering else 0.0
     for c in range(3):
         log[row, LOCAL + c] = shaded[c]
+        log[row, COLOR + c] = material[c]
     log[row, KR] = kr
     log[row, KT] = kt
     log[row, TOTAL_REFLECTION] = 1.0 if total else 0.0
@@ -408,7 +410,8 @@ def render_rows(rows, scene, settings, work, out, x0, y0, rgb, image_depth, obje
                         counts[COUNT_TOTAL_REFLECTION] += 1
                     if logged < log.shape[0]:
                         _log_hit(log, logged, t, obj, hit_kind, index, tri_source, px, py, pz, nx,
-                                 ny, nz, gx, gy, gz, entering, shaded, kr, kt, total, fresnel, eta)
+                                 ny, nz, gx, gy, gz, entering, material, shaded, kr, kt, total,
+                                 fresnel, eta)
                     if not bounce:
                         continue
                     if kt > 0.0 and weight * kt >= MIN_WEIGHT:

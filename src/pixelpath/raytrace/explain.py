@@ -99,7 +99,8 @@ class RayNode:
     local : (3,) ndarray
         ``I_local``, the local Phong intensity (the background colour on a miss).
     ambient : (3,) ndarray
-        ``ka·Ia·C``.
+        ``ka·Ia·C``, C the surface colour at the hit (the material's, times its texture and
+        vertex colours there), as in the lights' diffuse terms.
     lights : tuple of LightTest
     quadratic : SphereQuadratic or None
         Where a sphere is hit.
@@ -362,7 +363,10 @@ def _node(scene, world, settings, record, light_records, children) -> RayNode:
     lights: tuple[LightTest, ...] = ()
     quadratic = None
     if hit:
-        material = world.materials[obj]
+        # the material with the surface colour C the tracer used at the hit (its texture and
+        # vertex colours included)
+        material = world.materials[obj].copy()
+        material[:3] = record[rec.COLOR : rec.COLOR + 3]
         ambient = material[3] * world.ambient * material[:3]
         lights = tuple(
             _light_test(world, settings, material, k, point, normal, origin, light_records[k])
