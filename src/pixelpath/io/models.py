@@ -136,7 +136,7 @@ import numpy as np
 from pixelpath import _validate as v
 from pixelpath.scene.camera import Camera
 from pixelpath.scene.lights import DirectionalLight, PointLight
-from pixelpath.scene.loader import MODEL_SUFFIXES
+from pixelpath.scene.loader import MODEL_FORMATS
 from pixelpath.scene.material import Material
 from pixelpath.scene.mesh import Mesh, bounding_box, moved
 from pixelpath.scene.scene import Scene
@@ -152,7 +152,6 @@ __all__ = [
     "read_model_objects",
 ]
 
-MODEL_FORMATS = MODEL_SUFFIXES
 DEFAULT_SIZE = (800, 600)
 AMBIENT = 0.2
 ELEVATION = 22.0  # degrees above the model's centre for the default camera
@@ -278,7 +277,7 @@ def _model_path(path: Any) -> Path:
 def _read_objects(path: Path) -> tuple[list[Mesh], dict | None]:
     """Return the file's meshes and, for glTF, its checked JSON; every error names the file."""
     try:
-        return _read_checked(path)
+        objects, gltf = _read_checked(path)
     except (ValueError, TypeError) as exc:
         if str(path) in str(exc):
             raise
@@ -286,6 +285,9 @@ def _read_objects(path: Path) -> tuple[list[Mesh], dict | None]:
     except (KeyError, IndexError, AttributeError, OverflowError, struct.error) as exc:
         # a JSON value of an unexpected kind that slipped past the checks, found by fuzzing
         raise ValueError(f"{path}: malformed file ({type(exc).__name__}: {exc})") from None
+    if not objects:
+        raise ValueError(f"{path}: the file has no triangle meshes")
+    return objects, gltf
 
 
 def _read_checked(path: Path) -> tuple[list[Mesh], dict | None]:
@@ -309,22 +311,16 @@ def _read_checked(path: Path) -> tuple[list[Mesh], dict | None]:
     for name, options in resolver.options:
         warnings.warn(f"{path}: texture {name!r}: its .mtl options {options!r} are not applied "
                       "(pixelpath reads the picture as it is)", stacklevel=3)
-    objects = _meshes(path, parts, gltf)
-    if not objects:
-        raise ValueError(f"{path}: the file has no triangle meshes")
-    return objects, gltf
+    return _meshes(path, parts, gltf), gltf
 
 
 def _stl_objects(path: Path) -> list[Mesh]:
     """Return an STL file's solids as meshes of the plain material, named after the solids."""
     from pixelpath.io.meshes import read_stl_solids
 
-    solids = read_stl_solids(path)
-    if not solids:
-        raise ValueError(f"{path}: the file has no triangle meshes")
     return [
         Mesh(vertices, faces, _plain_material(), name=name, source={"path": path})
-        for name, vertices, faces in solids
+        for name, vertices, faces in read_stl_solids(path)
     ]
 
 

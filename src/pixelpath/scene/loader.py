@@ -58,7 +58,7 @@ from pixelpath.scene.schema import (
 from pixelpath.scene.transform import transform_matrix, transform_object
 
 # The suffixes load_scene reads as model files (pixelpath.io.models), not as TOML.
-MODEL_SUFFIXES = (".glb", ".gltf", ".obj", ".ply", ".stl")
+MODEL_FORMATS = (".glb", ".gltf", ".obj", ".ply", ".stl")
 
 KeyPath = tuple[str | int, ...]
 
@@ -102,7 +102,7 @@ def load_scene(path: str | Path) -> Scene:
         raise ValueError(f"{path} is a folder; name a scene or model file in it")
     if not path.is_file():
         raise FileNotFoundError(f"scene file not found: {path}")
-    if path.suffix.lower() in MODEL_SUFFIXES:
+    if path.suffix.lower() in MODEL_FORMATS:
         from pixelpath.io.models import _model_scene  # it builds on this package: import late
 
         return _model_scene(path)  # read_model without checking the path a second time
@@ -111,7 +111,7 @@ def load_scene(path: str | Path) -> Scene:
     except UnicodeDecodeError as exc:
         raise ValueError(
             f"{path}: not a UTF-8 text file ({exc.reason}), so not a TOML scene file; model "
-            f"files are read by their suffix: {', '.join(MODEL_SUFFIXES)}"
+            f"files are read by their suffix: {', '.join(MODEL_FORMATS)}"
         ) from None
     try:
         data = tomllib.loads(text)
