@@ -344,27 +344,64 @@ def test_texture_coordinates_without_a_material_keep_the_plain_material(tmp_path
     np.testing.assert_array_equal(np.asarray(images[0]), np.asarray(images[1]))
 
 
-def _textured_square(tmp_path, map_line: str) -> Path:
-    """An OBJ square whose .mtl names a 2 x 2 picture on ``map_line``."""
+def _textured_square(tmp_path, map_line: str, uv: str = "0 0|1 0|1 1|0 1") -> Path:
+    """An OBJ square whose .mtl names a 2 x 2 picture on ``map_line``; ``uv`` its corners'."""
     Image.fromarray(PICTURE).save(tmp_path / "my tex.png")
     (tmp_path / "m.mtl").write_text(f"newmtl t\nKd 1 1 1\n{map_line}\n")
+    corners = "".join(f"vt {pair}\n" for pair in uv.split("|"))
     (tmp_path / "q.obj").write_text(
-        "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\n"
-        "vt 0 1\nusemtl t\nf 1/1 2/2 3/3 4/4\n"
+        f"mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n{corners}usemtl t\n"
+        "f 1/1 2/2 3/3 4/4\n"
     )
     return tmp_path / "q.obj"
 
 
-def test_mtl_map_options_are_read_past_and_named(tmp_path):
+def test_mtl_map_options_are_read_past_and_the_unapplied_named(tmp_path):
     # trimesh hands "-s 2 2 1 -bm 0.5 my tex.png" to the resolver as the file's name
-    path = _textured_square(tmp_path, "map_Kd -s 2 2 1 -bm 0.5 my tex.png")
-    with pytest.warns(UserWarning, match=r"q\.obj: texture 'my tex\.png': its \.mtl options "
-                                         r"'-s 2 2 1 -bm 0\.5' are not applied"):
+    path = _textured_square(tmp_path, "map_Kd -s 2 2 1 -bm 0.5 -blendu off my tex.png")
+    with pytest.warns(UserWarning, match=r"q\.obj: material 't': the \.mtl texture options "
+                                         r"'-bm 0\.5 -blendu off' are not applied"):
         (mesh,) = read_model(path).objects
     assert mesh.material.texture is not None
     np.testing.assert_array_equal(mesh.material.texture.levels[0][..., :3], PICTURE)
     with pytest.raises(ValueError, match=r"q\.obj: refers to .*outside the file's folder"):
         read_model(_textured_square(tmp_path, "map_Kd -s 2 ../my tex.png"))
+
+
+@pytest.mark.parametrize(
+    ("line", "uv", "wrap"),
+    [
+        ("-s 2 3 1 -o 0.25 0.5 0", [[0.25, 0.5], [2.25, 0.5], [2.25, 3.5], [0.25, 3.5]], "repeat"),
+        ("-o 0.5", [[0.5, 0.0], [1.5, 0.0], [1.5, 1.0], [0.5, 1.0]], "repeat"),  # v, w: 0
+        ("-s 4 -clamp on", [[0, 0], [4, 0], [4, 1], [0, 1]], "clamp"),  # v, w: 1
+        ("-clamp off -s 1 1 1", [[0, 0], [1, 0], [1, 1], [0, 1]], "repeat"),
+    ],
+)
+def test_mtl_map_scale_offset_and_clamp_are_applied(tmp_path, line, uv, wrap):
+    """``-s`` scales uv, then ``-o`` moves them (u' = su u + ou, v' = sv v + ov); ``-clamp on``
+    is the clamp wrap. Each expected uv is worked out by hand from the square's corners."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # every option here is applied: no warning
+        (mesh,) = read_model(_textured_square(tmp_path, f"map_Kd {line} my tex.png")).objects
+    np.testing.assert_array_equal(mesh.uv, uv)
+    assert mesh.material.texture_wrap == wrap
+
+
+def test_mtl_map_options_render_as_the_same_uv_written_out(tmp_path):
+    """A square whose .mtl scales and moves its texture renders to the same bytes as the
+    square whose ``vt`` lines hold the moved coordinates, and not as the square unmoved."""
+
+    def picture(folder: Path, line: str, uv: str) -> np.ndarray:
+        folder.mkdir()
+        scene = pp.load_scene(_textured_square(folder, f"map_Kd {line}my tex.png", uv))
+        return np.asarray(pp.render(dataclasses.replace(
+            scene, camera=scene.camera.with_size(64, 48))))
+
+    moved = picture(tmp_path / "options", "-s 0.5 0.5 -o 0.5 0 ", "0 0|1 0|1 1|0 1")
+    written = picture(tmp_path / "written", "", "0.5 0|1 0|1 0.5|0.5 0.5")
+    plain = picture(tmp_path / "plain", "", "0 0|1 0|1 1|0 1")
+    np.testing.assert_array_equal(moved, written)
+    assert not np.array_equal(moved, plain)
 
 
 def test_ply_texture_file_is_the_colour_itself(tmp_path):

@@ -85,8 +85,11 @@ MTL ``d``                     ``transparency = 1 - d`` (``Tr`` is ignored: expor
 no material (PLY, STL, OBJ    light grey ``(0.8, 0.8, 0.8)``, ``kd = 1``, ``ks = 0.2``,
 without ``.mtl``)             ``shininess = 32``, texture coordinates or not; a PLY file's
                               ``comment TextureFile`` picture: ``texture``, ``color`` white
-MTL map options (``-s``,      not applied, with a warning; the picture is read as it is
-``-o``, ``-bm``, ...)
+MTL ``map_Kd -s su sv``,      the part's ``uv`` scaled, then moved: u' = su u + ou,
+``-o ou ov``                  v' = sv v + ov (as Blender's and three.js's importers read them)
+MTL ``map_Kd -clamp on``      ``texture_wrap = "clamp"``
+other MTL map options         not applied, with a warning naming them; the picture is read as
+(``-bm``, ``-mm``, ...)       it is
 ============================  =================================================================
 
 trimesh's materials do not say which glTF material they came from, so the sampler is found
@@ -308,9 +311,6 @@ def _read_checked(path: Path) -> tuple[list[Mesh], dict | None]:
         raise ValueError(f"{path}: refers to {resolver.refused[0]!r}, outside the file's folder")
     for name in resolver.missing:
         warnings.warn(f"{path}: {name!r} not found; using the material colour", stacklevel=3)
-    for name, options in resolver.options:
-        warnings.warn(f"{path}: texture {name!r}: its .mtl options {options!r} are not applied "
-                      "(pixelpath reads the picture as it is)", stacklevel=3)
     return _meshes(path, parts, gltf), gltf
 
 
@@ -483,17 +483,14 @@ def _resolver_class() -> type:
             super().__init__(str(source))
             self.refused: list[str] = []
             self.missing: list[str] = []
-            self.options: list[tuple[str, str]] = []  # (texture, .mtl options left unapplied)
 
         def get(self, name: str) -> bytes:
             file = self._file(name)
             if file is None and name.lstrip().startswith("-"):
                 # an .mtl map line's options (map_Kd -s 2 2 1 wood.png), which trimesh hands
-                # on with the file name
-                bare, options = _without_mtl_options(name)
+                # on with the file name (the material applies them: _mtl_map)
+                bare = _mtl_map_line(name)[0]
                 file = self._file(bare) if bare else None
-                if file is not None:
-                    self.options.append((bare, options))
             if file is None:
                 self.missing.append(name)
                 raise FileNotFoundError(name)
@@ -522,19 +519,60 @@ _MTL_OPTIONS = {"-blendu": 1, "-blendv": 1, "-boost": 1, "-cc": 1, "-clamp": 1, 
                 "-mm": 2, "-texres": 1, "-bm": 1, "-type": 1, "-o": 3, "-s": 3, "-t": 3}
 
 
-def _without_mtl_options(line: str) -> tuple[str, str]:
-    """Split an .mtl texture line into its file name and its options (``"-s 2 2 1"``)."""
+def _mtl_map_line(line: str) -> tuple[str, list[tuple[str, list[str]]]]:
+    """Split an .mtl texture line into its file name and its options with their values.
+
+    ``"-s 2 2 1 -clamp on my wood.png"`` gives
+    ``("my wood.png", [("-s", ["2", "2", "1"]), ("-clamp", ["on"])])``.
+    """
     words = line.split()
+    options = []
     k = 0
     while k < len(words) and words[k] in _MTL_OPTIONS:
-        count = _MTL_OPTIONS[words[k]]
+        option, count = words[k], _MTL_OPTIONS[words[k]]
         k += 1
-        if words[k - 1] in ("-o", "-s", "-t"):  # up to three numbers
+        if option in ("-o", "-s", "-t"):  # up to three numbers
+            start = k
             while count and k < len(words) - 1 and _NUMBER_WORD.fullmatch(words[k]):
                 k, count = k + 1, count - 1
+            options.append((option, words[start:k]))
         else:
+            options.append((option, words[k : k + count]))
             k += count
-    return " ".join(words[k:]), " ".join(words[:k])
+    return " ".join(words[k:]), options
+
+
+class _MtlMap(NamedTuple):
+    """What pixelpath applies of an .mtl texture line's options, and the options it does not."""
+
+    scale: tuple[float, float]  # -s u v: uv scaled ...
+    offset: tuple[float, float]  # -o u v: ... then moved (Blender's and three.js's reading)
+    clamp: bool  # -clamp on: one copy of the picture, its edge texels beyond it
+    ignored: str  # the other options, as the file writes them
+
+
+def _mtl_map(source: Any) -> _MtlMap | None:
+    """Return the options of the ``map_Kd`` line of ``source`` (an MTL material), if it has any.
+
+    trimesh keeps the line's text after ``map_Kd``, options and file name, in the picture's
+    ``info["file_path"]``.
+    """
+    image = getattr(source, "image", None)
+    line = getattr(image, "info", {}).get("file_path")
+    options = _mtl_map_line(line)[1] if isinstance(line, str) else []
+    if not options:
+        return None
+    given = dict(options)  # a repeated option: its last values count
+    scale = [float(value) for value in given.get("-s", [])[:2]]
+    offset = [float(value) for value in given.get("-o", [])[:2]]
+    ignored = [" ".join([option, *values]) for option, values in options
+               if option not in ("-s", "-o", "-clamp")]
+    return _MtlMap(
+        scale=(*scale, 1.0, 1.0)[:2],
+        offset=(*offset, 0.0, 0.0)[:2],
+        clamp=[value.lower() for value in given.get("-clamp", [])] == ["on"],
+        ignored=" ".join(ignored),
+    )
 
 
 def _outside(uri: str, folder: Path) -> bool:
@@ -794,12 +832,22 @@ def _uv(visual: Any, count: int) -> np.ndarray | None:
 
 
 def _texture_transformed(uv: np.ndarray | None, visual: Any, gltf: dict | None) -> Any:
-    """Return ``uv`` moved by the base-colour texture's ``KHR_texture_transform``, if it has one.
+    """Return ``uv`` moved by the texture's transform, if its file gives one.
 
-    The extension maps glTF texture coordinates (v down) by ``T(offset) R(rotation) S(scale)``:
-    u' = cos r sx u + sin r sy v + ox and v' = -sin r sx u + cos r sy v + oy. trimesh does not
-    apply it; pixelpath's uv (v up, ``1 - v`` of glTF's) are turned back, moved and turned again.
+    glTF's ``KHR_texture_transform`` maps texture coordinates (v down) by
+    ``T(offset) R(rotation) S(scale)``: u' = cos r sx u + sin r sy v + ox and
+    v' = -sin r sx u + cos r sy v + oy; pixelpath's uv (v up, ``1 - v`` of glTF's) are turned
+    back, moved and turned again. An .mtl ``map_Kd -s su sv -o ou ov`` gives u' = su u + ou and
+    v' = sv v + ov (v up in both). trimesh applies neither.
     """
+    if uv is not None and gltf is None:
+        options = _mtl_map(getattr(visual, "material", None))
+        if options is None or (options.scale, options.offset) == ((1.0, 1.0), (0.0, 0.0)):
+            return uv
+        moved = np.empty_like(uv)
+        for axis in range(2):
+            moved[:, axis] = options.scale[axis] * uv[:, axis] + options.offset[axis]
+        return moved
     used = (gltf or {}).get("extensionsUsed")
     if uv is None or not isinstance(used, list) or "KHR_texture_transform" not in used:
         return uv  # glTF lists every extension a file uses
@@ -993,6 +1041,10 @@ def _simple_material(path: Path, source: Any, shared: dict) -> Material:
     ns = _mtl_number(raw.get("ns"), 0.0)
     opacity = _fraction(_mtl_number(raw.get("d"), 1.0))
     ka = float(np.mean(ka_color))
+    options = _mtl_map(source)
+    if options is not None and options.ignored:
+        warnings.warn(f"{path}: material {source.name!r}: the .mtl texture options "
+                      f"{options.ignored!r} are not applied", stacklevel=2)
     return Material(
         color=srgb_to_linear(kd_color),
         ka=ka if ka > 0.0 else 1.0,
@@ -1002,6 +1054,7 @@ def _simple_material(path: Path, source: Any, shared: dict) -> Material:
         transparency=1.0 - opacity,
         name=source.name if isinstance(source.name, str) else None,
         texture=_texture(path, getattr(source, "image", None), shared, keep_alpha=True),
+        texture_wrap="clamp" if options is not None and options.clamp else "repeat",
     )
 
 
