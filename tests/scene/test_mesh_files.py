@@ -118,6 +118,9 @@ def test_binary_ply_and_stl_written_by_trimesh(tmp_path):
         ("range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n", "refers to a vertex that does not"),
         ("garbage.ply", "this is not a ply file\n", "could not read this .ply file"),
         ("mesh.xyz", "0 0 0\n", "unsupported mesh format '.xyz'"),
+        # a model file: the error says which readers take it
+        ("Duck.glb", "glTF", r"'\.glb'; expected one of .*pixelpath\.load_scene .*read_model_obj"),
+        ("box.gltf", "{}", r"'\.gltf'; expected one of .*pixelpath\.load_scene"),
     ],
 )
 def test_load_errors_name_the_file(tmp_path, name, text, message):

@@ -70,8 +70,13 @@ def read_mesh(path: str | Path) -> tuple[np.ndarray, list[np.ndarray] | np.ndarr
         raise FileNotFoundError(f"mesh file not found: {path}")
     suffix = path.suffix.lower()
     if suffix not in MESH_FORMATS:
+        hint = ""
+        if suffix in (".glb", ".gltf"):  # parts with materials: more than one mesh holds
+            hint = ("; a glTF file is a model of parts, each with its transform and material: "
+                    "read it with pixelpath.load_scene (a Scene) or "
+                    "pixelpath.io.models.read_model_objects (its meshes)")
         raise ValueError(f"{path}: unsupported mesh format {suffix!r}; expected one of "
-                         f"{', '.join(MESH_FORMATS)}")
+                         f"{', '.join(MESH_FORMATS)}{hint}")
     reader = {".obj": _read_obj, ".ply": _read_ply, ".stl": _read_stl}[suffix]
     vertices, faces, normals = _guarded(reader, path)
     if len(faces) == 0:
