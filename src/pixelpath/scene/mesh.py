@@ -306,7 +306,10 @@ class Mesh:
         """Read an OBJ, PLY or STL file through trimesh, keeping its polygon faces.
 
         Normals stored in the file are used when there is one per vertex; otherwise they are
-        computed area-weighted.
+        computed area-weighted. This reads the geometry alone, with ``material`` (the default
+        material when None): a file's own materials, textures, texture coordinates and vertex
+        colours, and glTF/GLB files, are read by :func:`pixelpath.load_scene` and
+        :func:`pixelpath.io.models.read_model_objects`.
 
         Raises
         ------
