@@ -561,25 +561,114 @@ def test_absurd_counts_are_refused(tmp_path):
         read_model(_accessor_edit(tmp_path, 0, count=10**12))
 
 
-def _sparse(values_view: int) -> dict:
-    """A sparse block replacing element 0 with the first element of bufferView ``values_view``."""
-    return {"count": 1, "indices": {"bufferView": 2, "componentType": 5123},
+def _sparse(values_view: int, count: int = 1, indices_view: int = 2) -> dict:
+    """A sparse block replacing the elements listed first in bufferView ``indices_view`` (the
+    quad's triangle indices: 0, 1, 2, ...) with the first of bufferView ``values_view``."""
+    return {"count": count, "indices": {"bufferView": indices_view, "componentType": 5123},
             "values": {"bufferView": values_view}}
 
 
-def test_sparse_vertex_accessors_are_refused(tmp_path):
-    # trimesh reads the dense data and ignores the substitutions: the quad would load unmoved
-    path = _accessor_edit(tmp_path, 0, sparse=_sparse(0))
-    with pytest.raises(ValueError, match=r"model\.gltf: mesh 0 primitive 0 reads accessor 0, a sp"):
-        read_model(path)
+def test_khronos_sparse_accessor_is_decoded():
+    """Khronos' SimpleSparseAccessor: a 7 x 2 grid of vertices whose sparse block moves
+    vertices 8, 10 and 12 of the top row up to y = 2, 3 and 4 (trimesh alone leaves it flat)."""
+    (mesh,) = read_model(DATA / "SimpleSparseAccessor.gltf").objects
+    expected = [[x, 0.0, 0.0] for x in range(7)] + [[x, 1.0, 0.0] for x in range(7)]
+    expected[8], expected[10], expected[12] = [1, 2, 0], [3, 3, 0], [5, 4, 0]
+    np.testing.assert_array_equal(mesh.vertices, expected)
+    assert len(mesh.triangles) == 12
 
 
-def test_sparse_morph_targets_are_not_refused(tmp_path):
+def _glb_with_binary(gltf: dict, blob: bytes) -> bytes:
+    """A GLB of ``gltf`` whose buffer 0 is the binary chunk ``blob``."""
+    gltf = {**gltf, "buffers": [{"byteLength": len(blob)}]}
+    text = json.dumps(gltf).encode()
+    text += b" " * (-len(text) % 4)
+    blob += bytes(-len(blob) % 4)
+    body = (struct.pack("<II", len(text), 0x4E4F534A) + text
+            + struct.pack("<II", len(blob), 0x004E4942) + blob)
+    return b"glTF" + struct.pack("<II", 2, 12 + len(body)) + body
+
+
+@pytest.mark.parametrize("container", ["gltf", "glb"])
+def test_sparse_vertices_are_substituted(tmp_path, container):
+    """Vertex 0 of the quad replaced by (0.5, 0.25, 2.0), from a values view of its own; in a
+    GLB, the buffer is the binary chunk."""
+    moved = np.array([[0.5, 0.25, 2.0]], dtype="<f4")
     gltf = quad_gltf()
-    gltf["accessors"].append({**gltf["accessors"][0], "sparse": _sparse(0)})
+    blob = base64.b64decode(gltf["buffers"][0]["uri"].split(",")[1]) + moved.tobytes()
+    gltf["bufferViews"].append({"buffer": 0, "byteOffset": len(blob) - 12, "byteLength": 12})
+    gltf["buffers"][0] = {"byteLength": len(blob), "uri": _data_uri(blob)}
+    gltf["accessors"][0]["sparse"] = _sparse(3)
+    if container == "glb":
+        path = tmp_path / "model.glb"
+        path.write_bytes(_glb_with_binary(gltf, blob))
+    else:
+        path = write(tmp_path, gltf)
+    (mesh,) = read_model(path).objects
+    expected = QUAD.astype(np.float64)
+    expected[0] = moved[0]
+    np.testing.assert_array_equal(mesh.vertices, expected)
+    np.testing.assert_array_equal(mesh.uv, [[0, 0], [1, 0], [1, 1], [0, 1]])  # untouched
+
+
+def test_sparse_accessor_without_base_data_starts_from_zeros(tmp_path):
+    """No bufferView: every element is zero but those the sparse block gives (here the
+    first three corners, from the quad's own vertex data)."""
+    gltf = quad_gltf()
+    del gltf["accessors"][0]["bufferView"]
+    gltf["accessors"][0]["sparse"] = _sparse(0, count=3)  # indices 0, 1, 2 -> QUAD[0:3]
+    (mesh,) = read_model(write(tmp_path, gltf)).objects
+    np.testing.assert_array_equal(mesh.vertices, [*QUAD[:3], [0, 0, 0]])
+
+
+def test_sparse_indices_are_substituted(tmp_path):
+    """The triangles' index accessor made sparse: its first element (0) replaced by the
+    first element of a view holding 3, so the first triangle becomes (3, 1, 2)."""
+    gltf = quad_gltf(indices=np.array([0, 1, 2, 0, 2, 3, 3], dtype="<u2"))
+    gltf["accessors"][2]["count"] = 6
+    gltf["bufferViews"].append({"buffer": 0, "byteOffset": gltf["bufferViews"][2]["byteOffset"]
+                                + 12, "byteLength": 2})
+    gltf["accessors"][2]["sparse"] = _sparse(3)
+    (mesh,) = read_model(write(tmp_path, gltf)).objects
+    np.testing.assert_array_equal(mesh.triangles, [[3, 1, 2], [0, 2, 3]])
+
+
+@pytest.mark.parametrize(
+    ("sparse", "message"),
+    [
+        ({"count": 1, "indices": {"bufferView": 2, "componentType": 5126},
+          "values": {"bufferView": 0}}, "sparse indices must be unsigned"),
+        ({"count": 0, "indices": {"bufferView": 2, "componentType": 5123},
+          "values": {"bufferView": 0}}, "count from 1 to the accessor's count"),
+        ({"count": 5, "indices": {"bufferView": 2, "componentType": 5123},
+          "values": {"bufferView": 0}}, "count from 1 to the accessor's count"),
+        ({"count": 1, "indices": {"bufferView": 9, "componentType": 5123},
+          "values": {"bufferView": 0}}, "names a missing bufferView"),
+        ({"count": 1, "indices": {"bufferView": 2, "componentType": 5123, "byteOffset": 14},
+          "values": {"bufferView": 0}}, "claims more elements than bufferView 2"),
+        ({"count": 1, "indices": {"bufferView": 2, "componentType": 5123, "byteOffset": 12},
+          "values": {"bufferView": 0}}, "substitutes element 4, past the accessor's 4"),
+        ({"count": 1, "values": {"bufferView": 0}}, "needs indices, values"),
+        ("dense", "needs indices, values"),
+    ],
+)
+def test_bad_sparse_blocks_are_refused(tmp_path, sparse, message):
+    """The sparse blocks take their indices from the quad's index view, which holds 0, 1, 2,
+    0, 2, 3 and, here, a 4 after them (at byte 12): past the four vertices."""
+    gltf = quad_gltf(indices=np.array([0, 1, 2, 0, 2, 3, 4], dtype="<u2"))
+    gltf["accessors"][2]["count"] = 6
+    gltf["accessors"][0]["sparse"] = sparse
+    with pytest.raises(ValueError, match=rf"model\.gltf: accessor 0.*{message}"):
+        read_model(write(tmp_path, gltf))
+
+
+def test_sparse_morph_targets_are_left_alone(tmp_path):
+    gltf = quad_gltf()
+    gltf["accessors"].append({**gltf["accessors"][0], "sparse": {"count": "not read"}})
     gltf["meshes"][0]["primitives"][0]["targets"] = [{"POSITION": 3}]  # not drawn
     (mesh,) = read_model(write(tmp_path, gltf)).objects
     np.testing.assert_array_equal(mesh.vertices, QUAD)
+
 
 def test_indices_out_of_range_are_refused(tmp_path):
     indices = np.array([0, 1, 2, 0, 2, 99], dtype="<u2")
@@ -720,10 +809,18 @@ JSON_VALUES = st.recursive(
 )
 
 
+def _sparse_quad() -> dict:
+    """The textured quad whose positions are a sparse accessor (vertex 0 from its own data)."""
+    gltf = quad_gltf(image=_png(PICTURE))
+    gltf["accessors"][0]["sparse"] = _sparse(0)
+    return gltf
+
+
 @FUZZ
-@given(key_index=st.integers(0, 500), value=JSON_VALUES)
-def test_fuzz_edited_gltf_json(tmp_path, key_index, value):
-    gltf = _edited_json(quad_gltf(image=_png(PICTURE)), key_index, value)
+@given(key_index=st.integers(0, 500), value=JSON_VALUES, sparse=st.booleans())
+def test_fuzz_edited_gltf_json(tmp_path, key_index, value, sparse):
+    gltf = _edited_json(_sparse_quad() if sparse else quad_gltf(image=_png(PICTURE)),
+                        key_index, value)
     path = tmp_path / "fuzz.gltf"
     path.write_text(json.dumps(gltf))
     _only_named_errors(path)

@@ -112,8 +112,9 @@ with the file's path:
   without DracoPy, ``EXT_meshopt_compression``, ``KHR_texture_basisu``, ...) are named in the
   error, never loaded as empty geometry.
 - Accessors claiming more data than their buffer views hold (a header that says 10^12
-  vertices) are refused before anything is allocated, and so are primitives whose vertices or
-  indices come from a sparse accessor, which trimesh does not decode.
+  vertices) are refused before anything is allocated. trimesh reads sparse accessors as if
+  they were dense; those that primitives draw from are decoded first (their substitutions
+  checked against their accessor's size and their buffer views' lengths).
 - Truncated or corrupt files, undecodable textures, faces referring to missing vertices and
   non-finite positions are refused; a texture file that does not exist gives a warning and the
   material colour alone.
@@ -121,8 +122,11 @@ with the file's path:
 
 from __future__ import annotations
 
+import base64
+import binascii
 import functools
 import importlib.util
+import io
 import itertools
 import json
 import math
@@ -303,8 +307,9 @@ def _read_checked(path: Path) -> tuple[list[Mesh], dict | None]:
         # chunk is read once, as trimesh.load reads it
         with path.open("rb") as file:
             gltf = _checked_gltf(path, file)
+            densified = _densified(path, gltf, file, resolver)
             file.seek(0)
-            parts = _trimesh_parts(path, resolver, file)
+            parts = _trimesh_parts(path, resolver, densified or file)
     else:
         gltf, parts = None, _trimesh_parts(path, resolver, None)
     if resolver.refused:
@@ -381,8 +386,9 @@ def _gltf_parts(path: Path, resolver: Any, file: BinaryIO) -> list[_Part]:
     from trimesh.exchange.gltf import load_glb, load_gltf
     from trimesh.visual.color import to_rgba
 
-    reader = load_glb if path.suffix.lower() == ".glb" else load_gltf
-    loaded = reader(file_obj=file, resolver=resolver)
+    glb = file.read(4) == b"glTF"  # a GLB whose sparse accessors were decoded comes as JSON
+    file.seek(0)
+    loaded = (load_glb if glb else load_gltf)(file_obj=file, resolver=resolver)
     geometries = loaded["geometry"]
     parent: dict[str, tuple[str, np.ndarray]] = {}
     named: dict[str, str] = {}
@@ -611,7 +617,6 @@ def _checked_gltf(path: Path, file: BinaryIO) -> dict:
                 )
     _check_extensions(path, gltf)
     _check_accessors(path, gltf, binary_length)
-    _check_not_sparse(path, gltf)
     for key in ("nodes", "meshes"):  # the parts' names are looked up in them
         _list(path, gltf, key)
     return gltf
@@ -705,33 +710,167 @@ def _check_accessors(path: Path, gltf: dict, binary_length: int | None) -> None:
             raise ValueError(f"{path}: bufferView {view_index} runs past the end of its buffer")
 
 
-def _check_not_sparse(path: Path, gltf: dict) -> None:
-    """Refuse primitives whose vertices or indices come from a sparse accessor.
+# --- sparse accessors, which trimesh reads as if they were dense -----------------------------
 
-    trimesh 5 reads an accessor's dense data and ignores its ``sparse`` substitutions (or reads
-    zeros where it has no bufferView): such a model would load with the wrong geometry.
-    Sparse accessors of morph targets, which pixelpath does not draw, are left alone.
+_COMPONENT_DTYPES = {5120: "<i1", 5121: "<u1", 5122: "<i2", 5123: "<u2", 5125: "<u4", 5126: "<f4"}
+_INDEX_DTYPES = {5121: "<u1", 5123: "<u2", 5125: "<u4"}  # a sparse block's element indices
+
+
+def _densified(path: Path, gltf: dict, file: BinaryIO, resolver: Any) -> BinaryIO | None:
+    """Return the glTF JSON, for trimesh to read, with the sparse accessors it draws made dense.
+
+    trimesh reads an accessor's dense data (zeros where it has no bufferView) and ignores its
+    ``sparse`` substitutions. Each sparse accessor that a primitive's vertices or indices come
+    from is decoded here, base values then substitutions, into a new buffer (a data: URI) that
+    the accessor then reads; a GLB's binary chunk becomes a data: URI too, so trimesh reads the
+    whole as a .gltf. None when no primitive reads a sparse accessor (the file is read as it
+    is). Sparse morph targets, which pixelpath does not draw, are left alone.
     """
+    drawn = _drawn_sparse_accessors(path, gltf)
+    if not drawn:
+        return None
+    read = functools.cache(lambda index: _buffer_bytes(path, gltf, index, file, resolver))
+    accessors = list(gltf["accessors"])
+    views = list(_list(path, gltf, "bufferViews"))
+    buffers = [dict(buffer) for buffer in _list(path, gltf, "buffers")]
+    data = bytearray()
+    for index in drawn:
+        dense = _dense_accessor(path, gltf, index, read).tobytes()
+        views.append({"buffer": len(buffers), "byteOffset": len(data), "byteLength": len(dense)})
+        data += dense + bytes(-len(dense) % 4)  # the next block starts 4-byte aligned
+        accessor = {k: v for k, v in accessors[index].items() if k not in ("sparse", "byteOffset")}
+        accessors[index] = {**accessor, "bufferView": len(views) - 1}
+    for index, buffer in enumerate(buffers):
+        if "uri" not in buffer:  # the GLB's binary chunk
+            buffer["uri"] = _data_uri(read(index))
+    buffers.append({"byteLength": len(data), "uri": _data_uri(bytes(data))})
+    edited = {**gltf, "accessors": accessors, "bufferViews": views, "buffers": buffers}
+    return io.BytesIO(json.dumps(edited).encode())
+
+
+def _drawn_sparse_accessors(path: Path, gltf: dict) -> list[int]:
+    """Return the sparse accessors that primitives read their vertices or indices from."""
     accessors = _list(path, gltf, "accessors")
     if not any("sparse" in accessor for accessor in accessors):
-        return
-    for m, mesh in enumerate(_list(path, gltf, "meshes")):
+        return []
+    drawn = {}
+    for mesh in _list(path, gltf, "meshes"):
         primitives = mesh.get("primitives")
-        for p, primitive in enumerate(primitives if isinstance(primitives, list) else []):
+        for primitive in primitives if isinstance(primitives, list) else []:
             if not isinstance(primitive, dict):
                 continue
             attributes = primitive.get("attributes")
             used = [*attributes.values()] if isinstance(attributes, dict) else []
             for index in [*used, primitive.get("indices")]:
-                if isinstance(index, int) and 0 <= index < len(accessors) and (
+                if _is_int(index) and 0 <= index < len(accessors) and (
                     "sparse" in accessors[index]
                 ):
-                    raise ValueError(
-                        f"{path}: mesh {m} primitive {p} reads accessor {index}, a sparse "
-                        "accessor, which trimesh does not decode (the geometry would be "
-                        "wrong); re-export the model without sparse accessors (for example "
-                        "with gltf-transform)"
-                    )
+                    drawn[index] = None
+    return list(drawn)
+
+
+def _dense_accessor(path: Path, gltf: dict, index: int, read: Any) -> np.ndarray:
+    """Return accessor ``index``'s elements, (count, components): its base, then substitutions."""
+    accessor = gltf["accessors"][index]
+    where = f"accessor {index}"
+    dtype = _COMPONENT_DTYPES.get(accessor.get("componentType"))
+    components = _TYPE_COMPONENTS.get(accessor.get("type"))
+    if dtype is None or components is None:
+        raise ValueError(f"{path}: {where} has an unknown componentType or type")
+    count = accessor.get("count", 0)  # an int in range (_check_accessors)
+    dense = np.zeros((count, components), dtype)
+    if accessor.get("bufferView") is not None:
+        dense[:] = _elements(path, gltf, read, accessor["bufferView"],
+                             accessor.get("byteOffset", 0), count, dtype, components, where)
+    sparse = accessor["sparse"]
+    indices = sparse.get("indices") if isinstance(sparse, dict) else None
+    values = sparse.get("values") if isinstance(sparse, dict) else None
+    changed = sparse.get("count") if isinstance(sparse, dict) else None
+    if not isinstance(indices, dict) or not isinstance(values, dict) or not (
+        _is_int(changed) and 1 <= changed <= count
+    ):
+        raise ValueError(f"{path}: {where}: its sparse block needs indices, values and a count "
+                         f"from 1 to the accessor's count ({count})")
+    index_dtype = _INDEX_DTYPES.get(indices.get("componentType"))
+    if index_dtype is None:
+        raise ValueError(f"{path}: {where}: sparse indices must be unsigned bytes, shorts or ints")
+    where = f"{where}'s sparse block"
+    positions = _elements(path, gltf, read, indices.get("bufferView"),
+                          indices.get("byteOffset", 0), changed, index_dtype, 1, where)[:, 0]
+    if positions.max() >= count:
+        raise ValueError(f"{path}: {where} substitutes element {positions.max()}, past the "
+                         f"accessor's {count}")
+    dense[positions] = _elements(path, gltf, read, values.get("bufferView"),
+                                 values.get("byteOffset", 0), changed, dtype, components, where)
+    return dense
+
+
+def _elements(
+    path: Path, gltf: dict, read: Any, view_index: Any, offset: Any, count: int, dtype: str,
+    components: int, where: str,
+) -> np.ndarray:
+    """Return ``count`` elements of ``components`` numbers of ``dtype`` from a bufferView."""
+    views = _list(path, gltf, "bufferViews")
+    if not (_is_int(view_index) and 0 <= view_index < len(views)):
+        raise ValueError(f"{path}: {where} names a missing bufferView")
+    view = views[view_index]
+    item = np.dtype(dtype).itemsize * components
+    stride = view.get("byteStride") or item
+    length, start = view.get("byteLength"), view.get("byteOffset", 0)
+    if not all(_is_int(n) for n in (stride, length, start, offset)) or min(
+        start, offset
+    ) < 0 or stride < item:
+        raise ValueError(f"{path}: {where}: bufferView {view_index} is not valid")
+    need = (count - 1) * stride + item
+    data = read(view.get("buffer"))
+    if offset + need > length or start + offset + need > len(data):
+        raise ValueError(f"{path}: {where} claims more elements than bufferView {view_index} "
+                         "holds")
+    raw = np.frombuffer(data, np.uint8, count=need, offset=start + offset)
+    rows = np.lib.stride_tricks.as_strided(raw, (count, item), (stride, 1))
+    return np.ascontiguousarray(rows).view(dtype).reshape(count, components)
+
+
+def _buffer_bytes(path: Path, gltf: dict, index: Any, file: BinaryIO, resolver: Any) -> bytes:
+    """Return the bytes of buffer ``index``: a GLB's binary chunk, a data: URI or a file."""
+    buffers = _list(path, gltf, "buffers")
+    if not (_is_int(index) and 0 <= index < len(buffers)):
+        raise ValueError(f"{path}: a bufferView names a missing buffer")
+    uri = buffers[index].get("uri")
+    if uri is None:
+        chunk = _glb_binary_chunk(file) if index == 0 else None
+        if chunk is None:
+            raise ValueError(f"{path}: buffer {index} has neither a uri nor a binary chunk")
+        return chunk
+    if uri.startswith("data:"):
+        head, _, payload = uri.partition(",")
+        try:
+            if not head.endswith(";base64"):
+                raise ValueError("not base64")
+            return base64.b64decode(payload, validate=True)
+        except (ValueError, binascii.Error):
+            raise ValueError(f"{path}: buffer {index}'s data: URI is not base64 data") from None
+    try:
+        return resolver.get(uri)  # confined to the file's folder, as trimesh's reads are
+    except FileNotFoundError:
+        raise ValueError(f"{path}: buffer {index}'s file {uri!r} was not found") from None
+
+
+def _glb_binary_chunk(file: BinaryIO) -> bytes | None:
+    """Return the binary chunk of a GLB file (chunk lengths checked by :func:`_glb_parts`)."""
+    file.seek(0)
+    head = file.read(20)
+    if head[:4] != b"glTF":
+        return None
+    file.seek(20 + struct.unpack("<I", head[12:16])[0])
+    chunk = file.read(8)
+    if len(chunk) < 8 or chunk[4:] != b"BIN\0":
+        return None
+    return file.read(struct.unpack("<I", chunk[:4])[0])
+
+
+def _data_uri(data: bytes) -> str:
+    return "data:application/octet-stream;base64," + base64.b64encode(data).decode("ascii")
 
 
 # --- meshes and materials ---------------------------------------------------------------------
