@@ -290,6 +290,34 @@ def test_gltf_smooth_metal_and_flags(tmp_path):
     np.testing.assert_allclose(material.color, [1, 0.5, 0.25], atol=1 / 255)
 
 
+@pytest.mark.parametrize("named", [True, False])
+@pytest.mark.parametrize("method", ["zbuffer", "raytrace"])
+def test_unlit_gltf_material_shows_its_colour_unshaded(tmp_path, named, method):
+    """KHR_materials_unlit: every drawn pixel of the quad is its base colour exactly (the
+    ambient term alone: 0.2 x 5 x C), whatever the lights; lit, the same quad is shaded.
+    Unnamed, the one material is still found."""
+    gltf = quad_gltf(extensionsUsed=["KHR_materials_unlit"])
+    color = [0.5, 0.25, 1.0]
+    gltf["materials"][0] = {"pbrMetallicRoughness": {"baseColorFactor": [*color, 1.0]},
+                            "extensions": {"KHR_materials_unlit": {}}}
+    if named:
+        gltf["materials"][0]["name"] = "flat"
+    lit = json.loads(json.dumps(gltf))
+    del lit["materials"][0]["extensions"]
+    images = []
+    for name, data in (("unlit.gltf", gltf), ("lit.gltf", lit)):
+        scene = pp.load_scene(write(tmp_path, data, name))
+        image = pp.render(dataclasses.replace(scene, camera=scene.camera.with_size(48, 36)),
+                          method)
+        images.append(np.asarray(image)[image.alpha == 1.0])
+    unlit, shaded = images
+    color = scene.objects[0].material.color  # trimesh keeps the factor in 8 bits: 128/255
+    np.testing.assert_allclose(color, [0.5, 0.25, 1.0], atol=0.5 / 255)
+    assert len(unlit) > 100
+    np.testing.assert_allclose(unlit, np.broadcast_to(color, unlit.shape), atol=1e-6)
+    assert np.abs(shaded - color).max() > 0.05
+
+
 def test_mtl_values_are_mapped(tmp_path):
     (tmp_path / "m.mtl").write_text("newmtl shiny\nKd 0.5 0.5 0.5\nKa 0.3 0.3 0.3\n"
                                     "Ks 0.8 0.8 0.8\nNs 50\nd 0.25\n")

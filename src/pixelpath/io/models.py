@@ -66,6 +66,10 @@ glTF sampler of the           ``texture_wrap`` from ``wrapS``: REPEAT (10497, th
 (glTF)                        to the part's ``uv``; a ``texCoord`` other than 0 gives a
                               warning, and set 0 is used
 glTF ``doubleSided``          ``double_sided``
+``KHR_materials_unlit``       ``ka = 1 / AMBIENT`` (5), ``kd = ks = 0``: the surface colour
+(glTF)                        under the model's own ambient light (0.2) and no other light,
+                              as the extension asks (a scene file with another ``ambient``
+                              scales it)
 glTF ``alphaMode``            OPAQUE: every alpha ignored (``alpha_cutoff = None``). MASK:
                               ``alpha_cutoff`` = ``alphaCutoff`` (0.5 when absent): where
                               A × texture alpha × ``COLOR_0`` alpha is below it the surface
@@ -1099,11 +1103,14 @@ def _pbr_material(path: Path, source: Any, gltf: dict | None, shared: dict) -> M
     else:
         texture_filter, texture_wrap = _sampler(path, source, gltf, shared)
     kd = 1.0 - 0.6 * metallic
+    ka, ks = kd, (1.0 - roughness) ** 2 * (0.25 + 0.75 * metallic)
+    if _is_unlit(gltf, source):  # the ambient term alone shows the colour as it is
+        ka, kd, ks = 1.0 / AMBIENT, 0.0, 0.0
     return Material(
         color=rgba[:3],
-        ka=kd,
+        ka=ka,
         kd=kd,
-        ks=(1.0 - roughness) ** 2 * (0.25 + 0.75 * metallic),
+        ks=ks,
         shininess=_shininess(roughness),
         transparency=_fraction(1.0 - rgba[3]) if mode == "BLEND" else 0.0,
         name=source.name if isinstance(source.name, str) else None,
@@ -1113,6 +1120,26 @@ def _pbr_material(path: Path, source: Any, gltf: dict | None, shared: dict) -> M
         double_sided=bool(source.doubleSided),
         alpha=_fraction(rgba[3]) if mode == "MASK" else 1.0,
         alpha_cutoff=alpha_cutoff,
+    )
+
+
+def _is_unlit(gltf: dict | None, source: Any) -> bool:
+    """Whether ``source``'s glTF material has ``KHR_materials_unlit``.
+
+    trimesh drops the extension; its material is matched to the glTF material of the same
+    name, and where that is ambiguous (several unnamed materials), it is unlit when every
+    material of the file is.
+    """
+    materials = (gltf or {}).get("materials")
+    if not isinstance(materials, list) or not materials:
+        return False
+    index = _gltf_material_index(gltf, getattr(source, "name", None))
+    chosen = materials if index is None else [materials[index]]
+    return all(
+        isinstance(material, dict)
+        and isinstance(material.get("extensions"), dict)
+        and "KHR_materials_unlit" in material["extensions"]
+        for material in chosen
     )
 
 
