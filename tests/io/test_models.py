@@ -318,6 +318,18 @@ def test_unlit_gltf_material_shows_its_colour_unshaded(tmp_path, named, method):
     assert np.abs(shaded - color).max() > 0.05
 
 
+def test_webp_textures_are_read(tmp_path):
+    """EXT_texture_webp, required (no PNG fallback): the WebP picture is the texture."""
+    out = io.BytesIO()
+    Image.fromarray(PICTURE).save(out, format="WEBP", lossless=True)
+    gltf = quad_gltf(image=out.getvalue(), extensionsUsed=["EXT_texture_webp"],
+                     extensionsRequired=["EXT_texture_webp"])
+    gltf["images"][0]["uri"] = _data_uri(out.getvalue(), "image/webp")
+    gltf["textures"] = [{"extensions": {"EXT_texture_webp": {"source": 0}}}]
+    (mesh,) = read_model(write(tmp_path, gltf)).objects
+    np.testing.assert_array_equal(mesh.material.texture.levels[0][..., :3], PICTURE)
+
+
 def test_mtl_values_are_mapped(tmp_path):
     (tmp_path / "m.mtl").write_text("newmtl shiny\nKd 0.5 0.5 0.5\nKa 0.3 0.3 0.3\n"
                                     "Ks 0.8 0.8 0.8\nNs 50\nd 0.25\n")

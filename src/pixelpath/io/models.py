@@ -62,6 +62,8 @@ glTF sampler of the           ``texture_wrap`` from ``wrapS``: REPEAT (10497, th
                               LINEAR), LINEAR (9729) "bilinear", the mipmap filters
                               (9984-9987) "trilinear", absent "trilinear" (glTF leaves the
                               choice to the viewer). No sampler: "repeat", "trilinear".
+``EXT_texture_webp`` (glTF)    the WebP picture is the texture (trimesh reads it, Pillow
+                              decodes it)
 ``KHR_texture_transform``     the base-colour texture's offset, rotation and scale, applied
 (glTF)                        to the part's ``uv``; a ``texCoord`` other than 0 gives a
                               warning, and set 0 is used
@@ -177,6 +179,7 @@ _KNOWN_REQUIRED = {
     "KHR_materials_pbrSpecularGlossiness",
     "KHR_materials_unlit",
     "KHR_texture_transform",  # applied to the base-colour texture's coordinates
+    "EXT_texture_webp",  # trimesh (4.0 on) reads the WebP source, Pillow decodes it
 }
 _COMPONENT_BYTES = {5120: 1, 5121: 1, 5122: 2, 5123: 2, 5125: 4, 5126: 4}
 _TYPE_COMPONENTS = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4, "MAT2": 4, "MAT3": 9, "MAT4": 16}
