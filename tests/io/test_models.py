@@ -702,6 +702,43 @@ def test_bad_sparse_blocks_are_refused(tmp_path, sparse, message):
         read_model(write(tmp_path, gltf))
 
 
+def _with_attribute(gltf: dict, name: str, values: np.ndarray, component: int) -> dict:
+    """Add ``values`` (integers, normalized) to the quad's buffer as its attribute ``name``."""
+    blob = base64.b64decode(gltf["buffers"][0]["uri"].split(",")[1])
+    view = {"buffer": 0, "byteOffset": len(blob), "byteLength": values.nbytes}
+    blob += values.tobytes()
+    gltf["buffers"][0] = {"byteLength": len(blob), "uri": _data_uri(blob)}
+    gltf["bufferViews"].append(view)
+    gltf["accessors"].append({"bufferView": len(gltf["bufferViews"]) - 1, "normalized": True,
+                              "componentType": component, "count": len(values),
+                              "type": f"VEC{values.shape[1]}"})
+    gltf["meshes"][0]["primitives"][0]["attributes"][name] = len(gltf["accessors"]) - 1
+    return gltf
+
+
+@pytest.mark.parametrize(("dtype", "component"), [("<u1", 5121), ("<u2", 5123)])
+def test_normalized_texture_coordinates_are_fractions(tmp_path, dtype, component):
+    """glTF allows TEXCOORD_0 as unsigned 8- or 16-bit integers standing for c / 255 or
+    c / 65535 (trimesh alone read them as 0..255 or 0..65535)."""
+    top = np.iinfo(dtype).max
+    gltf = _with_attribute(quad_gltf(), "TEXCOORD_0", (QUAD_UV_GLTF * top).astype(dtype),
+                           component)
+    (mesh,) = read_model(write(tmp_path, gltf)).objects
+    np.testing.assert_array_equal(mesh.uv, [[0, 0], [1, 0], [1, 1], [0, 1]])  # v flipped up
+
+
+@pytest.mark.parametrize(("dtype", "component"), [("<u1", 5121), ("<u2", 5123)])
+def test_normalized_vertex_colours_are_fractions(tmp_path, dtype, component):
+    """COLOR_0 as normalized unsigned bytes or shorts: c / 255 or c / 65535 (trimesh alone
+    clipped 16-bit colours, reading 32768 as full intensity)."""
+    top = np.iinfo(dtype).max
+    colors = np.array([[top, 0, 0, top], [0, top // 2, 0, top], [0, 0, top, top],
+                       [top, top, top, top]], dtype=dtype)
+    gltf = _with_attribute(quad_gltf(), "COLOR_0", colors, component)
+    (mesh,) = read_model(write(tmp_path, gltf)).objects
+    np.testing.assert_allclose(mesh.colors, colors / top, atol=1e-7)
+
+
 def test_sparse_morph_targets_are_left_alone(tmp_path):
     gltf = quad_gltf()
     gltf["accessors"].append({**gltf["accessors"][0], "sparse": {"count": "not read"}})
@@ -849,17 +886,18 @@ JSON_VALUES = st.recursive(
 )
 
 
-def _sparse_quad() -> dict:
-    """The textured quad whose positions are a sparse accessor (vertex 0 from its own data)."""
+def _decoded_quad() -> dict:
+    """The textured quad with accessors pixelpath decodes before trimesh reads them: positions
+    from a sparse accessor (vertex 0 from its own data), 16-bit normalized colours."""
     gltf = quad_gltf(image=_png(PICTURE))
     gltf["accessors"][0]["sparse"] = _sparse(0)
-    return gltf
+    return _with_attribute(gltf, "COLOR_0", np.full((4, 4), 40000, dtype="<u2"), 5123)
 
 
 @FUZZ
-@given(key_index=st.integers(0, 500), value=JSON_VALUES, sparse=st.booleans())
-def test_fuzz_edited_gltf_json(tmp_path, key_index, value, sparse):
-    gltf = _edited_json(_sparse_quad() if sparse else quad_gltf(image=_png(PICTURE)),
+@given(key_index=st.integers(0, 500), value=JSON_VALUES, decoded=st.booleans())
+def test_fuzz_edited_gltf_json(tmp_path, key_index, value, decoded):
+    gltf = _edited_json(_decoded_quad() if decoded else quad_gltf(image=_png(PICTURE)),
                         key_index, value)
     path = tmp_path / "fuzz.gltf"
     path.write_text(json.dumps(gltf))

@@ -119,7 +119,8 @@ with the file's path:
   error, never loaded as empty geometry.
 - Accessors claiming more data than their buffer views hold (a header that says 10^12
   vertices) are refused before anything is allocated. trimesh reads sparse accessors as if
-  they were dense; those that primitives draw from are decoded first (their substitutions
+  they were dense, and normalized integers (8- or 16-bit texture coordinates and colours) as
+  the integers; those that primitives draw from are decoded first (sparse substitutions
   checked against their accessor's size and their buffer views' lengths).
 - Truncated or corrupt files, undecodable textures, faces referring to missing vertices and
   non-finite positions are refused; a texture file that does not exist gives a warning and the
@@ -314,9 +315,9 @@ def _read_checked(path: Path) -> tuple[list[Mesh], dict | None]:
         # chunk is read once, as trimesh.load reads it
         with path.open("rb") as file:
             gltf = _checked_gltf(path, file)
-            densified = _densified(path, gltf, file, resolver)
+            decoded = _decoded(path, gltf, file, resolver)
             file.seek(0)
-            parts = _trimesh_parts(path, resolver, densified or file)
+            parts = _trimesh_parts(path, resolver, decoded or file)
     else:
         gltf, parts = None, _trimesh_parts(path, resolver, None)
     if resolver.refused:
@@ -393,7 +394,7 @@ def _gltf_parts(path: Path, resolver: Any, file: BinaryIO) -> list[_Part]:
     from trimesh.exchange.gltf import load_glb, load_gltf
     from trimesh.visual.color import to_rgba
 
-    glb = file.read(4) == b"glTF"  # a GLB whose sparse accessors were decoded comes as JSON
+    glb = file.read(4) == b"glTF"  # a GLB whose accessors were decoded comes as JSON
     file.seek(0)
     loaded = (load_glb if glb else load_gltf)(file_obj=file, resolver=resolver)
     geometries = loaded["geometry"]
@@ -717,35 +718,39 @@ def _check_accessors(path: Path, gltf: dict, binary_length: int | None) -> None:
             raise ValueError(f"{path}: bufferView {view_index} runs past the end of its buffer")
 
 
-# --- sparse accessors, which trimesh reads as if they were dense -----------------------------
+# --- accessors trimesh would misread: sparse, or normalized integers ---------------------------
 
 _COMPONENT_DTYPES = {5120: "<i1", 5121: "<u1", 5122: "<i2", 5123: "<u2", 5125: "<u4", 5126: "<f4"}
 _INDEX_DTYPES = {5121: "<u1", 5123: "<u2", 5125: "<u4"}  # a sparse block's element indices
+_NORMALIZABLE = (5120, 5121, 5122, 5123)  # the integer types an accessor may mark normalized
 
 
-def _densified(path: Path, gltf: dict, file: BinaryIO, resolver: Any) -> BinaryIO | None:
-    """Return the glTF JSON, for trimesh to read, with the sparse accessors it draws made dense.
+def _decoded(path: Path, gltf: dict, file: BinaryIO, resolver: Any) -> BinaryIO | None:
+    """Return the glTF JSON, for trimesh to read, with the accessors it would misread decoded.
 
-    trimesh reads an accessor's dense data (zeros where it has no bufferView) and ignores its
-    ``sparse`` substitutions. Each sparse accessor that a primitive's vertices or indices come
-    from is decoded here, base values then substitutions, into a new buffer (a data: URI) that
-    the accessor then reads; a GLB's binary chunk becomes a data: URI too, so trimesh reads the
-    whole as a .gltf. None when no primitive reads a sparse accessor (the file is read as it
-    is). Sparse morph targets, which pixelpath does not draw, are left alone.
+    trimesh reads an accessor's dense data (zeros where it has no bufferView), ignoring its
+    ``sparse`` substitutions, and reads integers as they are, ignoring ``normalized``: texture
+    coordinates in 8 or 16 bits (fractions of the type's range, as glTF allows) came out as
+    0..255 or 0..65535, and 16-bit colours were clipped. Each such accessor that a primitive
+    draws from is decoded here (base values, substitutions, then normalized integers as
+    float32 fractions) into a new buffer (a data: URI) that the accessor then reads; a GLB's
+    binary chunk becomes a data: URI too, so trimesh reads the whole as a .gltf. None when no
+    accessor needs it (the file is read as it is). Morph targets, which pixelpath does not
+    draw, are left alone.
     """
-    drawn = _drawn_sparse_accessors(path, gltf)
-    if not drawn:
+    misread = _misread_accessors(path, gltf)
+    if not misread:
         return None
     read = functools.cache(lambda index: _buffer_bytes(path, gltf, index, file, resolver))
     accessors = list(gltf["accessors"])
     views = list(_list(path, gltf, "bufferViews"))
     buffers = [dict(buffer) for buffer in _list(path, gltf, "buffers")]
     data = bytearray()
-    for index in drawn:
-        dense = _dense_accessor(path, gltf, index, read).tobytes()
-        views.append({"buffer": len(buffers), "byteOffset": len(data), "byteLength": len(dense)})
-        data += dense + bytes(-len(dense) % 4)  # the next block starts 4-byte aligned
-        accessor = {k: v for k, v in accessors[index].items() if k not in ("sparse", "byteOffset")}
+    for index in misread:
+        values, accessor = _decoded_accessor(path, gltf, index, read)
+        block = values.tobytes()
+        views.append({"buffer": len(buffers), "byteOffset": len(data), "byteLength": len(block)})
+        data += block + bytes(-len(block) % 4)  # the next block starts 4-byte aligned
         accessors[index] = {**accessor, "bufferView": len(views) - 1}
     for index, buffer in enumerate(buffers):
         if "uri" not in buffer:  # the GLB's binary chunk
@@ -755,25 +760,58 @@ def _densified(path: Path, gltf: dict, file: BinaryIO, resolver: Any) -> BinaryI
     return io.BytesIO(json.dumps(edited).encode())
 
 
-def _drawn_sparse_accessors(path: Path, gltf: dict) -> list[int]:
-    """Return the sparse accessors that primitives read their vertices or indices from."""
+def _misread_accessors(path: Path, gltf: dict) -> list[int]:
+    """Return the accessors primitives draw from that trimesh would misread.
+
+    Sparse ones, and normalized integer ones read as texture coordinates or colours (but for
+    8-bit colours, which trimesh takes as fractions of 255 already).
+    """
     accessors = _list(path, gltf, "accessors")
-    if not any("sparse" in accessor for accessor in accessors):
+    if not any("sparse" in accessor or accessor.get("normalized") for accessor in accessors):
         return []
-    drawn = {}
+    misread = {}
     for mesh in _list(path, gltf, "meshes"):
         primitives = mesh.get("primitives")
         for primitive in primitives if isinstance(primitives, list) else []:
             if not isinstance(primitive, dict):
                 continue
             attributes = primitive.get("attributes")
-            used = [*attributes.values()] if isinstance(attributes, dict) else []
-            for index in [*used, primitive.get("indices")]:
-                if _is_int(index) and 0 <= index < len(accessors) and (
-                    "sparse" in accessors[index]
-                ):
-                    drawn[index] = None
-    return list(drawn)
+            used = [*attributes.items()] if isinstance(attributes, dict) else []
+            for name, index in [*used, ("indices", primitive.get("indices"))]:
+                if not (_is_int(index) and 0 <= index < len(accessors)):
+                    continue
+                accessor = accessors[index]
+                kind = accessor.get("componentType")
+                fractions = (
+                    accessor.get("normalized") is True
+                    and kind in _NORMALIZABLE
+                    and isinstance(name, str)
+                    and (name.startswith("TEXCOORD_") or (name.startswith("COLOR_")
+                                                          and kind != 5121))
+                )
+                if "sparse" in accessor or fractions:
+                    misread[index] = None
+    return list(misread)
+
+
+def _decoded_accessor(path: Path, gltf: dict, index: int, read: Any) -> tuple[np.ndarray, dict]:
+    """Return accessor ``index``'s values (count, components) and its JSON to read them by.
+
+    The values are its base data with its sparse substitutions made, and, for normalized
+    integers, the fractions they stand for (c / (2^b - 1) unsigned, max(c / (2^(b-1) - 1), -1)
+    signed, the glTF rule) as float32; the JSON has no ``sparse`` or ``byteOffset`` left.
+    """
+    accessor = gltf["accessors"][index]
+    values = _dense_accessor(path, gltf, index, read)
+    edited = {k: v for k, v in accessor.items() if k not in ("sparse", "byteOffset")}
+    if accessor.get("normalized") is True and accessor.get("componentType") in _NORMALIZABLE:
+        info = np.iinfo(values.dtype)
+        values = np.maximum(values / float(info.max), -1.0).astype("<f4")
+        edited.pop("normalized")
+        edited.update(componentType=5126)
+        for key in ("min", "max"):
+            edited.pop(key, None)  # in the integers' units
+    return values, edited
 
 
 def _dense_accessor(path: Path, gltf: dict, index: int, read: Any) -> np.ndarray:
@@ -789,6 +827,8 @@ def _dense_accessor(path: Path, gltf: dict, index: int, read: Any) -> np.ndarray
     if accessor.get("bufferView") is not None:
         dense[:] = _elements(path, gltf, read, accessor["bufferView"],
                              accessor.get("byteOffset", 0), count, dtype, components, where)
+    if "sparse" not in accessor:
+        return dense
     sparse = accessor["sparse"]
     indices = sparse.get("indices") if isinstance(sparse, dict) else None
     values = sparse.get("values") if isinstance(sparse, dict) else None
