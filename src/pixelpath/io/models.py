@@ -62,7 +62,7 @@ glTF sampler of the           ``texture_wrap`` from ``wrapS``: REPEAT (10497, th
                               LINEAR), LINEAR (9729) "bilinear", the mipmap filters
                               (9984-9987) "trilinear", absent "trilinear" (glTF leaves the
                               choice to the viewer). No sampler: "repeat", "trilinear".
-``EXT_texture_webp`` (glTF)    the WebP picture is the texture (trimesh reads it, Pillow
+``EXT_texture_webp`` (glTF)   the WebP picture is the texture (trimesh reads it, Pillow
                               decodes it)
 ``KHR_texture_transform``     the base-colour texture's offset, rotation and scale, applied
 (glTF)                        to the part's ``uv``; a ``texCoord`` other than 0 gives a
