@@ -297,8 +297,7 @@ def test_unlit_gltf_material_shows_its_colour_unshaded(tmp_path, named, method):
     ambient term alone: 0.2 x 5 x C), whatever the lights; lit, the same quad is shaded.
     Unnamed, the one material is still found."""
     gltf = quad_gltf(extensionsUsed=["KHR_materials_unlit"])
-    color = [0.5, 0.25, 1.0]
-    gltf["materials"][0] = {"pbrMetallicRoughness": {"baseColorFactor": [*color, 1.0]},
+    gltf["materials"][0] = {"pbrMetallicRoughness": {"baseColorFactor": [0.5, 0.25, 1.0, 1.0]},
                             "extensions": {"KHR_materials_unlit": {}}}
     if named:
         gltf["materials"][0]["name"] = "flat"
