@@ -314,8 +314,8 @@ def _read_checked(path: Path) -> tuple[list[Mesh], dict | None]:
         # the checks read the JSON, then trimesh reads the file from its start: a GLB's binary
         # chunk is read once, as trimesh.load reads it
         with path.open("rb") as file:
-            gltf = _checked_gltf(path, file)
-            decoded = _decoded(path, gltf, file, resolver)
+            gltf, chunk = _checked_gltf(path, file)
+            decoded = _decoded(path, gltf, file, chunk, resolver)
             file.seek(0)
             parts = _trimesh_parts(path, resolver, decoded or file)
     else:
@@ -601,10 +601,24 @@ def _outside(uri: str, folder: Path) -> bool:
 # --- the glTF JSON, checked before trimesh reads anything ------------------------------------
 
 
-def _checked_gltf(path: Path, file: BinaryIO) -> dict:
-    """Return the glTF JSON of ``path``, open as ``file``, after the URI and size checks."""
+class _GlbChunk(NamedTuple):
+    """Where the chunk after a GLB's JSON lies in the file (its bytes left unread)."""
+
+    start: int  # its data's first byte
+    length: int
+    type: int  # 0x004E4942 ("BIN"): buffer 0's bytes
+
+
+_BIN = 0x004E4942
+
+
+def _checked_gltf(path: Path, file: BinaryIO) -> tuple[dict, _GlbChunk | None]:
+    """Return the glTF JSON of ``path``, open as ``file``, after the URI and size checks.
+
+    And, for a GLB, where its chunk after the JSON lies (None for a .gltf or a GLB without).
+    """
     glb = path.suffix.lower() == ".glb"
-    header, binary_length = _glb_parts(path, file) if glb else (file.read(), None)
+    header, chunk = _glb_parts(path, file) if glb else (file.read(), None)
     try:
         gltf = json.loads(header)
     except (UnicodeDecodeError, json.JSONDecodeError) as exc:
@@ -624,14 +638,14 @@ def _checked_gltf(path: Path, file: BinaryIO) -> dict:
                     "only data: URIs and relative paths inside it are read"
                 )
     _check_extensions(path, gltf)
-    _check_accessors(path, gltf, binary_length)
+    _check_accessors(path, gltf, None if chunk is None else chunk.length)
     for key in ("nodes", "meshes"):  # the parts' names are looked up in them
         _list(path, gltf, key)
-    return gltf
+    return gltf, chunk
 
 
-def _glb_parts(path: Path, file: BinaryIO) -> tuple[bytes, int | None]:
-    """Return a GLB's JSON chunk and its binary chunk's length (None: no binary chunk).
+def _glb_parts(path: Path, file: BinaryIO) -> tuple[bytes, _GlbChunk | None]:
+    """Return a GLB's JSON chunk and where its next (binary) chunk lies (None: no such chunk).
 
     The chunk lengths are checked against the file's size; the binary chunk is left unread
     (trimesh reads it).
@@ -646,12 +660,12 @@ def _glb_parts(path: Path, file: BinaryIO) -> tuple[bytes, int | None]:
         raise ValueError(f"{path}: truncated or corrupt GLB (the chunk lengths do not fit)")
     header = file.read(json_length)
     rest = 20 + json_length  # where the binary chunk's header starts
-    binary_length = None
-    if size - rest >= 8:
-        binary_length = struct.unpack("<I", file.read(4))[0]
-        if binary_length > size - rest - 8:
-            raise ValueError(f"{path}: truncated GLB (the binary chunk is cut short)")
-    return header, binary_length
+    if size - rest < 8:
+        return header, None
+    chunk = _GlbChunk(rest + 8, *struct.unpack("<II", file.read(8)))
+    if chunk.length > size - chunk.start:
+        raise ValueError(f"{path}: truncated GLB (the binary chunk is cut short)")
+    return header, chunk
 
 
 def _list(path: Path, gltf: dict, key: str) -> list[dict]:
@@ -725,7 +739,9 @@ _INDEX_DTYPES = {5121: "<u1", 5123: "<u2", 5125: "<u4"}  # a sparse block's elem
 _NORMALIZABLE = (5120, 5121, 5122, 5123)  # the integer types an accessor may mark normalized
 
 
-def _decoded(path: Path, gltf: dict, file: BinaryIO, resolver: Any) -> BinaryIO | None:
+def _decoded(
+    path: Path, gltf: dict, file: BinaryIO, chunk: _GlbChunk | None, resolver: Any
+) -> BinaryIO | None:
     """Return the glTF JSON, for trimesh to read, with the accessors it would misread decoded.
 
     trimesh reads an accessor's dense data (zeros where it has no bufferView), ignoring its
@@ -741,7 +757,8 @@ def _decoded(path: Path, gltf: dict, file: BinaryIO, resolver: Any) -> BinaryIO 
     misread = _misread_accessors(path, gltf)
     if not misread:
         return None
-    read = functools.cache(lambda index: _buffer_bytes(path, gltf, index, file, resolver))
+    read = functools.cache(lambda index: _buffer_bytes(path, gltf, index, file, chunk,
+                                                       resolver))
     accessors = list(gltf["accessors"])
     views = list(_list(path, gltf, "bufferViews"))
     buffers = [dict(buffer) for buffer in _list(path, gltf, "buffers")]
@@ -878,17 +895,19 @@ def _elements(
     return np.ascontiguousarray(rows).view(dtype).reshape(count, components)
 
 
-def _buffer_bytes(path: Path, gltf: dict, index: Any, file: BinaryIO, resolver: Any) -> bytes:
+def _buffer_bytes(
+    path: Path, gltf: dict, index: Any, file: BinaryIO, chunk: _GlbChunk | None, resolver: Any
+) -> bytes:
     """Return the bytes of buffer ``index``: a GLB's binary chunk, a data: URI or a file."""
     buffers = _list(path, gltf, "buffers")
     if not (_is_int(index) and 0 <= index < len(buffers)):
         raise ValueError(f"{path}: a bufferView names a missing buffer")
     uri = buffers[index].get("uri")
     if uri is None:
-        chunk = _glb_binary_chunk(file) if index == 0 else None
-        if chunk is None:
+        if index != 0 or chunk is None or chunk.type != _BIN:
             raise ValueError(f"{path}: buffer {index} has neither a uri nor a binary chunk")
-        return chunk
+        file.seek(chunk.start)
+        return file.read(chunk.length)
     if uri.startswith("data:"):
         head, _, payload = uri.partition(",")
         try:
@@ -901,19 +920,6 @@ def _buffer_bytes(path: Path, gltf: dict, index: Any, file: BinaryIO, resolver: 
         return resolver.get(uri)  # confined to the file's folder, as trimesh's reads are
     except FileNotFoundError:
         raise ValueError(f"{path}: buffer {index}'s file {uri!r} was not found") from None
-
-
-def _glb_binary_chunk(file: BinaryIO) -> bytes | None:
-    """Return the binary chunk of a GLB file (chunk lengths checked by :func:`_glb_parts`)."""
-    file.seek(0)
-    head = file.read(20)
-    if head[:4] != b"glTF":
-        return None
-    file.seek(20 + struct.unpack("<I", head[12:16])[0])
-    chunk = file.read(8)
-    if len(chunk) < 8 or chunk[4:] != b"BIN\0":
-        return None
-    return file.read(struct.unpack("<I", chunk[:4])[0])
 
 
 def _data_uri(data: bytes) -> str:
