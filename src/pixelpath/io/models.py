@@ -565,6 +565,11 @@ class _MtlMap(NamedTuple):
     ignored: str  # the other options, as the file writes them
 
 
+def _mtl_map_of(source: Any, shared: dict) -> _MtlMap | None:
+    """:func:`_mtl_map` of ``source``, worked out once per material (its parts and it share it)."""
+    return _once(shared, ("mtl map", id(source)), _mtl_map, source)
+
+
 def _mtl_map(source: Any) -> _MtlMap | None:
     """Return the options of the ``map_Kd`` line of ``source`` (an MTL material), if it has any.
 
@@ -982,7 +987,10 @@ def _mesh(path: Path, part: _Part, name: str, gltf: dict | None, shared: dict) -
         normals = normals if v.all_finite(normals) else None
     vertices, normals, faces = _placed(part.matrix, vertices, normals, faces, shared)
     material = _material(path, part.visual, gltf, shared)
-    uv = _texture_transformed(_uv(part.visual, len(vertices)), part.visual, gltf)
+    uv = _uv(part.visual, len(vertices))
+    if uv is not None:
+        uv = (_texture_transformed(uv, part.visual, gltf) if gltf is not None
+              else _mtl_moved(uv, _mtl_map_of(getattr(part.visual, "material", None), shared)))
     colors = _vertex_colors(part.colors, len(vertices), linear=gltf is not None)
     return Mesh(vertices, faces, material, normals, colors, uv, name)
 
@@ -1023,25 +1031,15 @@ def _uv(visual: Any, count: int) -> np.ndarray | None:
     return uv if v.all_finite(uv) else None
 
 
-def _texture_transformed(uv: np.ndarray | None, visual: Any, gltf: dict | None) -> Any:
-    """Return ``uv`` moved by the texture's transform, if its file gives one.
+def _texture_transformed(uv: np.ndarray, visual: Any, gltf: dict) -> np.ndarray:
+    """Return ``uv`` moved by the base-colour texture's ``KHR_texture_transform``, if it has one.
 
-    glTF's ``KHR_texture_transform`` maps texture coordinates (v down) by
-    ``T(offset) R(rotation) S(scale)``: u' = cos r sx u + sin r sy v + ox and
-    v' = -sin r sx u + cos r sy v + oy; pixelpath's uv (v up, ``1 - v`` of glTF's) are turned
-    back, moved and turned again. An .mtl ``map_Kd -s su sv -o ou ov`` gives u' = su u + ou and
-    v' = sv v + ov (v up in both). trimesh applies neither.
+    The extension maps glTF texture coordinates (v down) by ``T(offset) R(rotation) S(scale)``:
+    u' = cos r sx u + sin r sy v + ox and v' = -sin r sx u + cos r sy v + oy. trimesh does not
+    apply it; pixelpath's uv (v up, ``1 - v`` of glTF's) are turned back, moved and turned again.
     """
-    if uv is not None and gltf is None:
-        options = _mtl_map(getattr(visual, "material", None))
-        if options is None or (options.scale, options.offset) == ((1.0, 1.0), (0.0, 0.0)):
-            return uv
-        moved = np.empty_like(uv)
-        for axis in range(2):
-            moved[:, axis] = options.scale[axis] * uv[:, axis] + options.offset[axis]
-        return moved
-    used = (gltf or {}).get("extensionsUsed")
-    if uv is None or not isinstance(used, list) or "KHR_texture_transform" not in used:
+    used = gltf.get("extensionsUsed")
+    if not isinstance(used, list) or "KHR_texture_transform" not in used:
         return uv  # glTF lists every extension a file uses
     ref = _base_color_texture(gltf, getattr(visual, "material", None))
     extensions = ref.get("extensions") if isinstance(ref, dict) else None
@@ -1056,6 +1054,19 @@ def _texture_transformed(uv: np.ndarray | None, visual: Any, gltf: dict | None) 
     moved = np.empty_like(uv)
     moved[:, 0] = cos * sx * u + sin * sy * v + ox
     moved[:, 1] = 1.0 - (-sin * sx * u + cos * sy * v + oy)
+    return moved
+
+
+def _mtl_moved(uv: np.ndarray, options: _MtlMap | None) -> np.ndarray:
+    """Return ``uv`` scaled, then moved, by an .mtl map line's ``-s`` and ``-o`` options.
+
+    u' = su u + ou and v' = sv v + ov (v up in both); trimesh does not apply them.
+    """
+    if options is None or (options.scale, options.offset) == ((1.0, 1.0), (0.0, 0.0)):
+        return uv
+    moved = np.empty_like(uv)
+    for axis in range(2):
+        moved[:, axis] = options.scale[axis] * uv[:, axis] + options.offset[axis]
     return moved
 
 
@@ -1256,7 +1267,7 @@ def _simple_material(path: Path, source: Any, shared: dict) -> Material:
     ns = _mtl_number(raw.get("ns"), 0.0)
     opacity = _fraction(_mtl_number(raw.get("d"), 1.0))
     ka = float(np.mean(ka_color))
-    options = _mtl_map(source)
+    options = _mtl_map_of(source, shared)
     if options is not None and options.ignored:
         warnings.warn(f"{path}: material {source.name!r}: the .mtl texture options "
                       f"{options.ignored!r} are not applied", stacklevel=2)
