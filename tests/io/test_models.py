@@ -887,9 +887,11 @@ JSON_VALUES = st.recursive(
 
 def _decoded_quad() -> dict:
     """The textured quad with accessors pixelpath decodes before trimesh reads them: positions
-    from a sparse accessor (vertex 0 from its own data), 16-bit normalized colours."""
+    from a sparse accessor (vertex 0 from its own data), 16-bit normalized colours, normals
+    as normalized bytes (KHR_mesh_quantization's)."""
     gltf = quad_gltf(image=_png(PICTURE))
     gltf["accessors"][0]["sparse"] = _sparse(0)
+    gltf = _with_attribute(gltf, "NORMAL", np.tile(np.array([0, 0, 127], "<i1"), (4, 1)), 5120)
     return _with_attribute(gltf, "COLOR_0", np.full((4, 4), 40000, dtype="<u2"), 5123)
 
 

@@ -121,7 +121,9 @@ with the file's path:
   vertices) are refused before anything is allocated. trimesh reads sparse accessors as if
   they were dense, and normalized integers (8- or 16-bit texture coordinates and colours) as
   the integers; those that primitives draw from are decoded first (sparse substitutions
-  checked against their accessor's size and their buffer views' lengths).
+  checked against their accessor's size and their buffer views' lengths), and so are the
+  integer positions, normals and texture coordinates of ``KHR_mesh_quantization`` (as
+  written by gltfpack and gltf-transform), whose node transforms scale them back.
 - Truncated or corrupt files, undecodable textures, faces referring to missing vertices and
   non-finite positions are refused; a texture file that does not exist gives a warning and the
   material colour alone.
@@ -179,6 +181,7 @@ _KNOWN_REQUIRED = {
     "KHR_materials_emissive_strength",
     "KHR_materials_pbrSpecularGlossiness",
     "KHR_materials_unlit",
+    "KHR_mesh_quantization",  # integer vertex attributes, decoded to float32 before trimesh
     "KHR_texture_transform",  # applied to the base-colour texture's coordinates
     "EXT_texture_webp",  # trimesh (4.0 on) reads the WebP source, Pillow decodes it
 }
@@ -752,9 +755,11 @@ def _decoded(
     trimesh reads an accessor's dense data (zeros where it has no bufferView), ignoring its
     ``sparse`` substitutions, and reads integers as they are, ignoring ``normalized``: texture
     coordinates in 8 or 16 bits (fractions of the type's range, as glTF allows) came out as
-    0..255 or 0..65535, and 16-bit colours were clipped. Each such accessor that a primitive
-    draws from is decoded here (base values, substitutions, then normalized integers as
-    float32 fractions) into a new buffer (a data: URI) that the accessor then reads; a GLB's
+    0..255 or 0..65535, 16-bit colours were clipped, and ``KHR_mesh_quantization``'s integer
+    positions, normals and texture coordinates were not floats. Each such accessor that a
+    primitive draws from is decoded here (base values, substitutions, then integers as float32,
+    normalized ones as fractions) into a new buffer (a data: URI) that the accessor then reads
+    (the node transforms that scale quantized positions back are applied as any node's); a GLB's
     binary chunk becomes a data: URI too, so trimesh reads the whole as a .gltf. None when no
     accessor needs it (the file is read as it is). Morph targets, which pixelpath does not
     draw, are left alone.
@@ -768,8 +773,8 @@ def _decoded(
     views = list(_list(path, gltf, "bufferViews"))
     buffers = [dict(buffer) for buffer in _list(path, gltf, "buffers")]
     data = bytearray()
-    for index in misread:
-        values, accessor = _decoded_accessor(path, gltf, index, read)
+    for index, as_float in misread.items():
+        values, accessor = _decoded_accessor(path, gltf, index, read, as_float)
         block = values.tobytes()
         views.append({"buffer": len(buffers), "byteOffset": len(data), "byteLength": len(block)})
         data += block + bytes(-len(block) % 4)  # the next block starts 4-byte aligned
@@ -782,16 +787,20 @@ def _decoded(
     return io.BytesIO(json.dumps(edited).encode())
 
 
-def _misread_accessors(path: Path, gltf: dict) -> list[int]:
+def _misread_accessors(path: Path, gltf: dict) -> dict[int, bool]:
     """Return the accessors primitives draw from that trimesh would misread.
 
-    Sparse ones, and normalized integer ones read as texture coordinates or colours (but for
-    8-bit colours, which trimesh takes as fractions of 255 already).
+    Each maps to whether its values become float32: sparse ones (their type kept, unless they
+    are also one of the next kinds); integer positions, normals, tangents and texture
+    coordinates (``KHR_mesh_quantization``'s, normalized or not); normalized integer colours
+    (but for 8-bit ones, which trimesh takes as fractions of 255 already).
     """
     accessors = _list(path, gltf, "accessors")
-    if not any("sparse" in accessor or accessor.get("normalized") for accessor in accessors):
-        return []
-    misread = {}
+    if not any("sparse" in accessor or (accessor.get("componentType") in _NORMALIZABLE
+                                        and accessor.get("type") != "SCALAR")
+               for accessor in accessors):
+        return {}  # only float attributes (and integer indices): nothing to decode
+    misread: dict[int, bool] = {}
     for mesh in _list(path, gltf, "meshes"):
         primitives = mesh.get("primitives")
         for primitive in primitives if isinstance(primitives, list) else []:
@@ -803,36 +812,49 @@ def _misread_accessors(path: Path, gltf: dict) -> list[int]:
                 if not (_is_int(index) and 0 <= index < len(accessors)):
                     continue
                 accessor = accessors[index]
-                kind = accessor.get("componentType")
-                fractions = (
-                    accessor.get("normalized") is True
-                    and kind in _NORMALIZABLE
-                    and isinstance(name, str)
-                    and (name.startswith("TEXCOORD_") or (name.startswith("COLOR_")
-                                                          and kind != 5121))
-                )
-                if "sparse" in accessor or fractions:
-                    misread[index] = None
-    return list(misread)
+                as_float = _misread_as_integers(name, accessor)
+                if "sparse" in accessor or as_float:
+                    misread[index] = misread.get(index, False) or as_float
+    return misread
 
 
-def _decoded_accessor(path: Path, gltf: dict, index: int, read: Any) -> tuple[np.ndarray, dict]:
+_QUANTIZABLE = ("POSITION", "NORMAL", "TANGENT")  # and TEXCOORD_n: KHR_mesh_quantization's
+
+
+def _misread_as_integers(name: Any, accessor: dict) -> bool:
+    """Whether trimesh would misread an attribute's integers (to be decoded as float32).
+
+    They stand for fractions (normalized) or for coordinates trimesh must get as floats
+    (quantized).
+    """
+    kind = accessor.get("componentType")
+    if kind not in _NORMALIZABLE or not isinstance(name, str):
+        return False
+    if name in _QUANTIZABLE or name.startswith("TEXCOORD_"):
+        return True
+    return name.startswith("COLOR_") and accessor.get("normalized") is True and kind != 5121
+
+
+def _decoded_accessor(
+    path: Path, gltf: dict, index: int, read: Any, as_float: bool
+) -> tuple[np.ndarray, dict]:
     """Return accessor ``index``'s values (count, components) and its JSON to read them by.
 
-    The values are its base data with its sparse substitutions made, and, for normalized
-    integers, the fractions they stand for (c / (2^b - 1) unsigned, max(c / (2^(b-1) - 1), -1)
-    signed, the glTF rule) as float32; the JSON has no ``sparse`` or ``byteOffset`` left.
+    The values are its base data with its sparse substitutions made and, ``as_float``, as
+    float32: normalized integers as the fractions they stand for (c / (2^b - 1) unsigned,
+    max(c / (2^(b-1) - 1), -1) signed, the glTF rule), others as they are. The JSON has no
+    ``sparse`` or ``byteOffset`` left.
     """
     accessor = gltf["accessors"][index]
     values = _dense_accessor(path, gltf, index, read)
     edited = {k: v for k, v in accessor.items() if k not in ("sparse", "byteOffset")}
-    if accessor.get("normalized") is True and accessor.get("componentType") in _NORMALIZABLE:
-        info = np.iinfo(values.dtype)
-        values = np.maximum(values / float(info.max), -1.0).astype("<f4")
-        edited.pop("normalized")
+    if as_float and accessor.get("componentType") in _NORMALIZABLE:
+        if edited.pop("normalized", None) is True:
+            values = np.maximum(values / float(np.iinfo(values.dtype).max), -1.0)
+            for key in ("min", "max"):
+                edited.pop(key, None)  # in the integers' units
+        values = values.astype("<f4")
         edited.update(componentType=5126)
-        for key in ("min", "max"):
-            edited.pop(key, None)  # in the integers' units
     return values, edited
 
 
