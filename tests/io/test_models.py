@@ -701,16 +701,20 @@ def test_bad_sparse_blocks_are_refused(tmp_path, sparse, message):
         read_model(write(tmp_path, gltf))
 
 
-def _with_attribute(gltf: dict, name: str, values: np.ndarray, component: int) -> dict:
-    """Add ``values`` (integers, normalized) to the quad's buffer as its attribute ``name``."""
+def _with_attribute(
+    gltf: dict, name: str, values: np.ndarray, component: int, *, normalized: bool = True
+) -> dict:
+    """Add ``values`` (integers, normalized, unless floats) to the quad's buffer as its
+    attribute ``name``."""
     blob = base64.b64decode(gltf["buffers"][0]["uri"].split(",")[1])
     view = {"buffer": 0, "byteOffset": len(blob), "byteLength": values.nbytes}
     blob += values.tobytes()
     gltf["buffers"][0] = {"byteLength": len(blob), "uri": _data_uri(blob)}
     gltf["bufferViews"].append(view)
-    gltf["accessors"].append({"bufferView": len(gltf["bufferViews"]) - 1, "normalized": True,
+    gltf["accessors"].append({"bufferView": len(gltf["bufferViews"]) - 1,
                               "componentType": component, "count": len(values),
-                              "type": f"VEC{values.shape[1]}"})
+                              "type": f"VEC{values.shape[1]}"}
+                             | ({"normalized": True} if component != 5126 else {}))
     gltf["meshes"][0]["primitives"][0]["attributes"][name] = len(gltf["accessors"]) - 1
     return gltf
 
@@ -744,6 +748,27 @@ def test_sparse_morph_targets_are_left_alone(tmp_path):
     gltf["meshes"][0]["primitives"][0]["targets"] = [{"POSITION": 3}]  # not drawn
     (mesh,) = read_model(write(tmp_path, gltf)).objects
     np.testing.assert_array_equal(mesh.vertices, QUAD)
+
+
+def test_zero_normals_in_a_file_become_the_faces_normals(tmp_path):
+    """Corner 1's normal written as (0, 0, 0), as some exporters write them: it becomes the
+    normal of the flat quad's faces, +Z; the others keep the file's (tilted) normals."""
+    normals = np.array([[0, 0.6, 0.8], [0, 0, 0], [0, 0.6, 0.8], [0, 0.6, 0.8]], "<f4")
+    gltf = _with_attribute(quad_gltf(), "NORMAL", normals, 5126)
+    (mesh,) = read_model(write(tmp_path, gltf)).objects
+    np.testing.assert_allclose(mesh.normals, [[0, 0.6, 0.8], [0, 0, 1], [0, 0.6, 0.8],
+                                              [0, 0.6, 0.8]], atol=1e-7)
+
+
+def test_zero_normal_of_a_corner_of_no_area_is_plus_z(tmp_path):
+    """Corner 3 moved onto corner 0: the one face it belongs to, (0, 2, 3), has no area, so it
+    has no faces' normal to take and gets +Z (it is never seen)."""
+    vertices = QUAD.copy()
+    vertices[3] = vertices[0]
+    normals = np.array([[0, 0.6, 0.8], [0, 0.6, 0.8], [0, 0.6, 0.8], [0, 0, 0]], "<f4")
+    gltf = _with_attribute(quad_gltf(vertices=vertices), "NORMAL", normals, 5126)
+    (mesh,) = read_model(write(tmp_path, gltf)).objects
+    np.testing.assert_allclose(mesh.normals[3], [0, 0, 1])
 
 
 def test_indices_out_of_range_are_refused(tmp_path):

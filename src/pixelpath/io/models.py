@@ -15,6 +15,10 @@ What a model file gives (:func:`read_model`)
   "<name>_1", its third "<name>_2", and so on. The graph is walked node by node (in the
   order of trimesh's ``scene.graph.nodes_geometry``), never through ``Scene.dump()``, which
   drops glTF ``COLOR_0`` stored beside a material.
+- **Normals**: those the file stores, turned by the node's inverse transpose; where it has
+  none, the area-weighted normals of the faces (:class:`~pixelpath.scene.Mesh`'s). A zero
+  vector in the file (some exporters write them at degenerate corners) becomes the faces'
+  normal there, and non-finite ones drop the part's stored normals.
 - **Texture coordinates**: pixelpath's uv have v up, (0, 0) the bottom-left of the image.
   trimesh already flips glTF's v when it loads a file (OBJ's is v up already), so its uv are
   used as they are (the tests pin this with a 2 x 2 texture in a hand-written glTF).
@@ -1008,6 +1012,8 @@ def _mesh(path: Path, part: _Part, name: str, gltf: dict | None, shared: dict) -
         normals = np.asarray(part.normals, dtype=np.float64)
         normals = normals if v.all_finite(normals) else None
     vertices, normals, faces = _placed(part.matrix, vertices, normals, faces, shared)
+    if normals is not None:
+        normals = _without_zero_normals(normals, vertices, faces)
     material = _material(path, part.visual, gltf, shared)
     uv = _uv(part.visual, len(vertices))
     if uv is not None:
@@ -1036,6 +1042,24 @@ def _placed(
     if _once(shared, ("det", node), np.linalg.det, linear) < 0.0:
         faces = faces[:, ::-1]  # a mirroring node: keep faces counter-clockwise outside
     return vertices, normals, faces
+
+
+def _without_zero_normals(
+    normals: np.ndarray, vertices: np.ndarray, faces: np.ndarray
+) -> np.ndarray:
+    """Return a part's normals from its file with its zero vectors filled in.
+
+    Some exporters write (0, 0, 0) at corners of degenerate faces, which a Mesh refuses: each
+    becomes the area-weighted normal of the faces around its vertex, as where a file has no
+    normals, or +Z where those faces have no area either (such a vertex is never seen).
+    """
+    zero = ~normals.any(axis=1)
+    if not zero.any():
+        return normals
+    filled = normals.copy()
+    filled[zero] = Mesh(vertices, faces).vertex_normals[zero]
+    filled[~filled.any(axis=1)] = (0.0, 0.0, 1.0)
+    return filled
 
 
 def _once(shared: dict, key: tuple, function: Any, argument: Any) -> Any:
