@@ -12,6 +12,7 @@ import pytest
 from agreement import check_agreement, scene_of
 
 import pixelpath as pp
+from pixelpath.hsr import painter
 from pixelpath.hsr.painter import TESTS, Comparison, compare
 
 CAMERA = pp.Camera(eye=(0, 0, 5), target=(0, 0, 0), width=64, height=64)
@@ -162,4 +163,35 @@ def test_report_table_counts_every_comparison():
     # than once is compared again with each piece).
     assert settled + summary["moves (Q painted before P)"] + summary["splits"] + summary.get(
         "pairs left in sorted order (no plane cuts them)", 0
-    ) == summary["comparisons"]
+    ) + summary.get("pairs left in sorted order (polygon limit reached)", 0) == summary[
+        "comparisons"]
+
+
+def crossing_soup(count: int = 60, seed: int = 0) -> pp.Scene:
+    """``count`` large random triangles crossing each other, each an object of its own colour:
+    the 60 of seed 0 need about 1,950 pieces, more than the 8 n + 1024 the sort once allowed."""
+    rng = np.random.default_rng(seed)
+    corners = rng.uniform(-1, 1, (count, 1, 3)) + rng.normal(0, 0.8, (count, 3, 3))
+    objects = [pp.Mesh(triangle, [[0, 1, 2]], pp.Material(color=rng.uniform(0.2, 1, 3),
+                                                          double_sided=True))
+               for triangle in corners]
+    camera = pp.Camera(eye=(0, 0, 6), target=(0, 0, 0), width=96, height=72)
+    return pp.Scene(camera, objects, [pp.PointLight((3, 3, 6))])
+
+
+def test_a_soup_of_crossing_triangles_is_split_until_exact():
+    scene = crossing_soup()
+    _, report = pp.render(scene, "painter", explain=True)
+    assert report.summary["pieces made by splitting"] > 8 * 60 + 1024
+    assert "pairs left in sorted order (polygon limit reached)" not in report.summary
+    check_agreement(scene, "painter")
+
+
+def test_the_split_limit_warns_and_is_reported(monkeypatch):
+    """With room for 60 + 100 polygons the same soup cannot be split enough: the sort says so."""
+    monkeypatch.setattr(painter, "MAX_GROWTH", 1)
+    monkeypatch.setattr(painter, "SPLIT_FLOOR", 100)
+    with pytest.warns(painter.SplitLimitWarning, match=r"stopped splitting at 160 polygons"):
+        _, report = pp.render(crossing_soup(), "painter", explain=True)
+    assert report.summary["pairs left in sorted order (polygon limit reached)"] > 0
+    assert report.summary["pieces made by splitting"] <= 100

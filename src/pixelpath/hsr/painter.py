@@ -30,6 +30,7 @@ covering it. Memory: a record per polygon and the frame's buffers.
 from __future__ import annotations
 
 import dataclasses
+import warnings
 from typing import NamedTuple
 
 import numpy as np
@@ -38,7 +39,7 @@ from pixelpath.contract import Frame, RenderOptions, View
 from pixelpath.hsr import pipeline
 from pixelpath.scene import Camera, Scene
 
-__all__ = ["STEPS", "TESTS", "Comparison", "compare", "render_frame"]
+__all__ = ["STEPS", "TESTS", "Comparison", "SplitLimitWarning", "compare", "render_frame"]
 
 STEPS = pipeline.FRONT_STEPS + 2 + pipeline.SHADE_SLICES
 
@@ -54,9 +55,17 @@ TESTS = (
 
 # Distances below this fraction of the scene's size count as lying on a plane.
 PLANE_TOLERANCE = 1e-9
-# Splitting stops (pairs keep their sorted order) past this many polygons per input polygon;
-# real scenes stay far below it, it only bounds degenerate input.
+# Splitting stops (pairs keep their sorted order, with a SplitLimitWarning) past MAX_GROWTH
+# polygons per input polygon plus SPLIT_FLOOR. Meshes stay far below it; a small soup of
+# crossing triangles needs the floor (trimesh's soup.stl, 100 triangles, up to 9,900 polygons
+# seen from around it), and input that would split almost without end stops within seconds
+# (300 large random triangles crossing each other reach the limit in 2.3 s on 2 cores).
 MAX_GROWTH = 8
+SPLIT_FLOOR = 16384
+
+
+class SplitLimitWarning(UserWarning):
+    """The depth sort stopped splitting at its polygon limit: some overlaps may show wrongly."""
 
 
 class Comparison(NamedTuple):
@@ -134,7 +143,7 @@ def depth_sort(prepared: pipeline.Prepared, view: View) -> DepthSort:
     screen = np.zeros((len(attrs), 3))
     screen[:count] = prepared.screen
     counts = np.zeros(kernels.COUNTS, dtype=np.int64)
-    limit = MAX_GROWTH * len(candidates) + 1024
+    limit = MAX_GROWTH * len(candidates) + SPLIT_FLOOR
     order, attrs, screen, count, corners, root = kernels.depth_sort(
         attrs, screen, count, np.ascontiguousarray(prepared.triangles[candidates]),
         np.ascontiguousarray(planes[candidates]), camera.width, camera.height,
@@ -148,6 +157,13 @@ def depth_sort(prepared: pipeline.Prepared, view: View) -> DepthSort:
     order = np.concatenate([np.flatnonzero(~sortable), number[order]])
     extended = _with_pieces(prepared, view, attrs[:count], screen[:count], pieces,
                             origin[sorted_count:])
+    if counts[kernels.LIMITED]:
+        warnings.warn(
+            f"the painter's algorithm stopped splitting at {limit:,} polygons (the limit for "
+            f"{len(candidates):,} triangles): {counts[kernels.LIMITED]:,} overlapping pairs "
+            "are drawn in depth order and may show wrongly; method='zbuffer' draws them "
+            "exactly", SplitLimitWarning, stacklevel=2,
+        )
     return DepthSort(extended, order, counts, sorted_count, drawable)
 
 
@@ -345,8 +361,11 @@ def _report(result: DepthSort, view: View, visibility: pipeline.Visibility):
         "triangles painted": len(result.order),
         "pixels drawn": int(np.count_nonzero(visibility.triangle_id >= 0)),
     }
-    if counts[kernels.UNRESOLVED]:
-        summary["pairs left in sorted order (no plane cuts them)"] = counts[kernels.UNRESOLVED]
+    uncut = counts[kernels.UNRESOLVED] - counts[kernels.LIMITED]
+    if uncut:
+        summary["pairs left in sorted order (no plane cuts them)"] = uncut
+    if counts[kernels.LIMITED]:
+        summary["pairs left in sorted order (polygon limit reached)"] = counts[kernels.LIMITED]
     return Report(
         method="painter",
         summary=summary,

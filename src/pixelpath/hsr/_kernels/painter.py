@@ -60,7 +60,10 @@ CYCLES = 8
 SPLITS = 9
 PIECES = 10
 UNRESOLVED = 11  # pairs drawn in the sorted order because no plane could cut them
-COUNTS = 12
+LIMITED = 12  # of those, pairs left uncut because the polygon limit was reached
+COUNTS = 13
+
+NO_ROOM = -2  # _plane_cut's answer once the polygon limit is reached
 
 # A projection-overlap tolerance, in pixels per pixel of edge length: edges that coincide up
 # to rounding (a split line drawn from both sides) count as touching, not overlapping.
@@ -209,7 +212,8 @@ def depth_sort(attrs, screen, count, triangles, planes, width, height, orthograp
     max_polygons : int
         Splitting stops (and pairs are left in sorted order) once this many polygons exist.
     counts : (COUNTS,) int64, out
-        Comparisons, pairs settled by each test, moves, cycles, splits, pieces, unresolved.
+        Comparisons, pairs settled by each test, moves, cycles, splits, pieces, unresolved
+        and, of those, unresolved for want of room (``max_polygons`` reached).
 
     Returns
     -------
@@ -292,6 +296,7 @@ def depth_sort(attrs, screen, count, triangles, planes, width, height, orthograp
                 counts[CYCLES] += int(cycle)
                 break
             counts[UNRESOLVED] += 1
+            counts[LIMITED] += int(cut == NO_ROOM)
         # The sorted list: every Q up to the first entirely nearer than P.
         near, left, right = records[p, ZMIN], records[p, XMIN], records[p, XMAX]
         low, high = records[p, YMIN], records[p, YMAX]
@@ -321,6 +326,7 @@ def depth_sort(attrs, screen, count, triangles, planes, width, height, orthograp
                 cycle = outcome == MOVE  # False here (a bool, not a literal: one compile)
                 cut, by = _plane_cut(p, q, cycle, stack, top, records, corners, attrs, eps, room)
                 counts[UNRESOLVED] += int(cut < 0)
+                counts[LIMITED] += int(cut == NO_ROOM)
         if move >= 0:
             # Q cannot hide P but P might hide Q: move Q before P and mark it.
             gone[move] = True
@@ -401,10 +407,11 @@ def _plane_cut(p, q, cycle, stack, top, records, corners, attrs, eps, room):
 
     Q by P's plane if Q straddles it, else P by Q's plane; for a cycle (Q is on the stack,
     moved before), any member of the cycle from Q up to P that straddles another member's
-    plane. (-1, -1) when no plane cuts (the pair stays in sorted order) or ``room`` is False.
+    plane. (-1, -1) when no plane cuts (the pair stays in sorted order), (NO_ROOM, -1) when
+    ``room`` is False.
     """
     if not room:
-        return -1, -1
+        return NO_ROOM, -1
     if _straddles(q, p, records, corners, attrs, eps):
         return q, p
     if _straddles(p, q, records, corners, attrs, eps):
