@@ -913,9 +913,11 @@ JSON_VALUES = st.recursive(
 def _decoded_quad() -> dict:
     """The textured quad with accessors pixelpath decodes before trimesh reads them: positions
     from a sparse accessor (vertex 0 from its own data), 16-bit normalized colours, normals
-    as normalized bytes (KHR_mesh_quantization's)."""
+    as normalized bytes (KHR_mesh_quantization's), the texture reading uv set 1."""
     gltf = quad_gltf(image=_png(PICTURE))
     gltf["accessors"][0]["sparse"] = _sparse(0)
+    gltf["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_1"] = 1
+    gltf["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["texCoord"] = 1
     gltf = _with_attribute(gltf, "NORMAL", np.tile(np.array([0, 0, 127], "<i1"), (4, 1)), 5120)
     return _with_attribute(gltf, "COLOR_0", np.full((4, 4), 40000, dtype="<u2"), 5123)
 
@@ -1018,11 +1020,44 @@ def test_khr_texture_transform_moves_the_texture_coordinates(tmp_path):
         read_model(_transformed_quad(tmp_path, scale=[1, "big"]))
 
 
-def test_a_second_set_of_texture_coordinates_is_warned_of(tmp_path):
+def _two_uv_sets(container: str = "gltf") -> dict:
+    """The textured quad whose set 0 is squeezed to a point and whose set 1 is the true uv."""
     gltf = quad_gltf(image=_png(PICTURE))
+    gltf["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_1"] = 1  # the true uv
+    return _with_attribute(gltf, "TEXCOORD_0", np.full((4, 2), 0.25, "<f4"), 5126)
+
+
+@pytest.mark.parametrize("where", ["texCoord", "transform"])
+def test_the_base_colour_reads_the_set_its_material_names(tmp_path, where):
+    """``texCoord: 1`` (or KHR_texture_transform's own texCoord, which overrides it): the
+    part's uv are set 1's, as the Khronos MultiUVTest model needs (trimesh reads set 0)."""
+    gltf = _two_uv_sets()
+    ref = gltf["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]
+    if where == "texCoord":
+        ref["texCoord"] = 1
+    else:
+        ref.update(texCoord=0, extensions={"KHR_texture_transform": {"texCoord": 1}})
+        gltf["extensionsUsed"] = ["KHR_texture_transform"]
+    (mesh,) = read_model(write(tmp_path, gltf)).objects
+    np.testing.assert_array_equal(mesh.uv, [[0, 0], [1, 0], [1, 1], [0, 1]])
+
+
+def test_a_base_colour_set_in_a_glb_is_read_too(tmp_path):
+    gltf = _two_uv_sets()
     gltf["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["texCoord"] = 1
-    with pytest.warns(UserWarning, match=r"model\.gltf: material 'm'.*TEXCOORD_1.*set 0"):
+    blob = base64.b64decode(gltf["buffers"][0]["uri"].split(",")[1])
+    path = tmp_path / "model.glb"
+    path.write_bytes(_glb_with_binary(gltf, blob))
+    (mesh,) = read_model(path).objects
+    np.testing.assert_array_equal(mesh.uv, [[0, 0], [1, 0], [1, 1], [0, 1]])
+
+
+def test_a_set_the_mesh_lacks_is_warned_of_and_set_0_used(tmp_path):
+    gltf = quad_gltf(image=_png(PICTURE))
+    gltf["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["texCoord"] = 2
+    with pytest.warns(UserWarning, match=r"model\.gltf: mesh 0: material 'm'.*TEXCOORD_2.*set 0"):
         (mesh,) = read_model(write(tmp_path, gltf)).objects
+    np.testing.assert_array_equal(mesh.uv, [[0, 0], [1, 0], [1, 1], [0, 1]])
     assert mesh.material.texture is not None
 
 def test_khr_texture_transform_shows_in_the_picture(tmp_path):

@@ -69,8 +69,10 @@ glTF sampler of the           ``texture_wrap`` from ``wrapS``: REPEAT (10497, th
 ``EXT_texture_webp`` (glTF)   the WebP picture is the texture (trimesh reads it, Pillow
                               decodes it)
 ``KHR_texture_transform``     the base-colour texture's offset, rotation and scale, applied
-(glTF)                        to the part's ``uv``; a ``texCoord`` other than 0 gives a
-                              warning, and set 0 is used
+(glTF)                        to the part's ``uv``
+glTF ``texCoord`` of the      the part's ``uv`` are that set's (``TEXCOORD_1``, ...; the
+``baseColorTexture``          transform's own ``texCoord`` overrides it); a mesh without the
+                              set gives a warning, and set 0 is used
 glTF ``doubleSided``          ``double_sided``
 ``KHR_materials_unlit``       ``ka = 1 / AMBIENT`` (5), ``kd = ks = 0``: the surface colour
 (glTF)                        under the model's own ambient light (0.2) and no other light,
@@ -769,8 +771,9 @@ def _decoded(
     accessor needs it (the file is read as it is). Morph targets, which pixelpath does not
     draw, are left alone.
     """
-    misread = _misread_accessors(path, gltf)
-    if not misread:
+    meshes = _base_color_sets(path, gltf)
+    misread = _misread_accessors(path, gltf if meshes is None else {**gltf, "meshes": meshes})
+    if not misread and meshes is None:
         return None
     read = functools.cache(lambda index: _buffer_bytes(path, gltf, index, file, chunk,
                                                        resolver))
@@ -789,7 +792,60 @@ def _decoded(
             buffer["uri"] = _data_uri(read(index))
     buffers.append({"byteLength": len(data), "uri": _data_uri(bytes(data))})
     edited = {**gltf, "accessors": accessors, "bufferViews": views, "buffers": buffers}
+    if meshes is not None:
+        edited["meshes"] = meshes
     return io.BytesIO(json.dumps(edited).encode())
+
+
+def _base_color_sets(path: Path, gltf: dict) -> list[dict] | None:
+    """Return the glTF meshes with each primitive's ``TEXCOORD_0`` the set its base colour reads.
+
+    trimesh reads texture coordinates from set 0 alone; a material whose base-colour texture
+    reads another set (``texCoord``, or ``KHR_texture_transform``'s own ``texCoord``, which
+    overrides it) gets that set's accessor as set 0. None when every primitive reads set 0. A
+    primitive without the set keeps set 0, with a warning.
+    """
+    materials = _list(path, gltf, "materials")
+    sets = [_texture_set(material) for material in materials]
+    if not any(sets):
+        return None
+    meshes = [dict(mesh) for mesh in _list(path, gltf, "meshes")]
+    for number, mesh in enumerate(meshes):
+        primitives = mesh.get("primitives")
+        if not isinstance(primitives, list):
+            continue
+        mesh["primitives"] = primitives = [dict(p) if isinstance(p, dict) else p
+                                           for p in primitives]
+        for primitive in primitives:
+            material = primitive.get("material") if isinstance(primitive, dict) else None
+            attributes = primitive.get("attributes") if isinstance(primitive, dict) else None
+            if not (_is_int(material) and 0 <= material < len(sets) and sets[material]
+                    and isinstance(attributes, dict)):
+                continue
+            name = f"TEXCOORD_{sets[material]}"
+            if name in attributes:
+                primitive["attributes"] = {**attributes, "TEXCOORD_0": attributes[name]}
+            else:
+                warnings.warn(
+                    f"{path}: mesh {number}: material {materials[material].get('name')!r} "
+                    f"reads texture coordinates {name}, which the mesh lacks; set 0 is used",
+                    stacklevel=4,
+                )
+    return meshes
+
+
+def _texture_set(material: dict) -> int:
+    """Return the texture coordinate set a glTF material's base-colour texture reads."""
+    pbr = material.get("pbrMetallicRoughness")
+    ref = pbr.get("baseColorTexture") if isinstance(pbr, dict) else None
+    if not isinstance(ref, dict):
+        return 0
+    extensions = ref.get("extensions")
+    transform = extensions.get("KHR_texture_transform") if isinstance(extensions, dict) else None
+    number = ref.get("texCoord", 0)
+    if isinstance(transform, dict) and "texCoord" in transform:
+        number = transform["texCoord"]
+    return number if _is_int(number) and number > 0 else 0
 
 
 def _misread_accessors(path: Path, gltf: dict) -> dict[int, bool]:
@@ -1430,13 +1486,6 @@ def _sampler(path: Path, source: Any, gltf: dict | None, shared: dict) -> tuple[
         return "trilinear", "repeat"
     name = source.name
     sampler = _sampler_json(gltf, ref, f"material {name!r}")
-    coordinates = ref.get("texCoord", 0)
-    if coordinates != 0:
-        warnings.warn(
-            f"{path}: material {name!r}: the texture reads texture coordinates set "
-            f"{coordinates!r} (TEXCOORD_{coordinates}); pixelpath reads set 0 only and uses it",
-            stacklevel=2,
-        )
     wrap_s = _code(sampler, "wrapS", _WRAPS, 10497, name)
     wrap_t = _code(sampler, "wrapT", _WRAPS, 10497, name)
     minify = _code(sampler, "minFilter", _MIN_FILTERS, None, name)
