@@ -767,9 +767,10 @@ def _decoded(
     primitive draws from is decoded here (base values, substitutions, then integers as float32,
     normalized ones as fractions) into a new buffer (a data: URI) that the accessor then reads
     (the node transforms that scale quantized positions back are applied as any node's); a GLB's
-    binary chunk becomes a data: URI too, so trimesh reads the whole as a .gltf. None when no
-    accessor needs it (the file is read as it is). Morph targets, which pixelpath does not
-    draw, are left alone.
+    binary chunk becomes a data: URI too, so trimesh reads the whole as a .gltf. The meshes
+    come with the texture coordinate sets their base colours read as set 0
+    (:func:`_base_color_sets`). None when nothing needs it (the file is read as it is). Morph
+    targets, which pixelpath does not draw, are left alone.
     """
     meshes = _base_color_sets(path, gltf)
     misread = _misread_accessors(path, gltf if meshes is None else {**gltf, "meshes": meshes})
