@@ -194,6 +194,43 @@ def test_ply_vertex_colours_are_decoded_from_srgb(tmp_path):
     srgb = 128 / 255
     np.testing.assert_allclose(mesh.colors[0, :3], [((srgb + 0.055) / 1.055) ** 2.4, 0, 1],
                                atol=1e-6)
+    assert mesh.material.color.tolist() == [1, 1, 1]  # the colours are the surface's own
+
+
+def _face_coloured_square(tmp_path, colours) -> Path:
+    """A unit square in z = 0 of two triangles sharing the diagonal, one colour per face."""
+    faces = "\n".join(f"3 {a} {b} {c} {r} {g} {b_}" for (a, b, c), (r, g, b_)
+                      in zip([(0, 1, 2), (0, 2, 3)], colours, strict=True))
+    path = tmp_path / "square.ply"
+    path.write_text(
+        "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+        "property float z\nelement face 2\nproperty list uchar int vertex_indices\n"
+        "property uchar red\nproperty uchar green\nproperty uchar blue\nend_header\n"
+        f"0 0 0\n1 0 0\n1 1 0\n0 1 0\n{faces}\n"
+    )
+    return path
+
+
+def test_ply_face_colours_of_one_colour_colour_every_vertex(tmp_path):
+    (mesh,) = read_model(_face_coloured_square(tmp_path, [(255, 0, 255)] * 2)).objects
+    np.testing.assert_array_equal(mesh.colors, [[1, 0, 1, 1]] * 4)
+    assert len(mesh.vertices) == 4 and mesh.material.color.tolist() == [1, 1, 1]
+
+
+def test_ply_face_colours_give_each_face_its_corners(tmp_path):
+    """A red and a blue triangle: six corners, three of each colour, on their faces' places,
+    all with the square's normal (the shared corners' normals kept)."""
+    (mesh,) = read_model(_face_coloured_square(tmp_path, [(255, 0, 0), (0, 0, 255)])).objects
+    np.testing.assert_array_equal(mesh.colors, [[1, 0, 0, 1]] * 3 + [[0, 0, 1, 1]] * 3)
+    np.testing.assert_array_equal(mesh.vertices[mesh.triangles],
+                                  [[[0, 0, 0], [1, 0, 0], [1, 1, 0]],
+                                   [[0, 0, 0], [1, 1, 0], [0, 1, 0]]])
+    np.testing.assert_allclose(mesh.vertex_normals, [[0, 0, 1]] * 6)
+    image = pp.render(pp.Scene(pp.Camera(eye=(0.5, 0.5, 2), target=(0.5, 0.5, 0), fov=40,
+                                         width=32, height=32), [mesh],
+                               [pp.DirectionalLight(direction=(0, 0, -1))]), "zbuffer")
+    below, above = image.rgb[22, 12], image.rgb[9, 20]  # under and over the diagonal
+    assert below[0] > 0.5 > below[2] and above[2] > 0.5 > above[0]
 
 
 def test_stl_loads_with_the_default_camera_and_lights(tmp_path):

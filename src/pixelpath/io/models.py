@@ -23,7 +23,9 @@ What a model file gives (:func:`read_model`)
   trimesh already flips glTF's v when it loads a file (OBJ's is v up already), so its uv are
   used as they are (the tests pin this with a 2 x 2 texture in a hand-written glTF).
 - **Colours**: glTF ``COLOR_0`` is linear (the glTF specification) and is used as it is; PLY
-  and OBJ vertex colours are display values and are decoded from sRGB. Textures are 8-bit sRGB
+  and OBJ vertex colours are display values and are decoded from sRGB. A PLY file's face
+  colours become vertex colours: every vertex's when all faces share one colour, else each
+  face gets corners of its own (keeping the shared corners' normals). Textures are 8-bit sRGB
   pictures (decoded by :class:`~pixelpath.scene.Texture`). The scene's ``encoding`` is
   ``"srgb"``, so a saved picture looks like the model in other viewers.
 - **Camera**: the file's first glTF camera (in scene order), at its node's world transform;
@@ -95,8 +97,10 @@ MTL ``map_Kd``                ``texture`` (a missing file: a warning and ``Kd`` 
 MTL ``d``                     ``transparency = 1 - d`` (``Tr`` is ignored: exporters disagree
                               on its meaning)
 no material (PLY, STL, OBJ    light grey ``(0.8, 0.8, 0.8)``, ``kd = 1``, ``ks = 0.2``,
-without ``.mtl``)             ``shininess = 32``, texture coordinates or not; a PLY file's
-                              ``comment TextureFile`` picture: ``texture``, ``color`` white
+without ``.mtl``, glTF        ``shininess = 32``, texture coordinates or not; ``color`` white
+without one)                  under vertex or face colours (they are the surface's colour)
+                              and for a PLY file's ``comment TextureFile`` picture
+                              (``texture``)
 MTL ``map_Kd -s su sv``,      the part's ``uv`` scaled, then moved: u' = su u + ou,
 ``-o ou ov``                  v' = sv v + ov (as Blender's and three.js's importers read them)
 MTL ``map_Kd -clamp on``      ``texture_wrap = "clamp"``
@@ -357,6 +361,7 @@ class _Part(NamedTuple):
     normals: Any  # as stored in the file, or None
     visual: Any  # trimesh's visual (its material and uv), or None
     colors: Any  # per-vertex colours as trimesh keeps them, or None
+    face_colors: Any = None  # per-face colours (a PLY file's), or None
 
 
 def _trimesh_parts(path: Path, resolver: Any, gltf_file: BinaryIO | None) -> list[_Part]:
@@ -385,12 +390,13 @@ def _scene_parts(path: Path, resolver: Any) -> list[_Part]:
             continue  # points and paths have nothing to shade
         visual = geometry.visual
         colors = getattr(visual, "vertex_attributes", {}).get("color")
-        if colors is None and getattr(visual, "kind", None) == "vertex":
+        kind = getattr(visual, "kind", None)
+        if colors is None and kind == "vertex":
             colors = visual.vertex_colors
+        face_colors = visual.face_colors if colors is None and kind == "face" else None
         normals = geometry.vertex_normals if "vertex_normals" in geometry._cache else None
-        parts.append(
-            _Part(node, name, matrix, geometry.vertices, geometry.faces, normals, visual, colors)
-        )
+        parts.append(_Part(node, name, matrix, geometry.vertices, geometry.faces, normals,
+                           visual, colors, face_colors))
     return parts
 
 
@@ -1072,13 +1078,38 @@ def _mesh(path: Path, part: _Part, name: str, gltf: dict | None, shared: dict) -
     vertices, normals, faces = _placed(part.matrix, vertices, normals, faces, shared)
     if normals is not None:
         normals = _without_zero_normals(normals, vertices, faces)
-    material = _material(path, part.visual, gltf, shared)
     uv = _uv(part.visual, len(vertices))
     if uv is not None:
         uv = (_texture_transformed(uv, part.visual, gltf) if gltf is not None
               else _mtl_moved(uv, _mtl_map_of(getattr(part.visual, "material", None), shared)))
     colors = _vertex_colors(part.colors, len(vertices), linear=gltf is not None)
+    if colors is None and part.face_colors is not None:
+        face_colors = _vertex_colors(part.face_colors, len(faces), linear=False)
+        if face_colors is not None:
+            vertices, faces, normals, uv, colors = _face_colored(vertices, faces, normals, uv,
+                                                                 face_colors)
+    material = _material(path, part.visual, gltf, shared, colored=colors is not None)
     return Mesh(vertices, faces, material, normals, colors, uv, name)
+
+
+def _face_colored(
+    vertices: np.ndarray, faces: np.ndarray, normals: np.ndarray | None,
+    uv: np.ndarray | None, face_colors: np.ndarray,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray | None, np.ndarray | None, np.ndarray]:
+    """Return a part whose faces are coloured one colour each, with vertex colours.
+
+    One colour for every face (the commonest: a PLY file written with a single colour) gives
+    every vertex that colour. Otherwise each face gets corners of its own carrying its colour,
+    with the normals the shared corners had (given, or the area-weighted normals of the faces
+    around them), so that shading stays smooth across faces of different colours.
+    """
+    if (face_colors == face_colors[0]).all():
+        return vertices, faces, normals, uv, np.repeat(face_colors[:1], len(vertices), axis=0)
+    corners = faces.ravel()
+    if normals is None:
+        normals = Mesh(vertices, faces).vertex_normals
+    return (vertices[corners], np.arange(len(corners)).reshape(-1, 3), normals[corners],
+            None if uv is None else uv[corners], np.repeat(face_colors, 3, axis=0))
 
 
 def _placed(
@@ -1216,23 +1247,33 @@ def _vertex_colors(colors: Any, count: int, *, linear: bool) -> np.ndarray | Non
     return values
 
 
-def _plain_material() -> Material:
-    return Material(color=(0.8, 0.8, 0.8), ka=1.0, kd=1.0, ks=0.2, shininess=32.0)
+def _plain_material(colored: bool = False) -> Material:
+    """Return the material of a part whose file gives none.
+
+    Light grey, or white under vertex colours (which are then the surface's colour, as other
+    viewers show them).
+    """
+    color = (1.0, 1.0, 1.0) if colored else (0.8, 0.8, 0.8)
+    return Material(color=color, ka=1.0, kd=1.0, ks=0.2, shininess=32.0)
 
 
-def _material(path: Path, visual: Any, gltf: dict | None, shared: dict) -> Material:
+def _material(
+    path: Path, visual: Any, gltf: dict | None, shared: dict, *, colored: bool = False
+) -> Material:
+    """Map the part's material (see the table); ``colored``: the part has vertex colours."""
     source = getattr(visual, "material", None)
     if source is None:
-        return _plain_material()
+        return _plain_material(colored)
     key = ("material", id(source))
     if key not in shared:
         if type(source).__name__ == "PBRMaterial":
             shared[key] = _pbr_material(path, source, gltf, shared)
         elif _stands_in(source):
-            shared[key] = _plain_material()
+            shared[key] = None
         else:
             shared[key] = _simple_material(path, source, shared)
-    return shared[key]
+    material = shared[key]
+    return _plain_material(colored) if material is None else material
 
 
 def _stands_in(source: Any) -> bool:
