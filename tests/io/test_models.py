@@ -808,6 +808,29 @@ def test_zero_normal_of_a_corner_of_no_area_is_plus_z(tmp_path):
     np.testing.assert_allclose(mesh.normals[3], [0, 0, 1])
 
 
+@pytest.mark.parametrize("indexed", [True, False])
+def test_triangle_fans_are_drawn(tmp_path, indexed):
+    """The quad as a fan (mode 6) of corners 0, 1, 2, 3: triangles (0, 1, 2) and (0, 2, 3);
+    without indices the corners are the vertices in order (trimesh alone drops fans)."""
+    gltf = quad_gltf(indices=np.array([0, 1, 2, 3], "<u2"))
+    primitive = gltf["meshes"][0]["primitives"][0]
+    primitive["mode"] = 6
+    gltf["accessors"][2]["count"] = 4
+    if not indexed:
+        del primitive["indices"]
+    (mesh,) = read_model(write(tmp_path, gltf)).objects
+    np.testing.assert_array_equal(mesh.triangles, [[0, 1, 2], [0, 2, 3]])
+    np.testing.assert_array_equal(mesh.uv, [[0, 0], [1, 0], [1, 1], [0, 1]])
+
+
+def test_a_fan_of_two_corners_draws_nothing(tmp_path):
+    gltf = quad_gltf(indices=np.array([0, 1], "<u2"))
+    gltf["meshes"][0]["primitives"][0]["mode"] = 6
+    gltf["accessors"][2]["count"] = 2
+    with pytest.raises(ValueError, match=r"model\.gltf: the file has no triangle meshes"):
+        read_model(write(tmp_path, gltf))
+
+
 def test_indices_out_of_range_are_refused(tmp_path):
     indices = np.array([0, 1, 2, 0, 2, 99], dtype="<u2")
     with pytest.raises(ValueError, match=r"model\.gltf"):
@@ -950,10 +973,13 @@ JSON_VALUES = st.recursive(
 def _decoded_quad() -> dict:
     """The textured quad with accessors pixelpath decodes before trimesh reads them: positions
     from a sparse accessor (vertex 0 from its own data), 16-bit normalized colours, normals
-    as normalized bytes (KHR_mesh_quantization's), the texture reading uv set 1."""
+    as normalized bytes (KHR_mesh_quantization's), the texture reading uv set 1, and the same
+    corners drawn a second time as a triangle fan."""
     gltf = quad_gltf(image=_png(PICTURE))
     gltf["accessors"][0]["sparse"] = _sparse(0)
-    gltf["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_1"] = 1
+    primitives = gltf["meshes"][0]["primitives"]
+    primitives[0]["attributes"]["TEXCOORD_1"] = 1
+    primitives.append({**primitives[0], "mode": 6})
     gltf["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"]["texCoord"] = 1
     gltf = _with_attribute(gltf, "NORMAL", np.tile(np.array([0, 0, 127], "<i1"), (4, 1)), 5120)
     return _with_attribute(gltf, "COLOR_0", np.full((4, 4), 40000, dtype="<u2"), 5123)

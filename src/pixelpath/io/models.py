@@ -14,7 +14,8 @@ What a model file gives (:func:`read_model`)
   solid's name), with the node's world transform applied; a node's second primitive is
   "<name>_1", its third "<name>_2", and so on. The graph is walked node by node (in the
   order of trimesh's ``scene.graph.nodes_geometry``), never through ``Scene.dump()``, which
-  drops glTF ``COLOR_0`` stored beside a material.
+  drops glTF ``COLOR_0`` stored beside a material. glTF triangles, strips and fans are drawn
+  (trimesh leaves fans out: they are turned into triangles first); points and lines are not.
 - **Normals**: those the file stores, turned by the node's inverse transpose; where it has
   none, the area-weighted normals of the faces (:class:`~pixelpath.scene.Mesh`'s). A zero
   vector in the file (some exporters write them at degenerate corners) becomes the faces'
@@ -153,6 +154,7 @@ import os
 import re
 import struct
 import warnings
+from collections.abc import Iterator
 from pathlib import Path
 from typing import Any, BinaryIO, NamedTuple
 from urllib.parse import unquote
@@ -779,8 +781,10 @@ def _decoded(
     targets, which pixelpath does not draw, are left alone.
     """
     meshes = _base_color_sets(path, gltf)
-    misread = _misread_accessors(path, gltf if meshes is None else {**gltf, "meshes": meshes})
-    if not misread and meshes is None:
+    drawn = gltf if meshes is None else {**gltf, "meshes": meshes}
+    misread = _misread_accessors(path, drawn)
+    fans = [(m, k) for m, k, primitive in _primitives(drawn) if primitive.get("mode") == _FAN]
+    if not misread and not fans and meshes is None:
         return None
     read = functools.cache(lambda index: _buffer_bytes(path, gltf, index, file, chunk,
                                                        resolver))
@@ -788,12 +792,29 @@ def _decoded(
     views = list(_list(path, gltf, "bufferViews"))
     buffers = [dict(buffer) for buffer in _list(path, gltf, "buffers")]
     data = bytearray()
-    for index, as_float in misread.items():
-        values, accessor = _decoded_accessor(path, gltf, index, read, as_float)
+
+    def stored(values: np.ndarray) -> int:
+        """Append ``values`` to the new buffer; return the bufferView that reads them."""
+        nonlocal data
         block = values.tobytes()
         views.append({"buffer": len(buffers), "byteOffset": len(data), "byteLength": len(block)})
         data += block + bytes(-len(block) % 4)  # the next block starts 4-byte aligned
-        accessors[index] = {**accessor, "bufferView": len(views) - 1}
+        return len(views) - 1
+
+    for index, as_float in misread.items():
+        values, accessor = _decoded_accessor(path, gltf, index, read, as_float)
+        accessors[index] = {**accessor, "bufferView": stored(values)}
+    if fans:
+        meshes = meshes or _copied_meshes(path, gltf)
+        for m, k in fans:
+            primitive = meshes[m]["primitives"][k]
+            triangles = _fan_triangles(path, drawn, primitive, read)
+            if triangles is None:
+                continue  # fewer than three corners: nothing to draw, as trimesh leaves it
+            accessors.append({"bufferView": stored(triangles), "componentType": 5125,
+                              "count": triangles.size, "type": "SCALAR"})
+            meshes[m]["primitives"][k] = {**primitive, "indices": len(accessors) - 1,
+                                          "mode": _TRIANGLES}
     for index, buffer in enumerate(buffers):
         if "uri" not in buffer:  # the GLB's binary chunk
             buffer["uri"] = _data_uri(read(index))
@@ -802,6 +823,55 @@ def _decoded(
     if meshes is not None:
         edited["meshes"] = meshes
     return io.BytesIO(json.dumps(edited).encode())
+
+
+_TRIANGLES, _FAN = 4, 6  # glTF primitive modes
+
+
+def _primitives(gltf: dict) -> Iterator[tuple[int, int, dict]]:
+    """Yield (mesh, primitive number, primitive) for every primitive that is an object."""
+    for m, mesh in enumerate(gltf.get("meshes", [])):  # a list of objects (checked)
+        primitives = mesh.get("primitives")
+        for k, primitive in enumerate(primitives if isinstance(primitives, list) else []):
+            if isinstance(primitive, dict):
+                yield m, k, primitive
+
+
+def _copied_meshes(path: Path, gltf: dict) -> list[dict]:
+    """Return the glTF meshes copied down to their primitives, to edit those."""
+    meshes = [dict(mesh) for mesh in _list(path, gltf, "meshes")]
+    for mesh in meshes:
+        if isinstance(mesh.get("primitives"), list):
+            mesh["primitives"] = [dict(p) if isinstance(p, dict) else p
+                                  for p in mesh["primitives"]]
+    return meshes
+
+
+def _fan_triangles(path: Path, gltf: dict, primitive: dict, read: Any) -> np.ndarray | None:
+    """Return the (n - 2, 3) uint32 triangles of a triangle fan: (c0, c_i, c_i+1).
+
+    trimesh leaves fans (mode 6) out; the corners are the primitive's indices, or its vertices
+    in order when it has none. None for a fan of fewer than three corners.
+    """
+    index = primitive.get("indices")
+    accessors = gltf["accessors"]
+    if index is None:
+        attributes = primitive.get("attributes")
+        position = attributes.get("POSITION") if isinstance(attributes, dict) else None
+        if not (_is_int(position) and 0 <= position < len(accessors)):
+            raise ValueError(f"{path}: a triangle fan has no valid POSITION accessor")
+        corners = np.arange(accessors[position].get("count", 0), dtype="<u4")
+    elif _is_int(index) and 0 <= index < len(accessors):
+        corners = _dense_accessor(path, gltf, index, read)[:, 0].astype("<u4")
+    else:
+        raise ValueError(f"{path}: a triangle fan names a missing indices accessor")
+    if len(corners) < 3:
+        return None
+    triangles = np.empty((len(corners) - 2, 3), "<u4")
+    triangles[:, 0] = corners[0]
+    triangles[:, 1] = corners[1:-1]
+    triangles[:, 2] = corners[2:]
+    return triangles
 
 
 def _base_color_sets(path: Path, gltf: dict) -> list[dict] | None:
@@ -816,28 +886,21 @@ def _base_color_sets(path: Path, gltf: dict) -> list[dict] | None:
     sets = [_texture_set(material) for material in materials]
     if not any(sets):
         return None
-    meshes = [dict(mesh) for mesh in _list(path, gltf, "meshes")]
-    for number, mesh in enumerate(meshes):
-        primitives = mesh.get("primitives")
-        if not isinstance(primitives, list):
+    meshes = _copied_meshes(path, gltf)
+    for number, _, primitive in _primitives({"meshes": meshes}):
+        material, attributes = primitive.get("material"), primitive.get("attributes")
+        if not (_is_int(material) and 0 <= material < len(sets) and sets[material]
+                and isinstance(attributes, dict)):
             continue
-        mesh["primitives"] = primitives = [dict(p) if isinstance(p, dict) else p
-                                           for p in primitives]
-        for primitive in primitives:
-            material = primitive.get("material") if isinstance(primitive, dict) else None
-            attributes = primitive.get("attributes") if isinstance(primitive, dict) else None
-            if not (_is_int(material) and 0 <= material < len(sets) and sets[material]
-                    and isinstance(attributes, dict)):
-                continue
-            name = f"TEXCOORD_{sets[material]}"
-            if name in attributes:
-                primitive["attributes"] = {**attributes, "TEXCOORD_0": attributes[name]}
-            else:
-                warnings.warn(
-                    f"{path}: mesh {number}: material {materials[material].get('name')!r} "
-                    f"reads texture coordinates {name}, which the mesh lacks; set 0 is used",
-                    stacklevel=4,
-                )
+        name = f"TEXCOORD_{sets[material]}"
+        if name in attributes:
+            primitive["attributes"] = {**attributes, "TEXCOORD_0": attributes[name]}
+        else:
+            warnings.warn(
+                f"{path}: mesh {number}: material {materials[material].get('name')!r} "
+                f"reads texture coordinates {name}, which the mesh lacks; set 0 is used",
+                stacklevel=4,
+            )
     return meshes
 
 
@@ -869,20 +932,16 @@ def _misread_accessors(path: Path, gltf: dict) -> dict[int, bool]:
                for accessor in accessors):
         return {}  # only float attributes (and integer indices): nothing to decode
     misread: dict[int, bool] = {}
-    for mesh in _list(path, gltf, "meshes"):
-        primitives = mesh.get("primitives")
-        for primitive in primitives if isinstance(primitives, list) else []:
-            if not isinstance(primitive, dict):
+    for _, _, primitive in _primitives(gltf):
+        attributes = primitive.get("attributes")
+        used = [*attributes.items()] if isinstance(attributes, dict) else []
+        for name, index in [*used, ("indices", primitive.get("indices"))]:
+            if not (_is_int(index) and 0 <= index < len(accessors)):
                 continue
-            attributes = primitive.get("attributes")
-            used = [*attributes.items()] if isinstance(attributes, dict) else []
-            for name, index in [*used, ("indices", primitive.get("indices"))]:
-                if not (_is_int(index) and 0 <= index < len(accessors)):
-                    continue
-                accessor = accessors[index]
-                as_float = _misread_as_integers(name, accessor)
-                if "sparse" in accessor or as_float:
-                    misread[index] = misread.get(index, False) or as_float
+            accessor = accessors[index]
+            as_float = _misread_as_integers(name, accessor)
+            if "sparse" in accessor or as_float:
+                misread[index] = misread.get(index, False) or as_float
     return misread
 
 
