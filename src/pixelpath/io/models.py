@@ -1135,8 +1135,6 @@ def _mesh(path: Path, part: _Part, name: str, gltf: dict | None, shared: dict) -
         normals = np.asarray(part.normals, dtype=np.float64)
         normals = normals if v.all_finite(normals) else None
     vertices, normals, faces = _placed(part.matrix, vertices, normals, faces, shared)
-    if normals is not None:
-        normals = _without_zero_normals(normals, vertices, faces)
     uv = _uv(part.visual, len(vertices))
     if uv is not None:
         uv = (_texture_transformed(uv, part.visual, gltf) if gltf is not None
@@ -1148,7 +1146,15 @@ def _mesh(path: Path, part: _Part, name: str, gltf: dict | None, shared: dict) -
             vertices, faces, normals, uv, colors = _face_colored(vertices, faces, normals, uv,
                                                                  face_colors)
     material = _material(path, part.visual, gltf, shared, colored=colors is not None)
-    return Mesh(vertices, faces, material, normals, colors, uv, name)
+    try:
+        return Mesh(vertices, faces, material, normals, colors, uv, name)
+    except ValueError:
+        # A Mesh refuses zero normals, which some exporters write; looked for only now, as
+        # the test costs 6 µs a part where the mesh's own check of its normals is free.
+        filled = None if normals is None else _without_zero_normals(normals, vertices, faces)
+        if filled is normals:
+            raise
+        return Mesh(vertices, faces, material, filled, colors, uv, name)
 
 
 def _face_colored(
@@ -1201,8 +1207,7 @@ def _without_zero_normals(
     becomes the area-weighted normal of the faces around its vertex, as where a file has no
     normals, or +Z where those faces have no area either (such a vertex is never seen).
     """
-    # |x| + |y| + |z| is 0 for the zero vector alone (the normals are finite), and a product
-    # with a vector of ones sums rows in 6 µs a part, where NumPy's any(axis=1) takes 36
+    # |x| + |y| + |z| is 0 for the zero vector alone (the normals are finite)
     zero = np.abs(normals) @ _ONES3 == 0.0
     if not zero.any():
         return normals
