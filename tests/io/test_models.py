@@ -354,6 +354,16 @@ def test_unlit_gltf_material_shows_its_colour_unshaded(tmp_path, named, method):
     assert np.abs(shaded - color).max() > 0.05
 
 
+def test_emission_is_named_as_not_drawn(tmp_path):
+    gltf = quad_gltf()
+    gltf["materials"][0]["emissiveFactor"] = [1.0, 0.5, 0.0]
+    with pytest.warns(UserWarning, match=r"model\.gltf: material 'm' emits light "
+                                         r"\(emissiveFactor \[1\.0, 0\.5, 0\.0\]\).*not drawn"):
+        read_model(write(tmp_path, gltf))
+    gltf["materials"][0]["emissiveFactor"] = [0.0, 0.0, 0.0]  # the default: no warning
+    read_model(write(tmp_path, gltf))
+
+
 def test_webp_textures_are_read(tmp_path):
     """EXT_texture_webp, required (no PNG fallback): the WebP picture is the texture."""
     out = io.BytesIO()

@@ -77,6 +77,8 @@ glTF ``texCoord`` of the      the part's ``uv`` are that set's (``TEXCOORD_1``, 
 ``baseColorTexture``          transform's own ``texCoord`` overrides it); a mesh without the
                               set gives a warning, and set 0 is used
 glTF ``doubleSided``          ``double_sided``
+glTF ``emissiveFactor``,      not drawn, with a warning naming the material (the notes'
+``emissiveTexture``           Phong model has no emission term)
 ``KHR_materials_unlit``       ``ka = 1 / AMBIENT`` (5), ``kd = ks = 0``: the surface colour
 (glTF)                        under the model's own ambient light (0.2) and no other light,
                               as the extension asks (a scene file with another ``ambient``
@@ -1377,6 +1379,7 @@ def _pbr_material(path: Path, source: Any, gltf: dict | None, shared: dict) -> M
     ka, ks = kd, (1.0 - roughness) ** 2 * (0.25 + 0.75 * metallic)
     if _is_unlit(gltf, source):  # the ambient term alone shows the colour as it is
         ka, kd, ks = 1.0 / AMBIENT, 0.0, 0.0
+    _warn_of_emission(path, source)
     return Material(
         color=rgba[:3],
         ka=ka,
@@ -1392,6 +1395,23 @@ def _pbr_material(path: Path, source: Any, gltf: dict | None, shared: dict) -> M
         alpha=_fraction(rgba[3]) if mode == "MASK" else 1.0,
         alpha_cutoff=alpha_cutoff,
     )
+
+
+def _warn_of_emission(path: Path, source: Any) -> None:
+    """Warn that a material's emitted light is not drawn: the notes' model has no such term."""
+    factor = getattr(source, "emissiveFactor", None)
+    try:
+        glowing = factor is not None and bool(np.any(np.asarray(factor, dtype=float) > 0.0))
+    except (TypeError, ValueError):
+        glowing = False  # not a colour: nothing to draw either way
+    if glowing or getattr(source, "emissiveTexture", None) is not None:
+        warnings.warn(
+            f"{path}: material {source.name!r} emits light (emissiveFactor "
+            f"{None if factor is None else np.asarray(factor).tolist()}"
+            f"{', an emissiveTexture' if source.emissiveTexture is not None else ''}), which "
+            "is not drawn: pixelpath's lighting (the notes' Phong model) has no emission term",
+            stacklevel=2,
+        )
 
 
 def _is_unlit(gltf: dict | None, source: Any) -> bool:
