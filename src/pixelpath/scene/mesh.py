@@ -465,8 +465,8 @@ def _triangle_newell(vertices: np.ndarray, triangles: np.ndarray) -> np.ndarray:
 
     The edges' terms (a, b), (b, c), (c, a) are added as ``np.add.reduceat`` adds a face's
     three: the first plus the sum of the other two, so the bits are those of the general
-    path, at a third of its time (no corner gathered twice, no sums over segments): 0.17 s
-    against 0.55 s for 1.3 million triangles.
+    path, at under half its time (no corner gathered twice, no sums over segments): 0.10 s
+    against 0.23-0.29 s for 1.3 million triangles, at rest.
     """
     coordinates = np.ascontiguousarray(vertices.T)
     corners = [np.ascontiguousarray(triangles[:, k]) for k in range(3)]
