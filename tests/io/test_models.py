@@ -364,6 +364,16 @@ def test_emission_is_named_as_not_drawn(tmp_path):
     read_model(write(tmp_path, gltf))
 
 
+def test_mtl_emission_is_named_as_not_drawn(tmp_path):
+    (tmp_path / "glow.mtl").write_text("newmtl glow\nKd 0.5 0.5 0.5\nKe 1 0.25 0\n"
+                                       "map_Ke glow.png\n")
+    (tmp_path / "glow.obj").write_text("mtllib glow.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\n"
+                                       "usemtl glow\nf 1 2 3\n")
+    with pytest.warns(UserWarning, match=r"glow\.obj: material 'glow' emits light \(Ke "
+                                         r"\[1\.0, 0\.25, 0\.0\], a map_Ke texture\)"):
+        read_model(tmp_path / "glow.obj")
+
+
 def test_webp_textures_are_read(tmp_path):
     """EXT_texture_webp, required (no PNG fallback): the WebP picture is the texture."""
     out = io.BytesIO()

@@ -78,7 +78,8 @@ glTF ``texCoord`` of the      the part's ``uv`` are that set's (``TEXCOORD_1``, 
                               set gives a warning, and set 0 is used
 glTF ``doubleSided``          ``double_sided``
 glTF ``emissiveFactor``,      not drawn, with a warning naming the material (the notes'
-``emissiveTexture``           Phong model has no emission term)
+``emissiveTexture``; MTL      Phong model has no emission term)
+``Ke``, ``map_Ke``
 ``KHR_materials_unlit``       ``ka = 1 / AMBIENT`` (5), ``kd = ks = 0``: the surface colour
 (glTF)                        under the model's own ambient light (0.2) and no other light,
                               as the extension asks (a scene file with another ``ambient``
@@ -1379,7 +1380,8 @@ def _pbr_material(path: Path, source: Any, gltf: dict | None, shared: dict) -> M
     ka, ks = kd, (1.0 - roughness) ** 2 * (0.25 + 0.75 * metallic)
     if _is_unlit(gltf, source):  # the ambient term alone shows the colour as it is
         ka, kd, ks = 1.0 / AMBIENT, 0.0, 0.0
-    _warn_of_emission(path, source)
+    _warn_of_emission(path, source.name, ("emissiveFactor", source.emissiveFactor),
+                      None if source.emissiveTexture is None else "an emissiveTexture")
     return Material(
         color=rgba[:3],
         ka=ka,
@@ -1397,20 +1399,24 @@ def _pbr_material(path: Path, source: Any, gltf: dict | None, shared: dict) -> M
     )
 
 
-def _warn_of_emission(path: Path, source: Any) -> None:
-    """Warn that a material's emitted light is not drawn: the notes' model has no such term."""
-    factor = getattr(source, "emissiveFactor", None)
+def _warn_of_emission(path: Path, name: Any, color: tuple[str, Any], picture: str | None) -> None:
+    """Warn that a material's emitted light is not drawn: the notes' model has no such term.
+
+    ``color`` is the file's key for the emitted colour and its value (None when absent),
+    ``picture`` the key of an emission texture the material has (None when it has none).
+    """
+    key, value = color
     try:
-        glowing = factor is not None and bool(np.any(np.asarray(factor, dtype=float) > 0.0))
+        glowing = value is not None and bool(np.any(np.asarray(value, dtype=float) > 0.0))
     except (TypeError, ValueError):
         glowing = False  # not a colour: nothing to draw either way
-    if glowing or getattr(source, "emissiveTexture", None) is not None:
+    if glowing or picture is not None:
+        sources = [f"{key} {np.asarray(value, dtype=float).tolist()}"] if glowing else []
+        sources += [picture] if picture is not None else []
         warnings.warn(
-            f"{path}: material {source.name!r} emits light (emissiveFactor "
-            f"{None if factor is None else np.asarray(factor).tolist()}"
-            f"{', an emissiveTexture' if source.emissiveTexture is not None else ''}), which "
-            "is not drawn: pixelpath's lighting (the notes' Phong model) has no emission term",
-            stacklevel=2,
+            f"{path}: material {name!r} emits light ({', '.join(sources)}), which is not "
+            "drawn: pixelpath's lighting (the notes' Phong model) has no emission term",
+            stacklevel=3,
         )
 
 
@@ -1498,6 +1504,8 @@ def _simple_material(path: Path, source: Any, shared: dict) -> Material:
     ns = _mtl_number(raw.get("ns"), 0.0)
     opacity = _fraction(_mtl_number(raw.get("d"), 1.0))
     ka = float(np.mean(ka_color))
+    _warn_of_emission(path, source.name, ("Ke", raw.get("ke")),
+                      None if raw.get("map_ke") is None else "a map_Ke texture")
     options = _mtl_map_of(source, shared)
     if options is not None and options.ignored:
         warnings.warn(f"{path}: material {source.name!r}: the .mtl texture options "
