@@ -1402,8 +1402,8 @@ def _pbr_material(path: Path, source: Any, gltf: dict | None, shared: dict) -> M
 def _warn_of_emission(path: Path, name: Any, color: tuple[str, Any], picture: str | None) -> None:
     """Warn that a material's emitted light is not drawn: the notes' model has no such term.
 
-    ``color`` is the file's key for the emitted colour and its value (None when absent),
-    ``picture`` the key of an emission texture the material has (None when it has none).
+    ``color`` is the file's key for the emitted colour and its value (None when absent);
+    ``picture`` names the material's emission texture (None when it has none).
     """
     key, value = color
     try:
