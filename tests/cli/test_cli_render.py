@@ -2,6 +2,10 @@
 
 from __future__ import annotations
 
+import subprocess
+import sys
+import warnings
+
 import numpy as np
 import pytest
 from box_scene import SCENE
@@ -106,3 +110,23 @@ def test_render_explain_prints_the_pipeline_counts(scene_file, tmp_path, capsys)
     for stage in ("triangles", "back faces culled", "triangles scan-converted", "pixels covered"):
         assert stage in text
     assert out.is_file()
+
+
+def test_warnings_read_like_the_errors(tmp_path):
+    """A warning while a command runs names the command, not pixelpath's source line (run as
+    a user runs it: pytest records warnings in its own process instead of showing them)."""
+    (tmp_path / "part.mtl").write_text("newmtl wood\nKd 0.5 0.5 0.5\nmap_Kd missing.png\n")
+    (tmp_path / "part.obj").write_text("mtllib part.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\n"
+                                       "vt 0 0\nvt 1 0\nvt 1 1\nusemtl wood\nf 1/1 2/2 3/3\n")
+    argv = [sys.executable, "-m", "pixelpath", "render", str(tmp_path / "part.obj"), "-o",
+            str(tmp_path / "out.png"), "--size", "16x12", "-q"]
+    result = subprocess.run(argv, capture_output=True, text=True, check=False)
+    assert result.returncode == 0, result.stderr
+    assert result.stderr.startswith("pixelpath render: warning: ")
+    assert "'missing.png' not found" in result.stderr and ".py:" not in result.stderr
+
+
+def test_the_warning_format_is_restored(scene_file, tmp_path):
+    formatting = warnings.formatwarning
+    assert main(["render", str(scene_file), "-o", str(tmp_path / "out.png"), "-q"]) == 0
+    assert warnings.formatwarning is formatting

@@ -8,8 +8,10 @@ argument errors answer at once.
 from __future__ import annotations
 
 import argparse
+import functools
 import importlib
 import sys
+import warnings
 from collections.abc import Sequence
 
 from rich.markup import escape
@@ -62,6 +64,10 @@ def main(argv: Sequence[str] | None = None) -> int:
     if args.command is None:
         parser.print_help()
         return 2
+    shown = warnings.formatwarning
+    # Warnings read like the errors ("pixelpath render: warning: ..."), without the source
+    # line of pixelpath's that raised them, which a user of the command line has no use for.
+    warnings.formatwarning = functools.partial(_warning_line, args.command)
     try:
         return int(args.run(args) or 0)
     except (CommandError, ValueError, TypeError, FileNotFoundError) as exc:
@@ -70,6 +76,13 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 2
     except KeyboardInterrupt:
         return 130
+    finally:
+        warnings.formatwarning = shown
+
+
+def _warning_line(command: str, message: Warning | str, *_: object, **__: object) -> str:
+    """Format a warning shown while ``command`` runs (``warnings.formatwarning``'s signature)."""
+    return f"pixelpath {command}: warning: {message}\n"
 
 
 if __name__ == "__main__":  # pragma: no cover
