@@ -16,6 +16,10 @@ What a model file gives (:func:`read_model`)
   order of trimesh's ``scene.graph.nodes_geometry``), never through ``Scene.dump()``, which
   drops glTF ``COLOR_0`` stored beside a material. glTF triangles, strips and fans are drawn
   (trimesh leaves fans out: they are turned into triangles first); points and lines are not.
+- **Skins**: a skinned mesh (glTF ``skins``, which trimesh ignores) is posed by its joints
+  at the file's rest pose (linear blend skinning: the weights times ``world(joint) @
+  inverseBindMatrix``, the skinned node's own transform ignored, as glTF asks), positions
+  and normals; animations are not played.
 - **Normals**: those the file stores, turned by the node's inverse transpose; where it has
   none, the area-weighted normals of the faces (:class:`~pixelpath.scene.Mesh`'s). A zero
   vector in the file (some exporters write them at degenerate corners) becomes the faces'
@@ -787,7 +791,9 @@ def _decoded(
     drawn = gltf if meshes is None else {**gltf, "meshes": meshes}
     misread = _misread_accessors(path, drawn)
     fans = [(m, k) for m, k, primitive in _primitives(drawn) if primitive.get("mode") == _FAN]
-    if not misread and not fans and meshes is None:
+    skinned = [n for n, node in enumerate(_list(path, gltf, "nodes"))
+               if "skin" in node and "mesh" in node]
+    if not misread and not fans and not skinned and meshes is None:
         return None
     read = functools.cache(lambda index: _buffer_bytes(path, gltf, index, file, chunk,
                                                        resolver))
@@ -818,6 +824,10 @@ def _decoded(
                               "count": triangles.size, "type": "SCALAR"})
             meshes[m]["primitives"][k] = {**primitive, "indices": len(accessors) - 1,
                                           "mode": _TRIANGLES}
+    nodes = None
+    if skinned:
+        meshes = meshes or _copied_meshes(path, gltf)
+        nodes = _posed_skins(path, gltf, skinned, meshes, accessors, stored, read)
     for index, buffer in enumerate(buffers):
         if "uri" not in buffer:  # the GLB's binary chunk
             buffer["uri"] = _data_uri(read(index))
@@ -825,7 +835,117 @@ def _decoded(
     edited = {**gltf, "accessors": accessors, "bufferViews": views, "buffers": buffers}
     if meshes is not None:
         edited["meshes"] = meshes
+    if nodes is not None:
+        edited["nodes"] = nodes
     return io.BytesIO(json.dumps(edited).encode())
+
+
+def _posed_skins(
+    path: Path, gltf: dict, skinned: list[int], meshes: list[dict], accessors: list[dict],
+    stored: Any, read: Any,
+) -> list[dict]:
+    """Pose every skinned node's mesh by its skin at the file's rest pose; return the nodes.
+
+    trimesh ignores skins, and a skinned mesh's vertices are in the skin's bind space, not in
+    its node's frame: a rigged character could lie on its back. glTF places them by their
+    joints alone (the skinned node's own transform is ignored): each vertex moves by the sum
+    of its weights times ``world(joint) @ inverseBindMatrix`` of its joints (linear blend
+    skinning), its normal by that matrix's linear part. The posed positions and normals are
+    written back in the node's frame (``inverse(world(node))``), so that trimesh's placing of
+    the node leaves them where the joints put them. Each skinned node gets a mesh of its own
+    (appended to ``meshes``, read by the edited ``nodes`` returned). Animations are not
+    played: the pose is that of the nodes as the file leaves them.
+    """
+    nodes = [dict(node) for node in _list(path, gltf, "nodes")]
+    skins = _list(path, gltf, "skins")
+    world = _world_matrices(gltf)
+    for n in skinned:
+        node = nodes[n]
+        if n not in world:
+            continue  # not in the scene: not drawn
+        skin = _item(skins, node["skin"], f"node {n}", "skin", "skins")
+        matrices = _skin_matrices(path, gltf, skin, world, read)
+        mesh = _item(meshes, node["mesh"], f"node {n}", "mesh", "meshes")
+        posed = {**mesh, "primitives": [
+            _posed_primitive(path, gltf, primitive, matrices, world[n], accessors, stored, read)
+            if isinstance(primitive, dict) else primitive
+            for primitive in mesh.get("primitives", [])
+        ]}
+        meshes.append(posed)
+        node["mesh"] = len(meshes) - 1
+        del node["skin"]
+    return nodes
+
+
+def _skin_matrices(path: Path, gltf: dict, skin: dict, world: dict, read: Any) -> np.ndarray:
+    """Return (J, 4, 4) ``world(joint) @ inverseBindMatrix`` for a skin's joints."""
+    joints = skin.get("joints")
+    if not isinstance(joints, list) or not joints:
+        raise ValueError(f"{path}: a skin has no joints")
+    missing = [joint for joint in joints if not (_is_int(joint) and joint in world)]
+    if missing:
+        raise ValueError(f"{path}: skin joint {missing[0]!r} is not a node of the scene")
+    inverse = np.broadcast_to(np.eye(4), (len(joints), 4, 4))
+    if skin.get("inverseBindMatrices") is not None:
+        index = skin["inverseBindMatrices"]
+        accessors = gltf["accessors"]
+        if not (_is_int(index) and 0 <= index < len(accessors)
+                and accessors[index].get("type") == "MAT4"
+                and accessors[index].get("count") == len(joints)):
+            raise ValueError(f"{path}: a skin's inverseBindMatrices must be a MAT4 accessor "
+                             "with a matrix for each joint")
+        values, _ = _decoded_accessor(path, gltf, index, read, True)
+        inverse = values.astype(np.float64).reshape(-1, 4, 4).transpose(0, 2, 1)  # column-major
+    return np.stack([world[joint] for joint in joints]) @ inverse
+
+
+def _posed_primitive(
+    path: Path, gltf: dict, primitive: dict, matrices: np.ndarray, node_world: np.ndarray,
+    accessors: list[dict], stored: Any, read: Any,
+) -> dict:
+    """Return ``primitive`` with its positions (and normals) posed by its skin's matrices."""
+    attributes = primitive.get("attributes")
+    if not isinstance(attributes, dict) or "POSITION" not in attributes:
+        return primitive
+    count = len(gltf["accessors"])  # the file's own, not those made here
+
+    def values(name: str) -> np.ndarray:
+        index = attributes[name]
+        if not (_is_int(index) and 0 <= index < count):
+            raise ValueError(f"{path}: attribute {name} names a missing accessor")
+        return _decoded_accessor(path, gltf, index, read, True)[0].astype(np.float64)
+
+    positions = values("POSITION")
+    blend = np.zeros((len(positions), 4, 4))
+    for set_number in itertools.count():
+        if f"JOINTS_{set_number}" not in attributes or f"WEIGHTS_{set_number}" not in attributes:
+            break
+        joints = values(f"JOINTS_{set_number}").astype(np.intp)
+        weights = values(f"WEIGHTS_{set_number}")
+        if joints.shape != weights.shape or len(joints) != len(positions):
+            raise ValueError(f"{path}: JOINTS_{set_number} and WEIGHTS_{set_number} do not "
+                             "match the vertices")
+        if joints.min(initial=0) < 0 or joints.max(initial=0) >= len(matrices):
+            raise ValueError(f"{path}: JOINTS_{set_number} names a joint its skin lacks")
+        blend += np.einsum("vi,vijk->vjk", weights, matrices[joints])
+    unweighted = ~blend.any(axis=(1, 2))
+    blend[unweighted] = node_world  # no weights: the node's own placement, as unskinned
+    back = np.linalg.inv(node_world)
+    local = back @ blend  # each vertex's matrix into the node's frame
+    posed = np.einsum("vjk,vk->vj", local[:, :3, :3], positions) + local[:, :3, 3]
+    edited = dict(attributes)
+    edited["POSITION"] = _new_accessor(accessors, stored, posed.astype("<f4"), "VEC3")
+    if "NORMAL" in attributes:
+        normals = np.einsum("vjk,vk->vj", blend[:, :3, :3], values("NORMAL")) @ node_world[:3, :3]
+        edited["NORMAL"] = _new_accessor(accessors, stored, normals.astype("<f4"), "VEC3")
+    return {**primitive, "attributes": edited}
+
+
+def _new_accessor(accessors: list[dict], stored: Any, values: np.ndarray, kind: str) -> int:
+    """Append a float32 accessor reading ``values`` from the new buffer; return its index."""
+    accessors.append({"bufferView": stored(values), "componentType": 5126,
+                      "count": len(values), "type": kind})
+    return len(accessors) - 1
 
 
 _TRIANGLES, _FAN = 4, 6  # glTF primitive modes
