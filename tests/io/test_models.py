@@ -354,24 +354,44 @@ def test_unlit_gltf_material_shows_its_colour_unshaded(tmp_path, named, method):
     assert np.abs(shaded - color).max() > 0.05
 
 
-def test_emission_is_named_as_not_drawn(tmp_path):
+@pytest.mark.parametrize(("strength", "expected"), [(None, [1.0, 0.5, 0.0]),
+                                                   (4.0, [4.0, 2.0, 0.0])])
+def test_gltf_emission_is_the_factor_times_the_strength(tmp_path, strength, expected):
     gltf = quad_gltf()
-    gltf["materials"][0]["emissiveFactor"] = [1.0, 0.5, 0.0]
-    with pytest.warns(UserWarning, match=r"model\.gltf: material 'm' emits light "
-                                         r"\(emissiveFactor \[1\.0, 0\.5, 0\.0\]\).*not drawn"):
-        read_model(write(tmp_path, gltf))
-    gltf["materials"][0]["emissiveFactor"] = [0.0, 0.0, 0.0]  # the default: no warning
-    read_model(write(tmp_path, gltf))
+    material = gltf["materials"][0]
+    material["emissiveFactor"] = [1.0, 0.5, 0.0]
+    if strength is not None:
+        material["extensions"] = {"KHR_materials_emissive_strength": {"emissiveStrength":
+                                                                      strength}}
+        gltf["extensionsUsed"] = ["KHR_materials_emissive_strength"]
+    (mesh,) = read_model(write(tmp_path, gltf)).objects
+    assert mesh.material.emission.tolist() == expected
 
 
-def test_mtl_emission_is_named_as_not_drawn(tmp_path):
+def test_an_emission_texture_is_named_as_not_drawn(tmp_path):
+    gltf = quad_gltf(image=_png(PICTURE))
+    gltf["materials"][0].update(emissiveFactor=[1.0, 1.0, 1.0], emissiveTexture={"index": 0})
+    with pytest.warns(UserWarning, match=r"model\.gltf: material 'm' emits light through an "
+                                         r"emissiveTexture .*not drawn"):
+        (mesh,) = read_model(write(tmp_path, gltf)).objects
+    assert not mesh.material.emits  # the factor alone would light the quad evenly
+
+
+@pytest.mark.parametrize("texture", [False, True])
+def test_mtl_emission_is_ke_decoded_from_srgb(tmp_path, texture):
     (tmp_path / "glow.mtl").write_text("newmtl glow\nKd 0.5 0.5 0.5\nKe 1 0.25 0\n"
-                                       "map_Ke glow.png\n")
+                                       + ("map_Ke glow.png\n" if texture else ""))
     (tmp_path / "glow.obj").write_text("mtllib glow.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\n"
                                        "usemtl glow\nf 1 2 3\n")
-    with pytest.warns(UserWarning, match=r"glow\.obj: material 'glow' emits light \(Ke "
-                                         r"\[1\.0, 0\.25, 0\.0\], a map_Ke texture\)"):
-        read_model(tmp_path / "glow.obj")
+    if texture:
+        with pytest.warns(UserWarning, match=r"glow\.obj: material 'glow' emits light through "
+                                             r"a map_Ke texture"):
+            (mesh,) = read_model(tmp_path / "glow.obj").objects
+        assert not mesh.material.emits
+    else:
+        (mesh,) = read_model(tmp_path / "glow.obj").objects
+        np.testing.assert_allclose(mesh.material.emission,
+                                   [1.0, ((0.25 + 0.055) / 1.055) ** 2.4, 0.0], rtol=1e-12)
 
 
 def test_webp_textures_are_read(tmp_path):

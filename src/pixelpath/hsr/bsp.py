@@ -511,6 +511,7 @@ def _assemble(tree: BSPTree, geometry) -> _Drawing:
         uv=_carried(geometry.uv, sources, blends),
         colors=_carried(geometry.colors, sources, blends),
         double_sided=geometry.double_sided,
+        emission=geometry.emission,
     )
     return _Drawing(drawn, blends, extra_first, extra_count, extra_items)
 

@@ -418,7 +418,7 @@ def surfaces(prepared: Prepared, scene: Scene, view: View):
         prepared.setup, prepared.triangles, prepared.positions, prepared.normals,
         prepared.colors, prepared.info, prepared.flat_colors, prepared.face_normals,
         prepared.uv, prepared.vertex_colors, prepared.geometry.surfaces,
-        prepared.geometry.coloured, prepared.geometry.materials,
+        prepared.geometry.coloured, prepared.geometry.materials, prepared.geometry.emission,
         lighting.lights, lighting.ambient, lighting.eye, kernel_array(scene.background),
         prepared.mode, bool(lighting.blinn), camera.orthographic, float(camera.near),
         float(camera.far),

@@ -81,9 +81,11 @@ glTF ``texCoord`` of the      the part's ``uv`` are that set's (``TEXCOORD_1``, 
 ``baseColorTexture``          transform's own ``texCoord`` overrides it); a mesh without the
                               set gives a warning, and set 0 is used
 glTF ``doubleSided``          ``double_sided``
-glTF ``emissiveFactor``,      not drawn, with a warning naming the material (the notes'
-``emissiveTexture``; MTL      Phong model has no emission term)
-``Ke``, ``map_Ke``
+glTF ``emissiveFactor``       ``emission`` = the factor × ``KHR_materials_emissive_strength``
+                              (1 when absent), linear
+MTL ``Ke``                    ``emission`` (decoded from sRGB)
+glTF ``emissiveTexture``,     not drawn, and then neither is the emitted colour, which only
+MTL ``map_Ke``                scales it: a warning names the material
 ``KHR_materials_unlit``       ``ka = 1 / AMBIENT`` (5), ``kd = ks = 0``: the surface colour
 (glTF)                        under the model's own ambient light (0.2) and no other light,
                               as the extension asks (a scene file with another ``ambient``
@@ -1500,8 +1502,11 @@ def _pbr_material(path: Path, source: Any, gltf: dict | None, shared: dict) -> M
     ka, ks = kd, (1.0 - roughness) ** 2 * (0.25 + 0.75 * metallic)
     if _is_unlit(gltf, source):  # the ambient term alone shows the colour as it is
         ka, kd, ks = 1.0 / AMBIENT, 0.0, 0.0
-    _warn_of_emission(path, source.name, ("emissiveFactor", source.emissiveFactor),
-                      None if source.emissiveTexture is None else "an emissiveTexture")
+    factor = source.emissiveFactor
+    if factor is not None:
+        factor = np.asarray(factor, dtype=float) * _emissive_strength(gltf, source)
+    emission = _emission(path, source.name, ("emissiveFactor", factor),
+                         None if source.emissiveTexture is None else "an emissiveTexture")
     return Material(
         color=rgba[:3],
         ka=ka,
@@ -1516,28 +1521,48 @@ def _pbr_material(path: Path, source: Any, gltf: dict | None, shared: dict) -> M
         double_sided=bool(source.doubleSided),
         alpha=_fraction(rgba[3]) if mode == "MASK" else 1.0,
         alpha_cutoff=alpha_cutoff,
+        emission=emission,
     )
 
 
-def _warn_of_emission(path: Path, name: Any, color: tuple[str, Any], picture: str | None) -> None:
-    """Warn that a material's emitted light is not drawn: the notes' model has no such term.
+def _emission(path: Path, name: Any, color: tuple[str, Any], picture: str | None) -> np.ndarray:
+    """Return the light a file's material emits (linear r, g, b), zero when it emits none.
 
-    ``color`` is the file's key for the emitted colour and its value (None when absent);
-    ``picture`` names the material's emission texture (None when it has none).
+    ``color`` is the file's key for the emitted colour and its value (None when absent), in
+    linear light; ``picture`` names the material's emission texture (None when it has none).
+    An emission texture is not drawn, and then neither is the colour, which only scales it
+    (a factor of 1 would light the whole surface evenly): a warning says so.
     """
     key, value = color
     try:
-        glowing = value is not None and bool(np.any(np.asarray(value, dtype=float) > 0.0))
+        emitted = np.asarray(value if value is not None else (0.0, 0.0, 0.0), dtype=float)
+        usable = emitted.shape == (3,) and bool(np.all(np.isfinite(emitted)))
     except (TypeError, ValueError):
-        glowing = False  # not a colour: nothing to draw either way
-    if glowing or picture is not None:
-        sources = [f"{key} {np.asarray(value, dtype=float).tolist()}"] if glowing else []
-        sources += [picture] if picture is not None else []
+        usable = False
+    emitted = np.maximum(emitted, 0.0) if usable else np.zeros(3)
+    if picture is None:
+        return emitted
+    if emitted.any():
         warnings.warn(
-            f"{path}: material {name!r} emits light ({', '.join(sources)}), which is not "
-            "drawn: pixelpath's lighting (the notes' Phong model) has no emission term",
+            f"{path}: material {name!r} emits light through {picture} ({key} "
+            f"{emitted.tolist()}), which is not drawn: pixelpath draws an emitted colour, not "
+            "an emission texture",
             stacklevel=3,
         )
+    return np.zeros(3)
+
+
+def _emissive_strength(gltf: dict | None, source: Any) -> float:
+    """Return the ``KHR_materials_emissive_strength`` of ``source``'s glTF material (1 if none)."""
+    index = _gltf_material_index(gltf, getattr(source, "name", None))
+    if index is None:
+        return 1.0
+    extensions = gltf["materials"][index].get("extensions")
+    strength = extensions.get("KHR_materials_emissive_strength") if isinstance(
+        extensions, dict) else None
+    value = strength.get("emissiveStrength", 1.0) if isinstance(strength, dict) else 1.0
+    number = isinstance(value, int | float) and not isinstance(value, bool)
+    return float(value) if number and math.isfinite(value) and value >= 0.0 else 1.0
 
 
 def _is_unlit(gltf: dict | None, source: Any) -> bool:
@@ -1624,8 +1649,9 @@ def _simple_material(path: Path, source: Any, shared: dict) -> Material:
     ns = _mtl_number(raw.get("ns"), 0.0)
     opacity = _fraction(_mtl_number(raw.get("d"), 1.0))
     ka = float(np.mean(ka_color))
-    _warn_of_emission(path, source.name, ("Ke", raw.get("ke")),
-                      None if raw.get("map_ke") is None else "a map_Ke texture")
+    ke = _mtl_color(raw.get("ke"), (0.0, 0.0, 0.0))  # a display colour, as Kd's
+    emission = _emission(path, source.name, ("Ke", srgb_to_linear(ke)),
+                         None if raw.get("map_ke") is None else "a map_Ke texture")
     options = _mtl_map_of(source, shared)
     if options is not None and options.ignored:
         warnings.warn(f"{path}: material {source.name!r}: the .mtl texture options "
@@ -1640,6 +1666,7 @@ def _simple_material(path: Path, source: Any, shared: dict) -> Material:
         name=source.name if isinstance(source.name, str) else None,
         texture=_texture(path, getattr(source, "image", None), shared, keep_alpha=True),
         texture_wrap="clamp" if options is not None and options.clamp else "repeat",
+        emission=emission,
     )
 
 

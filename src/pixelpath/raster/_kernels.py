@@ -137,6 +137,7 @@ class Surfaces(NamedTuple):
     tables: object  # SurfaceTables: textures and which objects have coloured surfaces
     coloured: np.ndarray  # (O,) bool: objects with a texture or vertex colours
     materials: np.ndarray  # (O, 8) packed materials
+    emission: np.ndarray  # (O, 3) light each object emits; (0, 3) when none emits any
     lights: np.ndarray  # (L, 7) packed lights
     ambient: np.ndarray  # (3,) ambient intensity
     eye: np.ndarray  # (4,) the camera's homogeneous viewpoint (eye, 1) or (-d, 0)
@@ -308,6 +309,8 @@ def _shade_row(j, x0, y0, ids, keys, surfaces, out, batch):
                     value = s.flat_colors[t, channel] * tint[channel]
                     if coloured:
                         value += s.flat_colors[t, 3 + channel]
+                    if s.emission.shape[0] > 0:
+                        value += s.emission[obj, channel]
                     rgb[i, channel] = _clamp01(value)
                 continue
             b0, b1, b2 = perspective_weights(s.setup, t, x, y)
@@ -318,10 +321,12 @@ def _shade_row(j, x0, y0, ids, keys, surfaces, out, batch):
                 value = _mix(s.colors, a, b, c, b0, b1, b2, first + channel) * tint[channel]
                 if coloured:
                     value += _mix(s.colors, a, b, c, b0, b1, b2, first + 3 + channel)
+                if s.emission.shape[0] > 0:
+                    value += s.emission[obj, channel]
                 rgb[i, channel] = _clamp01(value)
             continue
         if count == SHADE_BATCH or (count > 0 and obj != batch_object):
-            _shade_batch(count, batch, s.materials[batch_object], s, rgb, normal)
+            _shade_batch(count, batch, batch_object, s, rgb, normal)
             count = np.intp(0)
         batch_object = obj
         if t != line_triangle:
@@ -344,7 +349,7 @@ def _shade_row(j, x0, y0, ids, keys, surfaces, out, batch):
         batch.columns[count] = i
         count += 1
     if count > 0:
-        _shade_batch(count, batch, s.materials[batch_object], s, rgb, normal)
+        _shade_batch(count, batch, batch_object, s, rgb, normal)
 
 
 @njit(inline="always")
@@ -633,8 +638,8 @@ def _fill_row(inv_depth_row, background, rgb_row, depth_row, id_row, normal_row,
 
 
 @njit(error_model="numpy", refcount=False)
-def _shade_batch(count, batch, material, surfaces, rgb_row, normal_row):
-    """Shade the gathered pixels of one row (one object's); write their colours and normals.
+def _shade_batch(count, batch, obj, surfaces, rgb_row, normal_row):
+    """Shade the gathered pixels of one row (object ``obj``'s); write their colours and normals.
 
     First the perspective division of the points and the normalization of the normals, in a
     loop LLVM vectorizes (``error_model="numpy"``: no zero-division check; the denominator is
@@ -654,13 +659,17 @@ def _shade_batch(count, batch, material, surfaces, rgb_row, normal_row):
         ny[q] *= scale
         nz[q] *= scale
     shade_planar(
-        count, batch.points, batch.normals, batch.albedo, surfaces.eye, material,
+        count, batch.points, batch.normals, batch.albedo, surfaces.eye, surfaces.materials[obj],
         surfaces.lights, surfaces.ambient, surfaces.blinn, batch.shaded, batch.scratch,
     )
+    glow = surfaces.emission.shape[0] > 0
     for q in range(count):
         i = batch.columns[q]
         for channel in range(3):
-            rgb_row[i, channel] = _clamp01(batch.shaded[channel, q])
+            value = batch.shaded[channel, q]
+            if glow:
+                value += surfaces.emission[obj, channel]
+            rgb_row[i, channel] = _clamp01(value)
             normal_row[i, channel] = batch.normals[channel, q]
 
 
@@ -724,8 +733,9 @@ def _tiny_shading_pass():
     surfaces = Surfaces(
         setup, triangles, clip[:, :3].copy(), normals, np.zeros((3, 6)),
         np.zeros((1, 2), dtype=np.intp), np.ones((1, 3)), normals[:1].copy(), np.zeros((3, 2)),
-        np.ones((3, 4)), tiny_tables(), np.ones(1, dtype=np.bool_), materials, lights, ambient,
-        np.array([0.0, 0.0, 5.0, 1.0]), np.zeros(3), PHONG, False, False, 0.1, 10.0,
+        np.ones((3, 4)), tiny_tables(), np.ones(1, dtype=np.bool_), materials,
+        np.zeros((1, 3)), lights, ambient, np.array([0.0, 0.0, 5.0, 1.0]), np.zeros(3), PHONG,
+        False, False, 0.1, 10.0,
     )
     out = Buffers(
         np.zeros((8, 8, 3), dtype=np.float32),

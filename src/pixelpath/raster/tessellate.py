@@ -65,6 +65,8 @@ class SceneGeometry:
         Vertex colours (1 for objects without); (0, 4) when no object has them.
     double_sided : (O,) bool
         Objects whose material draws its back faces even when back faces are culled.
+    emission : (O, 3) float64
+        Light each object's material emits; (0, 3) when no object emits any.
     """
 
     vertices: np.ndarray
@@ -81,6 +83,7 @@ class SceneGeometry:
     uv: np.ndarray
     colors: np.ndarray
     double_sided: np.ndarray
+    emission: np.ndarray
 
     @functools.cached_property
     def coloured(self) -> np.ndarray:
@@ -330,6 +333,8 @@ def _build_geometry(objects: tuple, camera: Camera) -> SceneGeometry:
         uv=_per_vertex(meshes, "uv", surfaces.objects[:, TEXTURE] >= 0, 0.0, 2),
         colors=_per_vertex(meshes, "colors", surfaces.objects[:, HAS_COLORS] != 0, 1.0, 4),
         double_sided=np.array([m.material.double_sided for m in meshes], dtype=np.bool_),
+        emission=_stacked([m.material.emission[None] for m in meshes], (0, 3))
+        if any(m.material.emits for m in meshes) else np.empty((0, 3)),
     )
 
 

@@ -19,11 +19,13 @@ from pixelpath.scene._texture_kernels import SurfaceTables
 # the light it carries exceeded 16 (Hall and Greenberg's adaptive depth control).
 MIN_WEIGHT = 1.0 / 4096.0
 
-# Material rows of the tracer: Material.packed() (8 values), then these three.
+# Material rows of the tracer: Material.packed() (8 values), then these three, then the light
+# the material emits (r, g, b).
 REFLECTIVITY = 8
 TRANSPARENCY = 9
 IOR = 10
-MATERIAL_FIELDS = 11
+EMISSION = 11
+MATERIAL_FIELDS = 14
 
 # Kinds of ray (log field KIND) and of primitive (log field PRIMITIVE).
 PRIMARY, REFLECTED, REFRACTED = 0, 1, 2

@@ -65,6 +65,7 @@ from pixelpath.raytrace._records import (
     COUNTS,
     DEPTH,
     DIRECTION,
+    EMISSION,
     ENTERING,
     ETA,
     FRESNEL,
@@ -392,6 +393,10 @@ def render_rows(rows, scene, settings, work, out, x0, y0, rgb, image_depth, obje
                                                       py, pz, nx, ny, nz, dx, dy, dz)
                     shade_point(px, py, pz, nx, ny, nz, ox, oy, oz, 1.0, material, lit[:lit_count],
                                 ambient, settings.blinn, shaded)
+                    if (materials[obj, EMISSION] + materials[obj, EMISSION + 1]
+                            + materials[obj, EMISSION + 2] > 0.0):
+                        for channel in range(3):  # light the surface gives off itself
+                            shaded[channel] += materials[obj, EMISSION + channel]
                     r += weight * shaded[0]
                     g += weight * shaded[1]
                     b += weight * shaded[2]

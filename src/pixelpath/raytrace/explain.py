@@ -97,7 +97,8 @@ class RayNode:
     entering : bool
         The ray hits the outside of the surface (False: it leaves an object, or sees a back face).
     local : (3,) ndarray
-        ``I_local``, the local Phong intensity (the background colour on a miss).
+        ``I_local``, the local Phong intensity plus the material's emission (the background
+        colour on a miss).
     ambient : (3,) ndarray
         ``ka·Ia·C``, C the surface colour at the hit (the material's, times its texture and
         vertex colours there), as in the lights' diffuse terms.
@@ -523,6 +524,9 @@ def _describe_node(scene: Scene, node: RayNode, indent: str) -> list[str]:
                 f"{label}; shadow ray {shade}: diffuse {_v(test.diffuse)}, "
                 f"specular {_v(test.specular)}"
             )
+    material = scene.objects[node.object].material
+    if material.emits:
+        lines.append(f"{pad}emission E = {_v(material.emission)} (added to I_local)")
     lines.append(f"{pad}I_local = {_v(node.local)}")
     if node.total_internal_reflection:
         lines.append(f"{pad}total internal reflection (η = {node.eta:.4g}): kt goes to kr")

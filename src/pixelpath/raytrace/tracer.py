@@ -167,7 +167,7 @@ def _texel_scale(corners: np.ndarray, uv: np.ndarray) -> np.ndarray:
 
 
 def scene_materials(scene: Scene) -> np.ndarray:
-    """Return (O, 11) rows: ``Material.packed()`` then reflectivity, transparency, ior.
+    """Return (O, 14) rows: ``Material.packed()``, reflectivity, transparency, ior, emission.
 
     The first 8 values are the rasterizer's layout, so the lighting kernel reads a row as it is.
 
@@ -177,14 +177,17 @@ def scene_materials(scene: Scene) -> np.ndarray:
     >>> from pixelpath.raytrace.tracer import scene_materials
     >>> glass = Material(transparency=0.9, ior=1.5)
     >>> scene = Scene(Camera(eye=(0, 0, 5), target=(0, 0, 0)), [Sphere((0, 0, 0), 1, glass)])
-    >>> scene_materials(scene)[0, 8:].tolist()
+    >>> scene_materials(scene)[0, 8:11].tolist()
     [0.0, 0.9, 1.5]
     """
+    from pixelpath.raytrace._records import MATERIAL_FIELDS
+
     rows = [
-        [*o.material.packed(), o.material.reflectivity, o.material.transparency, o.material.ior]
+        [*o.material.packed(), o.material.reflectivity, o.material.transparency, o.material.ior,
+         *o.material.emission]
         for o in scene.objects
     ]
-    return np.array(rows, dtype=np.float64).reshape(len(rows), 11)
+    return np.array(rows, dtype=np.float64).reshape(len(rows), MATERIAL_FIELDS)
 
 
 def scene_extent(scene: Scene) -> float:

@@ -4,6 +4,11 @@
 is the material's ``color``: the object colour tints ambient and diffuse light, while highlights
 take the light's colour. ``reflectivity``, ``transparency`` and ``ior`` are used by the ray tracer.
 
+``emission`` (not in the notes' model; glTF's ``emissiveFactor``, an MTL file's ``Ke``) is light
+the surface gives off itself: ``I + E``, the same at every point and from every side, in every
+method and in the ray tracer (where reflections and refractions show it too). It lights no
+other surface: an emissive material is not a light source.
+
 ``alpha_cutoff`` makes a material *alpha-tested* (glTF's ``alphaMode`` MASK): the surface's
 alpha, ``alpha`` × the vertex colours' alpha × the texture's alpha, is compared with the cutoff
 at every point drawn, and where it is below the surface is cut away, as if it were not there:
@@ -65,6 +70,9 @@ class Material(Record):
         test reads the texture's base level with the material's filter (trilinear filtering
         reads it bilinearly), so a cut-out's outline does not move with distance, and it is
         the same in every method and in the ray tracer.
+    emission : (3,) array_like
+        Light the surface emits (r, g, b), non-negative, added to the shaded intensity; the
+        default (0, 0, 0) emits none.
 
     Examples
     --------
@@ -96,6 +104,7 @@ class Material(Record):
     double_sided: bool = False
     alpha: float = 1.0
     alpha_cutoff: float | None = None
+    emission: Any = (0.0, 0.0, 0.0)
 
     def __post_init__(self) -> None:
         self._set(
@@ -114,7 +123,20 @@ class Material(Record):
             double_sided=_flag(self.double_sided, "double_sided"),
             alpha=_fraction(self.alpha, "alpha"),
             alpha_cutoff=_cutoff(self.alpha_cutoff),
+            emission=v.colour(self.emission, "emission"),
         )
+
+    @property
+    def emits(self) -> bool:
+        """Whether the material emits light (an ``emission`` above zero).
+
+        Examples
+        --------
+        >>> from pixelpath.scene import Material
+        >>> Material().emits, Material(emission=(0.5, 0.0, 0.0)).emits
+        (False, True)
+        """
+        return bool(self.emission.any())
 
     def packed(self) -> np.ndarray:
         """Return the (8,) float64 row ``[r, g, b, ka, kd, ks, shininess, 0.0]`` kernels read.

@@ -164,6 +164,7 @@ MATERIAL = {
         "alpha test: where alpha x vertex-colour alpha x texture alpha is below it, the "
         "surface is cut away (glTF alphaMode MASK); absent: opaque",
     ),
+    "emission": Key("vector3", "light the surface emits (r, g, b), >= 0, added to its shading"),
 }
 
 TRANSFORM = {
