@@ -815,21 +815,18 @@ def _decoded(
     for index, as_float in misread.items():
         values, accessor = _decoded_accessor(path, gltf, index, read, as_float)
         accessors[index] = {**accessor, "bufferView": stored(values)}
-    if fans:
+    if fans or skinned:
         meshes = meshes or _copied_meshes(path, gltf)
-        for m, k in fans:
-            primitive = meshes[m]["primitives"][k]
-            triangles = _fan_triangles(path, drawn, primitive, read)
-            if triangles is None:
-                continue  # fewer than three corners: nothing to draw, as trimesh leaves it
-            accessors.append({"bufferView": stored(triangles), "componentType": 5125,
-                              "count": triangles.size, "type": "SCALAR"})
-            meshes[m]["primitives"][k] = {**primitive, "indices": len(accessors) - 1,
-                                          "mode": _TRIANGLES}
-    nodes = None
-    if skinned:
-        meshes = meshes or _copied_meshes(path, gltf)
-        nodes = _posed_skins(path, gltf, skinned, meshes, accessors, stored, read)
+    for m, k in fans:
+        primitive = meshes[m]["primitives"][k]
+        triangles = _fan_triangles(path, drawn, primitive, read)
+        if triangles is None:
+            continue  # fewer than three corners: nothing to draw, as trimesh leaves it
+        accessors.append({"bufferView": stored(triangles), "componentType": 5125,
+                          "count": triangles.size, "type": "SCALAR"})
+        meshes[m]["primitives"][k] = {**primitive, "indices": len(accessors) - 1,
+                                      "mode": _TRIANGLES}
+    nodes = _posed_skins(path, gltf, skinned, meshes, accessors, stored, read) if skinned else None
     for index, buffer in enumerate(buffers):
         if "uri" not in buffer:  # the GLB's binary chunk
             buffer["uri"] = _data_uri(read(index))
@@ -890,10 +887,8 @@ def _skin_matrices(path: Path, gltf: dict, skin: dict, world: dict, read: Any) -
     inverse = np.broadcast_to(np.eye(4), (len(joints), 4, 4))
     if skin.get("inverseBindMatrices") is not None:
         index = skin["inverseBindMatrices"]
-        accessors = gltf["accessors"]
-        if not (_is_int(index) and 0 <= index < len(accessors)
-                and accessors[index].get("type") == "MAT4"
-                and accessors[index].get("count") == len(joints)):
+        accessor = _accessor_of(path, gltf, index, "a skin's inverseBindMatrices")
+        if accessor.get("type") != "MAT4" or accessor.get("count") != len(joints):
             raise ValueError(f"{path}: a skin's inverseBindMatrices must be a MAT4 accessor "
                              "with a matrix for each joint")
         values, _ = _decoded_accessor(path, gltf, index, read, True)
@@ -909,12 +904,9 @@ def _posed_primitive(
     attributes = primitive.get("attributes")
     if not isinstance(attributes, dict) or "POSITION" not in attributes:
         return primitive
-    count = len(gltf["accessors"])  # the file's own, not those made here
-
     def values(name: str) -> np.ndarray:
         index = attributes[name]
-        if not (_is_int(index) and 0 <= index < count):
-            raise ValueError(f"{path}: attribute {name} names a missing accessor")
+        _accessor_of(path, gltf, index, f"attribute {name}")  # the file's own accessors
         return _decoded_accessor(path, gltf, index, read, True)[0].astype(np.float64)
 
     positions = values("POSITION")
@@ -972,6 +964,14 @@ def _copied_meshes(path: Path, gltf: dict) -> list[dict]:
     return meshes
 
 
+def _accessor_of(path: Path, gltf: dict, index: Any, what: str) -> dict:
+    """Return the file's accessor ``index`` that ``what`` names, refusing a missing one."""
+    accessors = gltf["accessors"]
+    if not (_is_int(index) and 0 <= index < len(accessors)):
+        raise ValueError(f"{path}: {what} names a missing accessor")
+    return accessors[index]
+
+
 def _fan_triangles(path: Path, gltf: dict, primitive: dict, read: Any) -> np.ndarray | None:
     """Return the (n - 2, 3) uint32 triangles of a triangle fan: (c0, c_i, c_i+1).
 
@@ -979,17 +979,14 @@ def _fan_triangles(path: Path, gltf: dict, primitive: dict, read: Any) -> np.nda
     in order when it has none. None for a fan of fewer than three corners.
     """
     index = primitive.get("indices")
-    accessors = gltf["accessors"]
     if index is None:
         attributes = primitive.get("attributes")
         position = attributes.get("POSITION") if isinstance(attributes, dict) else None
-        if not (_is_int(position) and 0 <= position < len(accessors)):
-            raise ValueError(f"{path}: a triangle fan has no valid POSITION accessor")
-        corners = np.arange(accessors[position].get("count", 0), dtype="<u4")
-    elif _is_int(index) and 0 <= index < len(accessors):
-        corners = _dense_accessor(path, gltf, index, read)[:, 0].astype("<u4")
+        count = _accessor_of(path, gltf, position, "a triangle fan's POSITION").get("count", 0)
+        corners = np.arange(count, dtype="<u4")
     else:
-        raise ValueError(f"{path}: a triangle fan names a missing indices accessor")
+        _accessor_of(path, gltf, index, "a triangle fan's indices")
+        corners = _dense_accessor(path, gltf, index, read)[:, 0].astype("<u4")
     if len(corners) < 3:
         return None
     triangles = np.empty((len(corners) - 2, 3), "<u4")

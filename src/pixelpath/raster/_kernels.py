@@ -288,6 +288,7 @@ def _shade_row(j, x0, y0, ids, keys, surfaces, out, batch):
     _fill_row(keys, s.background, rgb, out.depth[row], out.object_id[row], normal,
               s.orthographic, s.near, s.far)
     half = s.colors.shape[1] // 2  # Gouraud: the columns of the light from the front
+    glow = s.emission.shape[0] > 0  # some object emits light
     if s.uv.shape[0] > 0 or s.vertex_colors.shape[0] > 0:
         _row_surface_colors(j, x0, ids, s.info, s.setup, s.triangles, s.uv, s.vertex_colors,
                             s.tables, s.materials, s.coloured, batch.row_colors, batch)
@@ -309,7 +310,7 @@ def _shade_row(j, x0, y0, ids, keys, surfaces, out, batch):
                     value = s.flat_colors[t, channel] * tint[channel]
                     if coloured:
                         value += s.flat_colors[t, 3 + channel]
-                    if s.emission.shape[0] > 0:
+                    if glow:
                         value += s.emission[obj, channel]
                     rgb[i, channel] = _clamp01(value)
                 continue
@@ -321,7 +322,7 @@ def _shade_row(j, x0, y0, ids, keys, surfaces, out, batch):
                 value = _mix(s.colors, a, b, c, b0, b1, b2, first + channel) * tint[channel]
                 if coloured:
                     value += _mix(s.colors, a, b, c, b0, b1, b2, first + 3 + channel)
-                if s.emission.shape[0] > 0:
+                if glow:
                     value += s.emission[obj, channel]
                 rgb[i, channel] = _clamp01(value)
             continue
