@@ -1,4 +1,4 @@
-"""Small animated scenes for the frame tests, and a scene that counts how often it is unpickled.
+"""Small animated scenes for the frame tests, and a scene that counts how often it is sent.
 
 Worker processes import this module by name (they inherit the test process's ``sys.path``).
 """
@@ -10,7 +10,8 @@ import dataclasses
 import pixelpath as pp
 from pixelpath.scene import Animation, CameraKey, ObjectKey, Turntable
 
-# How many scenes this process has unpickled (a worker receiving the scattered scene).
+# How many scenes this process has pickled (sent) and unpickled (a worker receiving one).
+PICKLED = 0
 UNPICKLED = 0
 
 
@@ -48,9 +49,11 @@ def _rebuild(fields: dict) -> CountingScene:
 
 @dataclasses.dataclass(frozen=True, eq=False)
 class CountingScene(pp.Scene):
-    """A Scene that counts, in the receiving process, each time it is unpickled."""
+    """A Scene that counts each time it is pickled, and in the receiving process unpickled."""
 
     def __reduce__(self):
+        global PICKLED
+        PICKLED += 1
         fields = {field.name: getattr(self, field.name) for field in dataclasses.fields(self)}
         return _rebuild, (fields,)
 

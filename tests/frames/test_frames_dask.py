@@ -1,7 +1,7 @@
 """render_frames on a real Dask LocalCluster of two worker processes.
 
 Frames must be byte-identical to the serial render, tiles must stitch exactly, the scene must
-reach each worker once, and a worker killed in the middle of a run must cost no frame.
+be sent once and reach every worker, and a worker killed in the middle of a run must cost no frame.
 """
 
 from __future__ import annotations
@@ -11,6 +11,7 @@ import signal
 import types
 
 import dask
+import frame_scenes
 import numpy as np
 import pytest
 from frame_scenes import animated_scene, broken_on_workers, counting, unpickled_count
@@ -57,14 +58,18 @@ def test_tiles_rendered_by_workers_stitch_exactly(client, tmp_path):
     assert {path.name: path.read_bytes() for path in paths} == serial
 
 
-def test_the_scene_reaches_each_worker_once(client):
+def test_the_scene_is_sent_once_and_reaches_each_worker(client):
     scene = counting(animated_scene(frames=12))
     before = client.run(unpickled_count)
+    pickled = frame_scenes.PICKLED
     images = pp.render_frames(scene, range(12), client, tiles=(2, 1))
     after = client.run(unpickled_count)
-    assert len(images) == 12  # 24 tiles in batches, each batch naming the scene
+    assert len(images) == 12  # 24 tiles in 12 batches, each batch naming the scene by its key
+    assert frame_scenes.PICKLED - pickled == 1
     assert sorted(after) == sorted(before) and len(after) == 2
-    assert all(after[worker] - before[worker] == 1 for worker in after)
+    # At least once, not exactly: on a CPU-starved machine Dask has been seen to copy it twice
+    # to one worker, the broadcast's copy and a task's own fetch of its input racing.
+    assert all(after[worker] - before[worker] >= 1 for worker in after)
 
 
 def test_resume_on_the_cluster_renders_only_missing_frames(client, tmp_path):
