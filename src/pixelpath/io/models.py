@@ -20,6 +20,10 @@ What a model file gives (:func:`read_model`)
   at the file's rest pose (linear blend skinning: the weights times ``world(joint) @
   inverseBindMatrix``, the skinned node's own transform ignored, as glTF asks), positions
   and normals; animations are not played.
+- **Morph targets** (which trimesh ignores too): a mesh takes the shape of its default weights,
+  ``base + sum(weight * target)`` for positions and normals, the weights the node's
+  ``weights``, else its mesh's (all zero when neither has any: the base shape), before a skin
+  poses it. Targets that move texture coordinates or colours are not applied, with a warning.
 - **Normals**: those the file stores, turned by the node's inverse transpose; where it has
   none, the area-weighted normals of the faces (:class:`~pixelpath.scene.Mesh`'s). A zero
   vector in the file (some exporters write them at degenerate corners) becomes the faces'
@@ -786,16 +790,15 @@ def _decoded(
     (the node transforms that scale quantized positions back are applied as any node's); a GLB's
     binary chunk becomes a data: URI too, so trimesh reads the whole as a .gltf. The meshes
     come with the texture coordinate sets their base colours read as set 0
-    (:func:`_base_color_sets`). None when nothing needs it (the file is read as it is). Morph
-    targets, which pixelpath does not draw, are left alone.
+    (:func:`_base_color_sets`), and the skinned and morphed nodes posed (:func:`_posed_nodes`).
+    None when nothing needs it (the file is read as it is).
     """
     meshes = _base_color_sets(path, gltf)
     drawn = gltf if meshes is None else {**gltf, "meshes": meshes}
     misread = _misread_accessors(path, drawn)
     fans = [(m, k) for m, k, primitive in _primitives(drawn) if primitive.get("mode") == _FAN]
-    skinned = [n for n, node in enumerate(_list(path, gltf, "nodes"))
-               if "skin" in node and "mesh" in node]
-    if not misread and not fans and not skinned and meshes is None:
+    posed = _posed_node_indices(path, gltf)
+    if not misread and not fans and not posed and meshes is None:
         return None
     read = functools.cache(lambda index: _buffer_bytes(path, gltf, index, file, chunk,
                                                        resolver))
@@ -815,7 +818,7 @@ def _decoded(
     for index, as_float in misread.items():
         values, accessor = _decoded_accessor(path, gltf, index, read, as_float)
         accessors[index] = {**accessor, "bufferView": stored(values)}
-    if fans or skinned:
+    if fans or posed:
         meshes = meshes or _copied_meshes(path, gltf)
     for m, k in fans:
         primitive = meshes[m]["primitives"][k]
@@ -826,7 +829,7 @@ def _decoded(
                           "count": triangles.size, "type": "SCALAR"})
         meshes[m]["primitives"][k] = {**primitive, "indices": len(accessors) - 1,
                                       "mode": _TRIANGLES}
-    nodes = _posed_skins(path, gltf, skinned, meshes, accessors, stored, read) if skinned else None
+    nodes = _posed_nodes(path, gltf, posed, meshes, accessors, stored, read) if posed else None
     for index, buffer in enumerate(buffers):
         if "uri" not in buffer:  # the GLB's binary chunk
             buffer["uri"] = _data_uri(read(index))
@@ -839,40 +842,79 @@ def _decoded(
     return io.BytesIO(json.dumps(edited).encode())
 
 
-def _posed_skins(
-    path: Path, gltf: dict, skinned: list[int], meshes: list[dict], accessors: list[dict],
+def _posed_node_indices(path: Path, gltf: dict) -> list[int]:
+    """Return the nodes whose mesh a skin poses or morph targets move (at non-zero weights)."""
+    meshes = gltf.get("meshes", [])  # a list of objects (checked)
+    return [n for n, node in enumerate(_list(path, gltf, "nodes"))
+            if "mesh" in node and ("skin" in node or (
+                _is_int(node["mesh"]) and 0 <= node["mesh"] < len(meshes)
+                and _morph_weights(path, n, node, meshes[node["mesh"]])))]
+
+
+def _morph_weights(path: Path, n: int, node: dict, mesh: dict) -> list[float] | None:
+    """Return the weights of the morph targets node ``n`` draws ``mesh`` with; None if all 0.
+
+    The node's ``weights``, else its mesh's, else zeros (the glTF defaults), one a target.
+    """
+    weights = node.get("weights", mesh.get("weights"))
+    if weights is None:  # most meshes: looked at first, as every file's nodes are
+        return None
+    primitives = mesh.get("primitives")
+    counts = {len(p["targets"]) if isinstance(p.get("targets"), list) else 0
+              for p in (primitives if isinstance(primitives, list) else [])
+              if isinstance(p, dict)}
+    if counts <= {0}:
+        return None
+    if not (isinstance(weights, list) and counts == {len(weights)} and all(
+            isinstance(w, int | float) and not isinstance(w, bool) and math.isfinite(w)
+            for w in weights)):
+        raise ValueError(f"{path}: node {n}: the morph weights must be one number for each "
+                         f"morph target of every primitive, got {weights!r}")
+    return weights if any(weights) else None
+
+
+def _posed_nodes(
+    path: Path, gltf: dict, posed: list[int], meshes: list[dict], accessors: list[dict],
     stored: Any, read: Any,
 ) -> list[dict]:
-    """Pose every skinned node's mesh by its skin at the file's rest pose; return the nodes.
+    """Pose the meshes of skinned and morphed nodes as the file leaves them; return the nodes.
 
-    trimesh ignores skins, and a skinned mesh's vertices are in the skin's bind space, not in
-    its node's frame: a rigged character could lie on its back. glTF places them by their
-    joints alone (the skinned node's own transform is ignored): each vertex moves by the sum
-    of its weights times ``world(joint) @ inverseBindMatrix`` of its joints (linear blend
-    skinning), its normal by that matrix's linear part. The posed positions and normals are
-    written back in the node's frame (``inverse(world(node))``), so that trimesh's placing of
-    the node leaves them where the joints put them. Each skinned node gets a mesh of its own
-    (appended to ``meshes``, read by the edited ``nodes`` returned). Animations are not
-    played: the pose is that of the nodes as the file leaves them.
+    trimesh ignores skins and morph targets. Morph targets move a mesh's positions and normals
+    by their weights (``base + sum(weight * target)``, glTF's rest shape where a weight is not
+    0). A skinned mesh's vertices are in the skin's bind space, not in its node's frame: a
+    rigged character could lie on its back. glTF places them by their joints alone (the
+    skinned node's own transform is ignored): each vertex moves by the sum of its weights
+    times ``world(joint) @ inverseBindMatrix`` of its joints (linear blend skinning), its
+    normal by that matrix's linear part, after the morph targets. The posed positions and
+    normals are written back in the node's frame (``inverse(world(node))``), so that
+    trimesh's placing of the node leaves them where the joints put them. Each posed node gets
+    a mesh of its own (appended to ``meshes``, read by the edited ``nodes`` returned).
+    Animations are not played: the pose is that of the nodes and weights the file states.
     """
     nodes = [dict(node) for node in _list(path, gltf, "nodes")]
     skins = _list(path, gltf, "skins")
     world = _world_matrices(gltf)
-    for n in skinned:
+    unmoved: set[str] = set()  # attributes morph targets move that pixelpath does not
+    for n in posed:
         node = nodes[n]
         if n not in world:
             continue  # not in the scene: not drawn
-        skin = _item(skins, node["skin"], f"node {n}", "skin", "skins")
-        matrices = _skin_matrices(path, gltf, skin, world, read)
         mesh = _item(meshes, node["mesh"], f"node {n}", "mesh", "meshes")
-        posed = {**mesh, "primitives": [
-            _posed_primitive(path, gltf, primitive, matrices, world[n], accessors, stored, read)
+        weights = _morph_weights(path, n, node, mesh)
+        matrices = None
+        if "skin" in node:
+            skin = _item(skins, node.pop("skin"), f"node {n}", "skin", "skins")
+            matrices = _skin_matrices(path, gltf, skin, world, read)
+        meshes.append({**mesh, "primitives": [
+            _posed_primitive(path, gltf, primitive, weights, matrices, world[n], accessors,
+                             stored, read, unmoved)
             if isinstance(primitive, dict) else primitive
             for primitive in mesh.get("primitives", [])
-        ]}
-        meshes.append(posed)
+        ]})
         node["mesh"] = len(meshes) - 1
-        del node["skin"]
+    if unmoved:
+        warnings.warn(f"{path}: morph targets move {', '.join(sorted(unmoved))}, which "
+                      "pixelpath does not morph (it morphs POSITION and NORMAL)", stacklevel=2)
     return nodes
 
 
@@ -897,42 +939,82 @@ def _skin_matrices(path: Path, gltf: dict, skin: dict, world: dict, read: Any) -
 
 
 def _posed_primitive(
-    path: Path, gltf: dict, primitive: dict, matrices: np.ndarray, node_world: np.ndarray,
-    accessors: list[dict], stored: Any, read: Any,
+    path: Path, gltf: dict, primitive: dict, weights: list[float] | None,
+    matrices: np.ndarray | None, node_world: np.ndarray, accessors: list[dict], stored: Any,
+    read: Any, unmoved: set[str],
 ) -> dict:
-    """Return ``primitive`` with its positions (and normals) posed by its skin's matrices."""
+    """Return ``primitive`` with its positions (and normals) morphed, then posed by a skin.
+
+    ``weights`` are its morph targets' (None: not morphed), ``matrices`` its skin's joint
+    matrices (None: no skin).
+    """
     attributes = primitive.get("attributes")
     if not isinstance(attributes, dict) or "POSITION" not in attributes:
         return primitive
-    def values(name: str) -> np.ndarray:
-        index = attributes[name]
+
+    def values(index: Any, name: str) -> np.ndarray:
         _accessor_of(path, gltf, index, f"attribute {name}")  # the file's own accessors
         return _decoded_accessor(path, gltf, index, read, True)[0].astype(np.float64)
 
-    positions = values("POSITION")
+    def morphed(name: str) -> np.ndarray:
+        base = values(attributes[name], name)
+        if weights is None:
+            return base
+        # every primitive has one target for each weight (_morph_weights)
+        for weight, target in zip(weights, primitive["targets"], strict=True):
+            if not isinstance(target, dict):
+                raise ValueError(f"{path}: a morph target must be an object, got {target!r}")
+            if weight:
+                unmoved.update(key for key in target if key not in _MORPHED)
+            if weight and name in target:
+                moved = values(target[name], f"{name} of a morph target")
+                if moved.shape != base.shape:
+                    raise ValueError(f"{path}: a morph target's {name} does not match the "
+                                     "primitive's vertices")
+                base += weight * moved
+        return base
+
+    positions = morphed("POSITION")
+    normals = morphed("NORMAL") if "NORMAL" in attributes else None
+    if matrices is not None:
+        positions, normals = _skinned(path, attributes, values, matrices, node_world,
+                                      positions, normals)
+    edited = dict(attributes)
+    edited["POSITION"] = _new_accessor(accessors, stored, positions.astype("<f4"), "VEC3")
+    if normals is not None:
+        edited["NORMAL"] = _new_accessor(accessors, stored, normals.astype("<f4"), "VEC3")
+    return {**primitive, "attributes": edited}
+
+
+_MORPHED = frozenset({"POSITION", "NORMAL", "TANGENT"})  # TANGENT: pixelpath draws none
+
+
+def _skinned(
+    path: Path, attributes: dict, values: Any, matrices: np.ndarray, node_world: np.ndarray,
+    positions: np.ndarray, normals: np.ndarray | None,
+) -> tuple[np.ndarray, np.ndarray | None]:
+    """Return positions and normals posed by a skin's joint ``matrices``, in the node's frame."""
     blend = np.zeros((len(positions), 4, 4))
     for set_number in itertools.count():
-        if f"JOINTS_{set_number}" not in attributes or f"WEIGHTS_{set_number}" not in attributes:
+        joints_name, weights_name = f"JOINTS_{set_number}", f"WEIGHTS_{set_number}"
+        if joints_name not in attributes or weights_name not in attributes:
             break
-        joints = values(f"JOINTS_{set_number}").astype(np.intp)
-        weights = values(f"WEIGHTS_{set_number}")
+        joints = values(attributes[joints_name], joints_name).astype(np.intp)
+        weights = values(attributes[weights_name], weights_name)
         if joints.shape != weights.shape or len(joints) != len(positions):
-            raise ValueError(f"{path}: JOINTS_{set_number} and WEIGHTS_{set_number} do not "
-                             "match the vertices")
+            raise ValueError(f"{path}: {joints_name} and {weights_name} do not match the "
+                             "vertices")
         if joints.min(initial=0) < 0 or joints.max(initial=0) >= len(matrices):
-            raise ValueError(f"{path}: JOINTS_{set_number} names a joint its skin lacks")
+            raise ValueError(f"{path}: {joints_name} names a joint its skin lacks")
         blend += np.einsum("vi,vijk->vjk", weights, matrices[joints])
     unweighted = ~blend.any(axis=(1, 2))
     blend[unweighted] = node_world  # no weights: the node's own placement, as unskinned
     back = np.linalg.inv(node_world)
     local = back @ blend  # each vertex's matrix into the node's frame
     posed = np.einsum("vjk,vk->vj", local[:, :3, :3], positions) + local[:, :3, 3]
-    edited = dict(attributes)
-    edited["POSITION"] = _new_accessor(accessors, stored, posed.astype("<f4"), "VEC3")
-    if "NORMAL" in attributes:
-        normals = np.einsum("vjk,vk->vj", blend[:, :3, :3], values("NORMAL")) @ node_world[:3, :3]
-        edited["NORMAL"] = _new_accessor(accessors, stored, normals.astype("<f4"), "VEC3")
-    return {**primitive, "attributes": edited}
+    if normals is not None:
+        normals = np.einsum("vjk,vk->vj", blend[:, :3, :3], normals) @ node_world[:3, :3]
+    return posed, normals
 
 
 def _new_accessor(accessors: list[dict], stored: Any, values: np.ndarray, kind: str) -> int:
