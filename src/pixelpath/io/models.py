@@ -24,6 +24,10 @@ What a model file gives (:func:`read_model`)
   ``base + sum(weight * target)`` for positions and normals, the weights the node's
   ``weights``, else its mesh's (all zero when neither has any: the base shape), before a skin
   poses it. Targets that move texture coordinates or colours are not applied, with a warning.
+- **Instances** (``EXT_mesh_gpu_instancing``, which trimesh ignores as well): a node's mesh is
+  drawn once per instance, at the node's world transform times the instance's translation,
+  rotation and scale, and not at the node itself; instance k of a part called "tree" is
+  called "tree[k]".
 - **Normals**: those the file stores, turned by the node's inverse transpose; where it has
   none, the area-weighted normals of the faces (:class:`~pixelpath.scene.Mesh`'s). A zero
   vector in the file (some exporters write them at degenerate corners) becomes the faces'
@@ -345,14 +349,16 @@ def _read_checked(path: Path) -> tuple[list[Mesh], dict | None]:
             gltf, chunk = _checked_gltf(path, file)
             decoded = _decoded(path, gltf, file, chunk, resolver)
             file.seek(0)
-            parts = _trimesh_parts(path, resolver, decoded or file)
+            parts = _trimesh_parts(path, resolver, file if decoded is None else decoded[0])
+        # the parts are named after the nodes trimesh read (instances are nodes of their own)
+        named = gltf if decoded is None else decoded[1]
     else:
-        gltf, parts = None, _trimesh_parts(path, resolver, None)
+        gltf, named, parts = None, None, _trimesh_parts(path, resolver, None)
     if resolver.refused:
         raise ValueError(f"{path}: refers to {resolver.refused[0]!r}, outside the file's folder")
     for name in resolver.missing:
         warnings.warn(f"{path}: {name!r} not found; using the material colour", stacklevel=3)
-    return _meshes(path, parts, gltf), gltf
+    return _meshes(path, parts, named), gltf
 
 
 def _stl_objects(path: Path) -> list[Mesh]:
@@ -777,7 +783,7 @@ _NORMALIZABLE = (5120, 5121, 5122, 5123)  # the integer types an accessor may ma
 
 def _decoded(
     path: Path, gltf: dict, file: BinaryIO, chunk: _GlbChunk | None, resolver: Any
-) -> BinaryIO | None:
+) -> tuple[BinaryIO, dict] | None:
     """Return the glTF JSON, for trimesh to read, with the accessors it would misread decoded.
 
     trimesh reads an accessor's dense data (zeros where it has no bufferView), ignoring its
@@ -790,15 +796,19 @@ def _decoded(
     (the node transforms that scale quantized positions back are applied as any node's); a GLB's
     binary chunk becomes a data: URI too, so trimesh reads the whole as a .gltf. The meshes
     come with the texture coordinate sets their base colours read as set 0
-    (:func:`_base_color_sets`), and the skinned and morphed nodes posed (:func:`_posed_nodes`).
-    None when nothing needs it (the file is read as it is).
+    (:func:`_base_color_sets`), the skinned and morphed nodes posed (:func:`_posed_nodes`),
+    and the instances of ``EXT_mesh_gpu_instancing`` made nodes (:func:`_instance_nodes`).
+    Returned as a file and as the edited JSON; None when nothing needs it (the file is read as
+    it is).
     """
     meshes = _base_color_sets(path, gltf)
     drawn = gltf if meshes is None else {**gltf, "meshes": meshes}
     misread = _misread_accessors(path, drawn)
     fans = [(m, k) for m, k, primitive in _primitives(drawn) if primitive.get("mode") == _FAN]
     posed = _posed_node_indices(path, gltf)
-    if not misread and not fans and not posed and meshes is None:
+    instanced = [n for n, node in enumerate(_list(path, gltf, "nodes"))
+                 if "mesh" in node and _INSTANCING in (node.get("extensions") or ())]
+    if not misread and not fans and not posed and not instanced and meshes is None:
         return None
     read = functools.cache(lambda index: _buffer_bytes(path, gltf, index, file, chunk,
                                                        resolver))
@@ -830,6 +840,8 @@ def _decoded(
         meshes[m]["primitives"][k] = {**primitive, "indices": len(accessors) - 1,
                                       "mode": _TRIANGLES}
     nodes = _posed_nodes(path, gltf, posed, meshes, accessors, stored, read) if posed else None
+    if instanced:
+        nodes = _instance_nodes(path, gltf, instanced, nodes, read)
     for index, buffer in enumerate(buffers):
         if "uri" not in buffer:  # the GLB's binary chunk
             buffer["uri"] = _data_uri(read(index))
@@ -839,7 +851,66 @@ def _decoded(
         edited["meshes"] = meshes
     if nodes is not None:
         edited["nodes"] = nodes
-    return io.BytesIO(json.dumps(edited).encode())
+    return io.BytesIO(json.dumps(edited).encode()), edited
+
+
+_INSTANCING = "EXT_mesh_gpu_instancing"
+_INSTANCE_ATTRIBUTES = {"TRANSLATION": ("translation", "VEC3"),
+                        "ROTATION": ("rotation", "VEC4"), "SCALE": ("scale", "VEC3")}
+
+
+def _instance_nodes(
+    path: Path, gltf: dict, instanced: list[int], nodes: list[dict] | None, read: Any
+) -> list[dict]:
+    """Return the nodes with each ``EXT_mesh_gpu_instancing`` instance a child node of its own.
+
+    trimesh ignores the extension and drew the mesh once, at the node. glTF draws it once per
+    instance, at the node's world transform times the instance's translation, rotation (a
+    quaternion, x y z w) and scale: a child node with that TRS and the node's mesh (and morph
+    weights) is drawn so, and the node keeps its other children but not its mesh. Instance
+    k of a node called "tree" is called "tree[k]".
+    """
+    nodes = nodes or [dict(node) for node in _list(path, gltf, "nodes")]
+    for n in instanced:
+        node = nodes[n]
+        where = f"node {n}: {_INSTANCING}"
+        attributes = node["extensions"][_INSTANCING]
+        attributes = attributes.get("attributes") if isinstance(attributes, dict) else None
+        if not isinstance(attributes, dict):
+            raise ValueError(f"{path}: {where} has no attributes object")
+        trs = {}
+        for name, (key, kind) in _INSTANCE_ATTRIBUTES.items():
+            if name in attributes:
+                accessor = _accessor_of(path, gltf, attributes[name], f"{where} {name}")
+                if accessor.get("type") != kind:
+                    raise ValueError(f"{path}: {where} {name} must be a {kind} accessor")
+                values = _decoded_accessor(path, gltf, attributes[name], read, True)[0]
+                trs[key] = values.astype(np.float64).tolist()
+        counts = {len(values) for values in trs.values()}
+        if len(counts) != 1:
+            raise ValueError(f"{path}: {where} needs TRANSLATION, ROTATION or SCALE, each "
+                             "with one value an instance")
+        name = _instance_base_name(gltf, n, node)
+        extra = {"weights": node["weights"]} if "weights" in node else {}
+        children = node.get("children") if isinstance(node.get("children"), list) else []
+        first = len(nodes)
+        for k in range(counts.pop()):
+            nodes.append({"name": f"{name}[{k}]", "mesh": node["mesh"], **extra,
+                          **{key: values[k] for key, values in trs.items()}})
+        node["children"] = [*children, *range(first, len(nodes))]
+        del node["mesh"]
+    return nodes
+
+
+def _instance_base_name(gltf: dict, n: int, node: dict) -> str:
+    """Return what node ``n`` is called as a part: its name, else its mesh's, else "node n"."""
+    meshes = gltf.get("meshes", [])  # a list of objects (checked)
+    mesh = node["mesh"]
+    for name in (node.get("name"),
+                 meshes[mesh].get("name") if _is_int(mesh) and 0 <= mesh < len(meshes) else None):
+        if isinstance(name, str) and name:
+            return name
+    return f"node {n}"
 
 
 def _posed_node_indices(path: Path, gltf: dict) -> list[int]:
