@@ -46,6 +46,12 @@ def test_each_instance_is_drawn_where_its_translation_puts_it(tmp_path):
         np.testing.assert_allclose(meshes[f"quad[{k}]"].vertices, QUAD + shift)
 
 
+def test_a_file_that_requires_the_extension_loads(tmp_path):
+    gltf = instanced_quad(quad_gltf(), TRANSLATION=(SHIFTS, 5126, "VEC3"))
+    gltf["extensionsRequired"] = [EXTENSION]
+    assert len(read_model(write(tmp_path, gltf)).objects) == 3
+
+
 def test_the_instance_transform_is_in_the_node_s_frame(tmp_path):
     """Node: move by (10, 0, 0), scale 2. Instance: a quarter turn about z, then (1, 0, 0):
     (x, y, 0) turns to (-y, x, 0), moves to (1 - y, x, 0), then (2 - 2y + 10, 2x, 0)."""

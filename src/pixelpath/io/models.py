@@ -213,6 +213,7 @@ _KNOWN_REQUIRED = {
     "KHR_mesh_quantization",  # integer vertex attributes, decoded to float32 before trimesh
     "KHR_texture_transform",  # applied to the base-colour texture's coordinates
     "EXT_texture_webp",  # trimesh (4.0 on) reads the WebP source, Pillow decodes it
+    "EXT_mesh_gpu_instancing",  # its instances made nodes before trimesh reads the file
 }
 _COMPONENT_BYTES = {5120: 1, 5121: 1, 5122: 2, 5123: 2, 5125: 4, 5126: 4}
 _TYPE_COMPONENTS = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4, "MAT2": 4, "MAT3": 9, "MAT4": 16}
