@@ -203,10 +203,16 @@ def unit_vector3(value: Any, name: str) -> np.ndarray:
 
 def colour(value: Any, name: str) -> np.ndarray:
     """Return an (r, g, b) colour; components must be finite and non-negative."""
+    if type(value) is tuple and value == _WHITE_TUPLE:  # every light's default: made once
+        return _WHITE
     rgb = float_array(value, name, (3,))
     if min(rgb.tolist()) < 0.0:
         raise ValueError(f"{name} components must be non-negative (>= 0), got {rgb.tolist()}")
     return frozen(rgb)
+
+
+_WHITE_TUPLE = (1.0, 1.0, 1.0)
+_WHITE = frozen(np.ones(3))
 
 
 def rgb_or_scalar(value: Any, name: str) -> np.ndarray:

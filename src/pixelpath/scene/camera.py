@@ -132,6 +132,14 @@ class Camera(Record):
         >>> u.tolist(), w.tolist()
         ([-1.0, 0.0, 0.0], [0.0, 0.0, -1.0])
         """
+        # Worked out once (the camera is frozen), when it is made: every render, light rig and
+        # framing asks for it again. The vectors are read-only, as the camera's own are.
+        frame = self.__dict__.get("_frame")
+        if frame is None:
+            frame = self.__dict__["_frame"] = tuple(map(v.frozen, self._frame_vectors()))
+        return frame
+
+    def _frame_vectors(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         backward = self.eye - self.target
         distance = v.vector_length(backward)
         if distance == 0.0:

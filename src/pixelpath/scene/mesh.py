@@ -427,8 +427,9 @@ def _given_colors(colors: Any, vertex_count: int) -> np.ndarray:
 def bounding_box(points: np.ndarray) -> np.ndarray:
     """Return the (2, 3) minimum and maximum corners of (N, 3) ``points``.
 
-    Column by column: NumPy's ``points.min(axis=0)`` on an (N, 3) array is some ten times
-    slower than three column minima, with the same values.
+    On the columns made contiguous: NumPy's ``points.min(axis=0)`` on an (N, 3) array is some
+    ten times slower than three column minima, with the same values, and the minima of
+    strided columns twice those of a copy laid out column by column.
 
     Examples
     --------
@@ -436,8 +437,8 @@ def bounding_box(points: np.ndarray) -> np.ndarray:
     >>> bounding_box(np.array([[0.0, 5.0, 1.0], [2.0, -1.0, 1.0]])).tolist()
     [[0.0, -1.0, 1.0], [2.0, 5.0, 1.0]]
     """
-    columns = points.T
-    return np.array([[c.min() for c in columns], [c.max() for c in columns]])
+    columns = np.ascontiguousarray(points.T)
+    return np.stack([columns.min(axis=1), columns.max(axis=1)])
 
 
 def moved(points: np.ndarray, linear: np.ndarray, shift: np.ndarray) -> np.ndarray:
