@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import dataclasses
 import math
+import pickle
 
 import numpy as np
 import pytest
@@ -33,6 +35,18 @@ def test_basis_is_orthonormal_and_right_handed_for_a_tilted_up():
     frame = np.stack([u, v, w])
     np.testing.assert_allclose(frame @ frame.T, np.eye(3), atol=1e-14)
     np.testing.assert_allclose(np.cross(u, v), w, atol=1e-14)
+
+
+def test_the_kept_basis_is_read_only_and_follows_a_changed_camera():
+    camera = Camera(eye=(5, 0, 0), target=(0, 0, 0))
+    u = camera.basis()[0]
+    with pytest.raises(ValueError, match="read-only"):
+        u[0] = 1.0
+    moved = dataclasses.replace(camera, eye=(0, 0, 5))
+    np.testing.assert_array_equal(np.stack(moved.basis()), np.eye(3))
+    assert camera.basis()[2].tolist() == [1.0, 0.0, 0.0]  # the first camera's, unchanged
+    copy = pickle.loads(pickle.dumps(camera))
+    np.testing.assert_array_equal(np.stack(copy.basis()), np.stack(camera.basis()))
 
 
 def test_view_matrix_sends_eye_to_origin_and_target_down_minus_z():
