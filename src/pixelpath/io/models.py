@@ -94,6 +94,10 @@ glTF ``emissiveFactor``       ``emission`` = the factor × ``KHR_materials_emiss
 MTL ``Ke``                    ``emission`` (decoded from sRGB)
 glTF ``emissiveTexture``,     not drawn, and then neither is the emitted colour, which only
 MTL ``map_Ke``                scales it: a warning names the material
+glTF ``normalTexture``,       not used (the notes' model has no such maps): the surface is
+``occlusionTexture``,         lit with its interpolated normals and its material's metallic
+``metallicRoughnessTexture``  and roughness factors; other PBR extensions (transmission,
+                              clearcoat, sheen, ...) are not used either
 ``KHR_materials_unlit``       ``ka = 1 / AMBIENT`` (5), ``kd = ks = 0``: the surface colour
 (glTF)                        under the model's own ambient light (0.2) and no other light,
                               as the extension asks (a scene file with another ``ambient``
