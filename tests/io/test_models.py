@@ -368,13 +368,44 @@ def test_gltf_emission_is_the_factor_times_the_strength(tmp_path, strength, expe
     assert mesh.material.emission.tolist() == expected
 
 
-def test_an_emission_texture_is_named_as_not_drawn(tmp_path):
-    gltf = quad_gltf(image=_png(PICTURE))
-    gltf["materials"][0].update(emissiveFactor=[1.0, 1.0, 1.0], emissiveTexture={"index": 0})
-    with pytest.warns(UserWarning, match=r"model\.gltf: material 'm' emits light through an "
-                                         r"emissiveTexture .*not drawn"):
+def test_a_gltf_emission_texture_is_drawn(tmp_path):
+    """The quad's picture as its emissiveTexture too, emissiveFactor (1, 0.5, 1): in the dark
+    the quad shows the factor times the picture, its blue corner at the world's (0, 0, 0),
+    red at (0, 1, 0), as the base colour's texture coordinates put them."""
+    gltf = quad_gltf(image=_png(PICTURE), samplers=[{"magFilter": 9728, "minFilter": 9728}])
+    gltf["textures"][0]["sampler"] = 0  # the nearest texel: each corner's colour exactly
+    gltf["materials"][0].update(emissiveFactor=[1.0, 0.5, 1.0], emissiveTexture={"index": 0})
+    scene = read_model(write(tmp_path, gltf))
+    (mesh,) = scene.objects
+    assert mesh.material.emission.tolist() == [1.0, 0.5, 1.0]
+    np.testing.assert_array_equal(mesh.material.emission_texture.levels[0][..., :3], PICTURE)
+    camera = pp.Camera(eye=(0.5, 0.5, 2), target=(0.5, 0.5, 0), width=40, height=40, fov=30,
+                       near=0.1, far=10)
+    dark = dataclasses.replace(scene, camera=camera, lights=[], ambient=0.0)
+    image = pp.render(dark)
+    np.testing.assert_allclose(image.rgb[30, 10], [0.0, 0.0, 1.0], atol=1e-6)  # bottom-left
+    np.testing.assert_allclose(image.rgb[10, 10], [1.0, 0.0, 0.0], atol=1e-6)  # top-left
+    np.testing.assert_allclose(image.rgb[10, 30], [0.0, 0.5, 0.0], atol=1e-6)  # top-right
+
+
+@pytest.mark.parametrize(
+    ("reference", "message"),
+    [
+        ({"index": 0, "texCoord": 1}, "reading texture coordinates TEXCOORD_1 where the base "
+                                      "colour reads TEXCOORD_0"),
+        ({"index": 0, "extensions": {"KHR_texture_transform": {"scale": [2, 2]}}},
+         "with a KHR_texture_transform other than the base colour's"),
+    ],
+)
+def test_an_emission_texture_read_otherwise_is_named_as_not_drawn(tmp_path, reference, message):
+    gltf = quad_gltf(image=_png(PICTURE), extensionsUsed=["KHR_texture_transform"])
+    gltf["materials"][0].update(emissiveFactor=[1.0, 1.0, 1.0], emissiveTexture=reference)
+    with pytest.warns(UserWarning, match=rf"model\.gltf: material 'm' emits light "
+                                         rf"\(emissiveFactor .*\) through an emissiveTexture "
+                                         rf"{message}, which is not drawn"):
         (mesh,) = read_model(write(tmp_path, gltf)).objects
     assert not mesh.material.emits  # the factor alone would light the quad evenly
+    assert mesh.material.emission_texture is None
 
 
 @pytest.mark.parametrize("texture", [False, True])
@@ -384,8 +415,8 @@ def test_mtl_emission_is_ke_decoded_from_srgb(tmp_path, texture):
     (tmp_path / "glow.obj").write_text("mtllib glow.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\n"
                                        "usemtl glow\nf 1 2 3\n")
     if texture:
-        with pytest.warns(UserWarning, match=r"glow\.obj: material 'glow' emits light through "
-                                             r"a map_Ke texture"):
+        with pytest.warns(UserWarning, match=r"glow\.obj: material 'glow' emits light \(Ke "
+                                             r".*\) through a map_Ke texture, which is not"):
             (mesh,) = read_model(tmp_path / "glow.obj").objects
         assert not mesh.material.emits
     else:

@@ -37,23 +37,25 @@ lookup = st.tuples(
 
 
 @settings(max_examples=150, deadline=None)
-@given(st.lists(lookup, min_size=1, max_size=40))
-def test_a_rows_lookups_equal_the_lookups_one_by_one(lookups):
+@given(st.lists(lookup, min_size=1, max_size=40), st.booleans())
+def test_a_rows_lookups_equal_the_lookups_one_by_one(lookups, emission):
     # Rows that start with a base-level lookup take the loop of their own for those, the
     # others the general one; either way each pixel's colour is the product, bit for bit, of
     # its surface colour and the texture sampled at its footprint (the ray tracer's lookup).
+    # The emission textures' lookups are listed after the row's room for the surface's.
     width = len(lookups)
+    first = width if emission else 0
     batch = _kernels._new_batch(width)
     for q, (texture, u, v, squared) in enumerate(lookups):
-        batch.lookups[:, q] = u, v, squared
-        batch.lookup_textures[q] = texture
-        batch.lookup_columns[q] = width - 1 - q  # the pixels in another order than the lookups
+        batch.lookups[:, first + q] = u, v, squared
+        batch.lookup_textures[first + q] = texture
+        batch.lookup_columns[first + q] = width - 1 - q  # the pixels in another order
     colours = np.random.default_rng(width).uniform(0.2, 1.0, (width, 3))
     expected = colours.copy()
     for q, (texture, u, v, squared) in enumerate(lookups):
         sampled = tk.sample(TABLES, texture, u, v, math.sqrt(squared))
         expected[width - 1 - q] *= sampled[:3]
 
-    _kernels._apply_lookups(np.intp(width), TABLES, batch, colours)
+    _kernels._apply_lookups(np.intp(first), np.intp(first + width), TABLES, batch, colours)
 
     assert colours.tobytes() == expected.tobytes()

@@ -403,8 +403,23 @@ def test_surface_tables_pack_each_texture_once():
     assert len(tables.texels) == 21
     assert tables.textures.tolist() == [[0, 3, tk.NEAREST, tk.REPEAT],
                                         [0, 3, tk.BILINEAR, tk.MIRROR]]
-    assert tables.objects.tolist() == [[0, 0], [1, 1], [-1, 0], [0, 0]]
+    assert tables.objects.tolist() == [[0, 0, -1], [1, 1, -1], [-1, 0, -1], [0, 0, -1]]
     assert tables.decode[128] == pytest.approx(srgb_to_linear(128 / 255))
+
+
+def test_surface_tables_pack_emission_textures_where_they_show():
+    """An emission texture shares the rows of the same picture read the same way; it is left
+    out without texture coordinates, or where the material emits nothing."""
+    shared, glow = Texture(np.ones((4, 4, 3))), Texture(np.ones((2, 2, 3)))
+    both = Material(texture=shared, emission=(1, 1, 1), emission_texture=shared)
+    own = Material(emission=(1, 0, 0), emission_texture=glow)
+    dark = Material(emission_texture=glow)  # emission (0, 0, 0)
+    tables = surface_tables([Mesh(QUAD, [[0, 1, 2, 3]], both, uv=QUAD_UV),
+                             Mesh(QUAD, [[0, 1, 2, 3]], own, uv=QUAD_UV),
+                             Mesh(QUAD, [[0, 1, 2, 3]], own),
+                             Mesh(QUAD, [[0, 1, 2, 3]], dark, uv=QUAD_UV)])
+    assert tables.objects.tolist() == [[0, 0, 0], [-1, 0, 1], [-1, 0, -1], [-1, 0, -1]]
+    assert tables.levels.tolist() == [[0, 4, 4], [16, 2, 2], [20, 1, 1], [21, 2, 2], [25, 1, 1]]
 
 
 def test_packed_texels_are_the_levels_and_shared_without_a_copy():

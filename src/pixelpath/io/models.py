@@ -92,8 +92,13 @@ glTF ``doubleSided``          ``double_sided``
 glTF ``emissiveFactor``       ``emission`` = the factor × ``KHR_materials_emissive_strength``
                               (1 when absent), linear
 MTL ``Ke``                    ``emission`` (decoded from sRGB)
-glTF ``emissiveTexture``,     not drawn, and then neither is the emitted colour, which only
-MTL ``map_Ke``                scales it: a warning names the material
+glTF ``emissiveTexture``      ``emission_texture``, which scales ``emission`` point by
+                              point, read through the part's texture coordinates (the base
+                              colour's set and transform) with the base colour's sampler; one
+                              that reads another set or is transformed otherwise is not
+                              drawn, nor the colour it scales: a warning names the material
+MTL ``map_Ke``                not drawn, nor ``Ke``, which it scales: a warning names the
+                              material
 glTF ``normalTexture``,       not used (the notes' model has no such maps): the surface is
 ``occlusionTexture``,         lit with its interpolated normals and its material's metallic
 ``metallicRoughnessTexture``  and roughness factors; other PBR extensions (transmission,
@@ -1187,15 +1192,24 @@ def _base_color_sets(path: Path, gltf: dict) -> list[dict] | None:
 def _texture_set(material: dict) -> int:
     """Return the texture coordinate set a glTF material's base-colour texture reads."""
     pbr = material.get("pbrMetallicRoughness")
-    ref = pbr.get("baseColorTexture") if isinstance(pbr, dict) else None
+    return _reference_set(pbr.get("baseColorTexture") if isinstance(pbr, dict) else None)
+
+
+def _reference_set(ref: Any) -> int:
+    """Return the texture coordinate set a glTF texture reference reads (0 for none)."""
     if not isinstance(ref, dict):
         return 0
-    extensions = ref.get("extensions")
-    transform = extensions.get("KHR_texture_transform") if isinstance(extensions, dict) else None
+    transform = _reference_transform(ref)
     number = ref.get("texCoord", 0)
     if isinstance(transform, dict) and "texCoord" in transform:
         number = transform["texCoord"]
     return number if _is_int(number) and number > 0 else 0
+
+
+def _reference_transform(ref: Any) -> Any:
+    """Return a glTF texture reference's ``KHR_texture_transform`` (None when it has none)."""
+    extensions = ref.get("extensions") if isinstance(ref, dict) else None
+    return extensions.get("KHR_texture_transform") if isinstance(extensions, dict) else None
 
 
 def _misread_accessors(path: Path, gltf: dict) -> dict[int, bool]:
@@ -1522,9 +1536,7 @@ def _texture_transformed(uv: np.ndarray, visual: Any, gltf: dict) -> np.ndarray:
     used = gltf.get("extensionsUsed")
     if not isinstance(used, list) or "KHR_texture_transform" not in used:
         return uv  # glTF lists every extension a file uses
-    ref = _base_color_texture(gltf, getattr(visual, "material", None))
-    extensions = ref.get("extensions") if isinstance(ref, dict) else None
-    transform = extensions.get("KHR_texture_transform") if isinstance(extensions, dict) else None
+    transform = _reference_transform(_base_color_texture(gltf, getattr(visual, "material", None)))
     if not isinstance(transform, dict):
         return uv
     ox, oy = _numbers(transform, "offset", (0.0, 0.0))
@@ -1660,8 +1672,9 @@ def _pbr_material(path: Path, source: Any, gltf: dict | None, shared: dict) -> M
     factor = source.emissiveFactor
     if factor is not None:
         factor = np.asarray(factor, dtype=float) * _emissive_strength(gltf, source)
-    emission = _emission(path, source.name, ("emissiveFactor", factor),
-                         None if source.emissiveTexture is None else "an emissiveTexture")
+    glow = _texture(path, source.emissiveTexture, shared, keep_alpha=False)
+    unread = None if glow is None else _unread_emission(gltf, source)
+    emission = _emission(path, source.name, ("emissiveFactor", factor), unread)
     return Material(
         color=rgba[:3],
         ka=ka,
@@ -1677,16 +1690,39 @@ def _pbr_material(path: Path, source: Any, gltf: dict | None, shared: dict) -> M
         alpha=_fraction(rgba[3]) if mode == "MASK" else 1.0,
         alpha_cutoff=alpha_cutoff,
         emission=emission,
+        emission_texture=None if unread else glow,
     )
 
 
-def _emission(path: Path, name: Any, color: tuple[str, Any], picture: str | None) -> np.ndarray:
+def _unread_emission(gltf: dict | None, source: Any) -> str | None:
+    """Say why a glTF emissiveTexture cannot be drawn; None when it can.
+
+    A part has one set of texture coordinates, the base colour's (its ``texCoord``, moved by
+    its ``KHR_texture_transform``): an emissiveTexture reading another set, or transformed
+    otherwise, would be read in the wrong places.
+    """
+    index = _gltf_material_index(gltf, getattr(source, "name", None))
+    if index is None:
+        return None  # no (or no single) glTF material of that name: set 0, as trimesh reads
+    material = gltf["materials"][index]
+    glow = material.get("emissiveTexture")
+    pbr = material.get("pbrMetallicRoughness")
+    base = pbr.get("baseColorTexture") if isinstance(pbr, dict) else None
+    if _reference_set(glow) != _texture_set(material):
+        return (f"an emissiveTexture reading texture coordinates TEXCOORD_{_reference_set(glow)}"
+                f" where the base colour reads TEXCOORD_{_texture_set(material)}")
+    if _reference_transform(glow) != _reference_transform(base):
+        return "an emissiveTexture with a KHR_texture_transform other than the base colour's"
+    return None
+
+
+def _emission(path: Path, name: Any, color: tuple[str, Any], unread: str | None) -> np.ndarray:
     """Return the light a file's material emits (linear r, g, b), zero when it emits none.
 
     ``color`` is the file's key for the emitted colour and its value (None when absent), in
-    linear light; ``picture`` names the material's emission texture (None when it has none).
-    An emission texture is not drawn, and then neither is the colour, which only scales it
-    (a factor of 1 would light the whole surface evenly): a warning says so.
+    linear light; ``unread`` names an emission texture that cannot be drawn (None when there
+    is none, or it can). Then neither is the colour, which only scales it (a factor of 1
+    would light the whole surface evenly): a warning says so.
     """
     key, value = color
     try:
@@ -1695,13 +1731,12 @@ def _emission(path: Path, name: Any, color: tuple[str, Any], picture: str | None
     except (TypeError, ValueError):
         usable = False
     emitted = np.maximum(emitted, 0.0) if usable else np.zeros(3)
-    if picture is None:
+    if unread is None:
         return emitted
     if emitted.any():
         warnings.warn(
-            f"{path}: material {name!r} emits light through {picture} ({key} "
-            f"{emitted.tolist()}), which is not drawn: pixelpath draws an emitted colour, not "
-            "an emission texture",
+            f"{path}: material {name!r} emits light ({key} {emitted.tolist()}) through "
+            f"{unread}, which is not drawn, nor the colour it scales",
             stacklevel=3,
         )
     return np.zeros(3)

@@ -74,6 +74,7 @@ from pixelpath.raster._setup_kernels import (
     setup_triangles,
 )
 from pixelpath.scene._texture_kernels import (
+    GLOW,
     HAS_COLORS,
     NEAREST,
     TEXTURE,
@@ -113,12 +114,14 @@ class PhongBatch(NamedTuple):
     denominators: np.ndarray  # (SHADE_BATCH,) interpolated 1/w: points are numerators first
     columns: np.ndarray  # (SHADE_BATCH,) intp: the pixel column of each gathered pixel
     row_colors: np.ndarray  # (w, 3) surface colour of a row's pixels of coloured objects
-    lookups: np.ndarray  # (3, w) u, v and squared footprint of a row's texture lookups, in order
-    lookup_columns: np.ndarray  # (w,) intp: the pixel column of each lookup
-    lookup_textures: np.ndarray  # (w,) intp: the texture each lookup reads
-    lookup_levels: np.ndarray  # (w,) intp: the mip level each lookup reads first
-    lookup_taps: np.ndarray  # (4, w) intp: the texels of a base-level lookup (-1: another kind)
-    lookup_fractions: np.ndarray  # (2, w) the base-level lookups' blend fractions (fx, fy)
+    row_glow: np.ndarray  # (w, 3) emitted light of a row's pixels of emission-textured objects
+    # A row's texture lookups, in order: the surface colours' from 0, the emission's from w.
+    lookups: np.ndarray  # (3, 2w) u, v and squared footprint of each lookup
+    lookup_columns: np.ndarray  # (2w,) intp: the pixel column of each lookup
+    lookup_textures: np.ndarray  # (2w,) intp: the texture each lookup reads
+    lookup_levels: np.ndarray  # (2w,) intp: the mip level each lookup reads first
+    lookup_taps: np.ndarray  # (4, 2w) intp: the texels of a base-level lookup (-1: another kind)
+    lookup_fractions: np.ndarray  # (2, 2w) the base-level lookups' blend fractions (fx, fy)
 
 
 class Surfaces(NamedTuple):
@@ -209,12 +212,13 @@ def _new_batch(width):
         np.empty(SHADE_BATCH),
         np.empty(SHADE_BATCH, dtype=np.intp),
         np.empty((width, 3)),
-        np.empty((3, width)),
-        np.empty(width, dtype=np.intp),
-        np.empty(width, dtype=np.intp),
-        np.empty(width, dtype=np.intp),
-        np.empty((4, width), dtype=np.intp),
-        np.empty((2, width)),
+        np.empty((width, 3)),
+        np.empty((3, 2 * width)),
+        np.empty(2 * width, dtype=np.intp),
+        np.empty(2 * width, dtype=np.intp),
+        np.empty(2 * width, dtype=np.intp),
+        np.empty((4, 2 * width), dtype=np.intp),
+        np.empty((2, 2 * width)),
     )
 
 
@@ -291,7 +295,8 @@ def _shade_row(j, x0, y0, ids, keys, surfaces, out, batch):
     glow = s.emission.shape[0] > 0  # some object emits light
     if s.uv.shape[0] > 0 or s.vertex_colors.shape[0] > 0:
         _row_surface_colors(j, x0, ids, s.info, s.setup, s.triangles, s.uv, s.vertex_colors,
-                            s.tables, s.materials, s.coloured, batch.row_colors, batch)
+                            s.tables, s.materials, s.emission, s.coloured, batch.row_colors,
+                            batch)
     for i in range(ids.shape[0]):
         t = ids[i]
         if t < 0:
@@ -311,7 +316,7 @@ def _shade_row(j, x0, y0, ids, keys, surfaces, out, batch):
                     if coloured:
                         value += s.flat_colors[t, 3 + channel]
                     if glow:
-                        value += s.emission[obj, channel]
+                        value += _emitted(s, batch.row_glow, obj, i, channel)
                     rgb[i, channel] = _clamp01(value)
                 continue
             b0, b1, b2 = perspective_weights(s.setup, t, x, y)
@@ -323,7 +328,7 @@ def _shade_row(j, x0, y0, ids, keys, surfaces, out, batch):
                 if coloured:
                     value += _mix(s.colors, a, b, c, b0, b1, b2, first + 3 + channel)
                 if glow:
-                    value += s.emission[obj, channel]
+                    value += _emitted(s, batch.row_glow, obj, i, channel)
                 rgb[i, channel] = _clamp01(value)
             continue
         if count == SHADE_BATCH or (count > 0 and obj != batch_object):
@@ -351,6 +356,14 @@ def _shade_row(j, x0, y0, ids, keys, surfaces, out, batch):
         count += 1
     if count > 0:
         _shade_batch(count, batch, batch_object, s, rgb, normal)
+
+
+@njit(inline="always")
+def _emitted(surfaces, row_glow, obj, i, channel):
+    """Light object ``obj`` emits at pixel i of a row: its emission, or as its texture scales it."""
+    if surfaces.tables.objects[obj, GLOW] >= 0:
+        return row_glow[i, channel]
+    return surfaces.emission[obj, channel]
 
 
 @njit(inline="always")
@@ -437,7 +450,7 @@ def texture_at(line, x):
 
 @njit(refcount=False)
 def _row_surface_colors(j, x0, ids, info, setup, triangles, uv, vertex_colors, tables,
-                        materials, coloured, out, batch):
+                        materials, emission, coloured, out, batch):
     """Write the surface colour (r, g, b) of row j's pixels that show a coloured object.
 
     One call per row, compiled without reference counting: the lookups' arrays are handed
@@ -451,7 +464,9 @@ def _row_surface_colors(j, x0, ids, info, setup, triangles, uv, vertex_colors, t
     weights and texture coordinates taken from each triangle's lines along the row (equal up
     to rounding to those of the pixel's own perspective weights); split so, each loop's
     pixels are independent of each other, and the processor overlaps them (a fifth less time
-    a textured pixel of the bunny than one loop doing it all).
+    a textured pixel of the bunny than one loop doing it all). A row that shows an object
+    whose emission texture scales its ``emission`` then gets its emitted light
+    (:func:`_row_glow`).
     """
     y = j + 0.5
     lookups, lookup_columns, lookup_textures = (
@@ -460,7 +475,7 @@ def _row_surface_colors(j, x0, ids, info, setup, triangles, uv, vertex_colors, t
     count = np.intp(0)  # not a literal 0: that would compile a second _apply_lookups
     line_triangle = -1
     obj = texture = a = b = c = np.intp(0)
-    painted = False
+    painted = glowing = False
     r = g = bl = 0.0
     numerators = (0.0,) * 6
     line = (0.0,) * 9
@@ -471,6 +486,7 @@ def _row_surface_colors(j, x0, ids, info, setup, triangles, uv, vertex_colors, t
         if t != line_triangle:
             # What the run of this triangle's pixels shares, looked up once: the compiled
             # loop reloads a table entry at every pixel, as the stores may have changed it.
+            glowing = glowing or tables.objects[info[t, 0], GLOW] >= 0
             if not coloured[info[t, 0]]:
                 continue
             line_triangle = t
@@ -501,7 +517,48 @@ def _row_surface_colors(j, x0, ids, info, setup, triangles, uv, vertex_colors, t
             lookup_textures[count] = texture
             count += 1
     if count > 0:
-        _apply_lookups(count, tables, batch, out)
+        _apply_lookups(np.intp(0), count, tables, batch, out)
+    if glowing:
+        _row_glow(j, x0, ids, info, setup, triangles, uv, tables, emission, batch)
+
+
+@njit(refcount=False)
+def _row_glow(j, x0, ids, info, setup, triangles, uv, tables, emission, batch):
+    """Write into ``batch.row_glow`` the light row j's emission-textured pixels give off.
+
+    The object's ``emission`` × its emission texture, looked up at the pixel's texture
+    coordinates and footprint as the surface colour's texture is; the lookups are listed
+    after the row's room for the surface colour's. A pass of its own, made only in rows that
+    show such an object, so that the surface colours' loop stays as it was.
+    """
+    y = j + 0.5
+    width = ids.shape[0]
+    count = width
+    line_triangle = -1
+    obj = glow = np.intp(0)
+    line = (0.0,) * 9
+    for i in range(width):
+        t = ids[i]
+        if t < 0:
+            continue
+        if t != line_triangle:
+            glow = tables.objects[info[t, 0], GLOW]
+            if glow < 0:
+                continue
+            line_triangle = t
+            obj = info[t, 0]
+            line = texture_line(setup, t, y, uv, triangles[t, 0], triangles[t, 1],
+                                triangles[t, 2])
+        u, v, dudx, dvdx, dudy, dvdy = texture_at(line, (x0 + i) + 0.5)
+        batch.lookups[0, count] = u
+        batch.lookups[1, count] = v
+        batch.lookups[2, count] = footprint_squared(tables, glow, dudx, dvdx, dudy, dvdy)
+        batch.lookup_columns[count] = i
+        batch.lookup_textures[count] = glow
+        count += 1
+        for channel in range(3):
+            batch.row_glow[i, channel] = emission[obj, channel]
+    _apply_lookups(width, count, tables, batch, batch.row_glow)
 
 
 # A kernel of its own, called once per row. When Numba still copied the lookups (sample_level)
@@ -512,8 +569,8 @@ def _row_surface_colors(j, x0, ids, info, setup, triangles, uv, vertex_colors, t
 # general lookup only: a second, for rows that skip the base-level loop, made the group take
 # 20 s to compile instead of 17.
 @njit(refcount=False)
-def _apply_lookups(count, tables, batch, out):
-    """Make the row's listed texture lookups and multiply their colours into ``out``'s pixels.
+def _apply_lookups(first, stop, tables, batch, out):
+    """Make the row's listed texture lookups first..stop-1; multiply their colours into ``out``.
 
     First the lookups' mip levels. Then, in a row whose first lookup is of the commonest kind,
     one bilinear blend on the base level of the row's texture (a magnified texture, as on most
@@ -525,20 +582,21 @@ def _apply_lookups(count, tables, batch, out):
     """
     lookups, levels, textures = batch.lookups, batch.lookup_levels, batch.lookup_textures
     taps, fractions = batch.lookup_taps, batch.lookup_fractions
-    for q in range(count):
+    for q in range(first, stop):
         levels[q], lookups[2, q] = mip_level_squared(tables, textures[q], lookups[2, q])
-    texture = textures[0]
-    first, wrap = tables.textures[texture, 0], tables.textures[texture, 3]
-    start, width, height = tables.levels[first, 0], tables.levels[first, 1], tables.levels[first, 2]
-    common = tables.textures[texture, 2] != NEAREST and levels[0] == 0 and lookups[2, 0] == 0.0
-    for q in range(count):
+    texture = textures[first]
+    base, wrap = tables.textures[texture, 0], tables.textures[texture, 3]
+    start, width, height = tables.levels[base, 0], tables.levels[base, 1], tables.levels[base, 2]
+    common = (tables.textures[texture, 2] != NEAREST and levels[first] == 0
+              and lookups[2, first] == 0.0)
+    for q in range(first, stop):
         if common and textures[q] == texture and levels[q] == 0 and lookups[2, q] == 0.0:
             (taps[0, q], taps[1, q], taps[2, q], taps[3, q], fractions[0, q],
              fractions[1, q]) = bilinear_taps(start, width, height, wrap, lookups[0, q],
                                               lookups[1, q])
         else:
             taps[0, q] = -1  # a texel index is never negative
-    for q in range(count):
+    for q in range(first, stop):
         if taps[0, q] >= 0:
             color = blend_taps(tables, taps[0, q], taps[1, q], taps[2, q], taps[3, q],
                                fractions[0, q], fractions[1, q])
@@ -669,7 +727,7 @@ def _shade_batch(count, batch, obj, surfaces, rgb_row, normal_row):
         for channel in range(3):
             value = batch.shaded[channel, q]
             if glow:
-                value += surfaces.emission[obj, channel]
+                value += _emitted(surfaces, batch.row_glow, obj, i, channel)
             rgb_row[i, channel] = _clamp01(value)
             normal_row[i, channel] = batch.normals[channel, q]
 

@@ -23,7 +23,7 @@ import numpy as np
 
 from pixelpath._validate import frozen
 from pixelpath.scene import Box, Camera, Mesh, Plane, Scene, Sphere
-from pixelpath.scene._texture_kernels import HAS_COLORS, TEXTURE, SurfaceTables
+from pixelpath.scene._texture_kernels import GLOW, HAS_COLORS, TEXTURE, SurfaceTables
 from pixelpath.scene.texture import surface_tables
 
 __all__ = ["SceneGeometry", "scene_geometry"]
@@ -330,7 +330,8 @@ def _build_geometry(objects: tuple, camera: Camera) -> SceneGeometry:
         materials=_stacked([m.material.packed()[None] for m in meshes], (0, 8)),
         meshes=tuple(meshes),
         surfaces=surfaces,
-        uv=_per_vertex(meshes, "uv", surfaces.objects[:, TEXTURE] >= 0, 0.0, 2),
+        uv=_per_vertex(meshes, "uv", (surfaces.objects[:, TEXTURE] >= 0)
+                       | (surfaces.objects[:, GLOW] >= 0), 0.0, 2),
         colors=_per_vertex(meshes, "colors", surfaces.objects[:, HAS_COLORS] != 0, 1.0, 4),
         double_sided=np.array([m.material.double_sided for m in meshes], dtype=np.bool_),
         emission=_stacked([m.material.emission[None] for m in meshes], (0, 3))

@@ -6,8 +6,9 @@ plane; ``shadow_start`` traces a shadow ray through the spheres and planes
 (``analytic_let_through``; the triangles are the caller's to search); ``transmission`` shares
 what goes on between the reflected and the refracted ray (Snell's law, total internal
 reflection, Schlick's Fresnel term); ``_coloured_material`` gives a hit's material its surface
-colour there. Their callers are the eye rays' kernels (:mod:`pixelpath.raytrace._primary_kernels`)
-and the row loop (:mod:`pixelpath.raytrace._whitted_kernels`).
+colour there, and ``textured_emission`` the light its emission texture gives off. Their callers
+are the eye rays' kernels (:mod:`pixelpath.raytrace._primary_kernels`) and the row loop
+(:mod:`pixelpath.raytrace._whitted_kernels`).
 """
 
 from __future__ import annotations
@@ -18,7 +19,7 @@ from pixelpath._jit import njit
 from pixelpath.raytrace._hit_kernels import plane_t, refract_direction, sphere_roots, sphere_t
 from pixelpath.raytrace._records import PLANE, SPHERE, TRANSPARENCY
 from pixelpath.raytrace._traversal_kernels import MISS
-from pixelpath.scene._texture_kernels import surface_color
+from pixelpath.scene._texture_kernels import GLOW, sample, surface_color, texel_footprint
 
 # These helpers are inlined into their callers (see pixelpath._jit): by LLVM (forceinline) the
 # larger ones called from several places, by Numba the others, whose conversion saved no
@@ -230,19 +231,12 @@ def _schlick(cos_i, cos_t, eta, ior):
 def _coloured_material(scene, out, obj, index, w1, w2, px, py, pz, nx, ny, nz, dx, dy, dz):
     """Write object ``obj``'s material with the surface colour at the hit into ``out``.
 
-    The hit is at barycentric (w1, w2) of triangle ``index``. The texture is filtered for the
-    pixel's footprint there: the cone's width at the hit's distance from the eye, stretched by
-    1 / cos of the angle between ray and normal, in uv units through the triangle's texel
-    scale.
+    The hit is at barycentric (w1, w2) of triangle ``index``; the texture is filtered for
+    the pixel's footprint there (:func:`_hit_span`).
     """
     for field in range(out.shape[0]):
         out[field] = scene.materials[obj, field]
-    eye = scene.camera
-    distance = math.sqrt((px - eye[0]) ** 2 + (py - eye[1]) ** 2 + (pz - eye[2]) ** 2)
-    width = scene.pixel_cone[0] + scene.pixel_cone[1] * distance
-    length = math.sqrt(dx * dx + dy * dy + dz * dz)
-    cosine = abs(nx * dx + ny * dy + nz * dz) / length if length > 0.0 else 1.0
-    span = scene.tri_texel_scale[index] * width / max(cosine, 1e-3)
+    span = _hit_span(scene, index, px, py, pz, nx, ny, nz, dx, dy, dz)
     first = 3 * index  # the triangle's corners' rows of tri_uv and tri_colors
     r, g, b, _ = surface_color(
         scene.tables, scene.materials, obj, scene.tri_uv, scene.tri_colors, first, first + 1,
@@ -250,6 +244,40 @@ def _coloured_material(scene, out, obj, index, w1, w2, px, py, pz, nx, ny, nz, d
     )
     out[0], out[1], out[2] = r, g, b
     return out
+
+
+@njit(inline="always")
+def textured_emission(scene, emission, obj, index, w1, w2, px, py, pz, nx, ny, nz, dx, dy,
+                      dz):
+    """Light object ``obj`` gives off at the hit: ``emission`` (r, g, b) × its emission texture.
+
+    The texture is read at the hit's texture coordinates, filtered for the pixel's footprint
+    there (:func:`_hit_span`), as the surface colour's is.
+    """
+    texture = scene.tables.objects[obj, GLOW]
+    span = _hit_span(scene, index, px, py, pz, nx, ny, nz, dx, dy, dz)
+    first = 3 * index
+    w0, uv = 1.0 - w1 - w2, scene.tri_uv
+    u = w0 * uv[first, 0] + w1 * uv[first + 1, 0] + w2 * uv[first + 2, 0]
+    v = w0 * uv[first, 1] + w1 * uv[first + 1, 1] + w2 * uv[first + 2, 1]
+    footprint = texel_footprint(scene.tables, texture, span, 0.0, 0.0, span)
+    r, g, b, _ = sample(scene.tables, texture, u, v, footprint)
+    return emission[0] * r, emission[1] * g, emission[2] * b
+
+
+@njit(inline="always")
+def _hit_span(scene, index, px, py, pz, nx, ny, nz, dx, dy, dz):
+    """How far the texture coordinates move across the pixel at a hit on triangle ``index``.
+
+    The cone's width at the hit's distance from the eye, stretched by 1 / cos of the angle
+    between ray and normal, in uv units through the triangle's texel scale.
+    """
+    eye = scene.camera
+    distance = math.sqrt((px - eye[0]) ** 2 + (py - eye[1]) ** 2 + (pz - eye[2]) ** 2)
+    width = scene.pixel_cone[0] + scene.pixel_cone[1] * distance
+    length = math.sqrt(dx * dx + dy * dy + dz * dz)
+    cosine = abs(nx * dx + ny * dy + nz * dz) / length if length > 0.0 else 1.0
+    return scene.tri_texel_scale[index] * width / max(cosine, 1e-3)
 
 
 @njit(inline="always")

@@ -105,10 +105,11 @@ from pixelpath.raytrace._surface_kernels import (
     hit_geometry,
     nearest_analytic,
     shadow_start,
+    textured_emission,
     transmission,
 )
 from pixelpath.raytrace._traversal_kernels import MISS, any_triangle, closest_triangle
-from pixelpath.scene._texture_kernels import colored
+from pixelpath.scene._texture_kernels import GLOW, colored
 
 
 @njit(refcount=False)
@@ -395,8 +396,14 @@ def render_rows(rows, scene, settings, work, out, x0, y0, rgb, image_depth, obje
                                 ambient, settings.blinn, shaded)
                     if (materials[obj, EMISSION] + materials[obj, EMISSION + 1]
                             + materials[obj, EMISSION + 2] > 0.0):
-                        for channel in range(3):  # light the surface gives off itself
-                            shaded[channel] += materials[obj, EMISSION + channel]
+                        # light the surface gives off itself, scaled by its texture if any
+                        emitted = (materials[obj, EMISSION], materials[obj, EMISSION + 1],
+                                   materials[obj, EMISSION + 2])
+                        if hit_kind == TRIANGLE and scene.tables.objects[obj, GLOW] >= 0:
+                            emitted = textured_emission(scene, emitted, obj, index, w1, w2,
+                                                        px, py, pz, nx, ny, nz, dx, dy, dz)
+                        for channel in range(3):
+                            shaded[channel] += emitted[channel]
                     r += weight * shaded[0]
                     g += weight * shaded[1]
                     b += weight * shaded[2]

@@ -524,9 +524,13 @@ def _describe_node(scene: Scene, node: RayNode, indent: str) -> list[str]:
                 f"{label}; shadow ray {shade}: diffuse {_v(test.diffuse)}, "
                 f"specular {_v(test.specular)}"
             )
-    material = scene.objects[node.object].material
+    hit = scene.objects[node.object]
+    material = hit.material
     if material.emits:
-        lines.append(f"{pad}emission E = {_v(material.emission)} (added to I_local)")
+        scaled = (" × the emission texture there"
+                  if material.emission_texture is not None and getattr(hit, "uv", None) is not None
+                  else "")
+        lines.append(f"{pad}emission E = {_v(material.emission)}{scaled} (added to I_local)")
     lines.append(f"{pad}I_local = {_v(node.local)}")
     if node.total_internal_reflection:
         lines.append(f"{pad}total internal reflection (η = {node.eta:.4g}): kt goes to kr")

@@ -93,13 +93,13 @@ def scene_triangles(scene: Scene) -> SceneTriangles:
 
 
 def _build_triangles(objects: tuple[Any, ...]) -> SceneTriangles:
-    from pixelpath.scene._texture_kernels import HAS_COLORS, TEXTURE
+    from pixelpath.scene._texture_kernels import GLOW, HAS_COLORS, TEXTURE
     from pixelpath.scene.texture import surface_tables
 
     tables = surface_tables(objects)
     meshes = [(k, o if isinstance(o, Mesh) else o.to_mesh()) for k, o in enumerate(objects)
               if isinstance(o, Mesh | Box)]
-    textured = tables.objects[:, TEXTURE] >= 0
+    textured = (tables.objects[:, TEXTURE] >= 0) | (tables.objects[:, GLOW] >= 0)
     painted = tables.objects[:, HAS_COLORS] != 0
     corners, normals, flat, owner, polygon = [], [], [], [], []
     uv, colors = [], []

@@ -8,8 +8,9 @@ A scene's textures are packed by :func:`pixelpath.scene.texture.surface_tables` 
   and alpha (linear): one load a texel where four bytes cost three or four;
 * ``levels`` (K, 3) intp: first texel, width and height of each level;
 * ``textures`` (M, 4) intp: first level, number of levels, filter and wrap of each texture;
-* ``objects`` (O, 2) intp: per scene object, its texture (-1 for none, or when it has no
-  texture coordinates) and whether it has vertex colours;
+* ``objects`` (O, 3) intp: per scene object, its texture (-1 for none, or when it has no
+  texture coordinates), whether it has vertex colours, and its emission texture (-1 for
+  none, or when it has no texture coordinates or emits nothing);
 * ``decode`` (256,) float64: the linear value of each 8-bit sRGB code;
 * ``alpha`` (O, 2) float64: per scene object, the material's ``alpha`` and the cutoff of its
   alpha test, 0 for none (an opaque material, or one whose alpha never falls below its
@@ -38,7 +39,7 @@ from pixelpath._jit import njit
 NEAREST, BILINEAR, TRILINEAR = 0, 1, 2
 REPEAT, CLAMP, MIRROR = 0, 1, 2
 # Columns of SurfaceTables.objects.
-TEXTURE, HAS_COLORS = 0, 1
+TEXTURE, HAS_COLORS, GLOW = 0, 1, 2
 # Columns of SurfaceTables.alpha.
 BASE_ALPHA, CUTOFF = 0, 1
 
@@ -319,7 +320,8 @@ def cut_away(tables, obj, uv, colors, a, b, c, w0, w1, w2):
 def tiny_tables() -> SurfaceTables:
     """Return a 2 x 2 texture with two levels on object 0, for the kernels' warm-ups.
 
-    Object 0 is alpha-tested (cutoff 0.5), so warm-ups that draw it compile the alpha test.
+    Object 0 is alpha-tested (cutoff 0.5), so warm-ups that draw it compile the alpha test,
+    and its emission texture is the same picture.
     """
     from pixelpath.scene.texture import decode_table
 
@@ -329,7 +331,7 @@ def tiny_tables() -> SurfaceTables:
         texels,
         np.array([[0, 2, 2], [4, 1, 1]], dtype=np.intp),
         np.array([[0, 2, TRILINEAR, REPEAT]], dtype=np.intp),
-        np.array([[0, 1]], dtype=np.intp),
+        np.array([[0, 1, 0]], dtype=np.intp),
         decode_table(),  # the real (read-only) table: Numba types read-only arrays apart
         np.array([[1.0, 0.5]]),
     )

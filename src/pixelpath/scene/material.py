@@ -5,9 +5,10 @@ is the material's ``color``: the object colour tints ambient and diffuse light, 
 take the light's colour. ``reflectivity``, ``transparency`` and ``ior`` are used by the ray tracer.
 
 ``emission`` (not in the notes' model; glTF's ``emissiveFactor``, an MTL file's ``Ke``) is light
-the surface gives off itself: ``I + E``, the same at every point and from every side, in every
-method and in the ray tracer (where reflections and refractions show it too). It lights no
-other surface: an emissive material is not a light source.
+the surface gives off itself: ``I + E``, the same from every side, in every method and in the
+ray tracer (where reflections and refractions show it too), and the same at every point unless
+an ``emission_texture`` (glTF's ``emissiveTexture``, MTL's ``map_Ke``) scales it point by point.
+It lights no other surface: an emissive material is not a light source.
 
 ``alpha_cutoff`` makes a material *alpha-tested* (glTF's ``alphaMode`` MASK): the surface's
 alpha, ``alpha`` × the vertex colours' alpha × the texture's alpha, is compared with the cutoff
@@ -73,6 +74,11 @@ class Material(Record):
     emission : (3,) array_like
         Light the surface emits (r, g, b), non-negative, added to the shaded intensity; the
         default (0, 0, 0) emits none.
+    emission_texture : Texture, path or (H, W, 3|4) array_like, optional
+        A picture that scales ``emission`` at each point, channel by channel (its alpha is
+        ignored), read through the mesh's texture coordinates with the material's
+        ``texture_filter`` and ``texture_wrap``, like ``texture``; on an object without
+        texture coordinates it is left out. Nothing is emitted where ``emission`` is zero.
 
     Examples
     --------
@@ -105,6 +111,7 @@ class Material(Record):
     alpha: float = 1.0
     alpha_cutoff: float | None = None
     emission: Any = (0.0, 0.0, 0.0)
+    emission_texture: Any = None
 
     def __post_init__(self) -> None:
         self._set(
@@ -124,6 +131,7 @@ class Material(Record):
             alpha=_fraction(self.alpha, "alpha"),
             alpha_cutoff=_cutoff(self.alpha_cutoff),
             emission=v.colour(self.emission, "emission"),
+            emission_texture=_texture(self.emission_texture),
         )
 
     @property

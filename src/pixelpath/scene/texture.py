@@ -414,8 +414,9 @@ def surface_tables(objects: Any):
     Parameters
     ----------
     objects : sequence of scene objects
-        Their ``material.texture`` and, for meshes, ``colors`` and ``uv``. A texture shows
-        only on meshes with texture coordinates (``uv``); elsewhere it is left out.
+        Their ``material.texture`` and ``emission_texture`` and, for meshes, ``colors`` and
+        ``uv``. A texture shows only on meshes with texture coordinates (``uv``); elsewhere
+        it is left out, as is the emission texture of a material that emits nothing.
 
     Returns
     -------
@@ -434,7 +435,7 @@ def surface_tables(objects: Any):
     ...             Material(texture=np.ones((4, 4, 3))), uv=[[0, 0], [1, 0], [1, 1], [0, 1]])
     >>> tables = surface_tables([quad])
     >>> tables.levels.tolist(), tables.objects.tolist(), tables.alpha.tolist()
-    ([[0, 4, 4], [16, 2, 2], [20, 1, 1]], [[0, 0]], [[1.0, 0.0]])
+    ([[0, 4, 4], [16, 2, 2], [20, 1, 1]], [[0, 0, -1]], [[1.0, 0.0]])
     """
     from pixelpath.scene import _texture_kernels as tk
 
@@ -445,31 +446,36 @@ def surface_tables(objects: Any):
     pixels: list[np.ndarray] = []
     object_rows = []
     alpha_rows = []
-    texel_count = 0
+
+    def sampler(texture: Texture | None, material: Any, uv: Any) -> int:
+        """Return the row of ``texture`` read with ``material``'s filter and wrap (-1: none)."""
+        if texture is None or uv is None:
+            return -1
+        if id(texture) not in level_ranges:
+            texels, levels = texture._packed
+            texel_count = sum(len(block) for block in pixels)
+            level_ranges[id(texture)] = (len(level_rows), len(levels))
+            level_rows.extend([texel_count + first, width, height]
+                              for first, width, height in levels)
+            pixels.append(texels)
+        key = (id(texture), material.texture_filter, material.texture_wrap)
+        if key not in samplers:
+            samplers[key] = len(sampler_rows)
+            sampler_rows.append([
+                *level_ranges[id(texture)], FILTERS.index(material.texture_filter),
+                WRAPS.index(material.texture_wrap),
+            ])
+        return samplers[key]
+
     for obj in objects:
         material = obj.material
-        texture = material.texture
-        index = -1
-        if texture is not None and getattr(obj, "uv", None) is not None:
-            if id(texture) not in level_ranges:
-                texels, levels = texture._packed
-                level_ranges[id(texture)] = (len(level_rows), len(levels))
-                level_rows.extend([texel_count + first, width, height]
-                                  for first, width, height in levels)
-                pixels.append(texels)
-                texel_count += len(texels)
-            key = (id(texture), material.texture_filter, material.texture_wrap)
-            if key not in samplers:
-                samplers[key] = len(sampler_rows)
-                sampler_rows.append([
-                    *level_ranges[id(texture)], FILTERS.index(material.texture_filter),
-                    WRAPS.index(material.texture_wrap),
-                ])
-            index = samplers[key]
+        uv = getattr(obj, "uv", None)
+        index = sampler(material.texture, material, uv)
+        glow = sampler(material.emission_texture if material.emits else None, material, uv)
         colors = getattr(obj, "colors", None)
-        object_rows.append([index, colors is not None])
-        alpha_rows.append([material.alpha, _cutoff(material, texture if index >= 0 else None,
-                                                   colors)])
+        object_rows.append([index, colors is not None, glow])
+        alpha_rows.append([material.alpha, _cutoff(
+            material, material.texture if index >= 0 else None, colors)])
     if len(pixels) == 1:
         texels = pixels[0]  # the texture's own packed levels: no copy
     else:
@@ -478,7 +484,7 @@ def surface_tables(objects: Any):
         texels,
         np.array(level_rows, dtype=np.intp).reshape(-1, 3),
         np.array(sampler_rows, dtype=np.intp).reshape(-1, 4),
-        np.array(object_rows, dtype=np.intp).reshape(-1, 2),
+        np.array(object_rows, dtype=np.intp).reshape(-1, 3),
         decode_table(),
         np.array(alpha_rows, dtype=np.float64).reshape(-1, 2),
     )
