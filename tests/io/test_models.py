@@ -408,21 +408,56 @@ def test_an_emission_texture_read_otherwise_is_named_as_not_drawn(tmp_path, refe
     assert mesh.material.emission_texture is None
 
 
-@pytest.mark.parametrize("texture", [False, True])
-def test_mtl_emission_is_ke_decoded_from_srgb(tmp_path, texture):
-    (tmp_path / "glow.mtl").write_text("newmtl glow\nKd 0.5 0.5 0.5\nKe 1 0.25 0\n"
-                                       + ("map_Ke glow.png\n" if texture else ""))
+def test_mtl_emission_is_ke_decoded_from_srgb(tmp_path):
+    (tmp_path / "glow.mtl").write_text("newmtl glow\nKd 0.5 0.5 0.5\nKe 1 0.25 0\n")
     (tmp_path / "glow.obj").write_text("mtllib glow.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\n"
                                        "usemtl glow\nf 1 2 3\n")
-    if texture:
-        with pytest.warns(UserWarning, match=r"glow\.obj: material 'glow' emits light \(Ke "
-                                             r".*\) through a map_Ke texture, which is not"):
-            (mesh,) = read_model(tmp_path / "glow.obj").objects
-        assert not mesh.material.emits
-    else:
-        (mesh,) = read_model(tmp_path / "glow.obj").objects
-        np.testing.assert_allclose(mesh.material.emission,
-                                   [1.0, ((0.25 + 0.055) / 1.055) ** 2.4, 0.0], rtol=1e-12)
+    (mesh,) = read_model(tmp_path / "glow.obj").objects
+    np.testing.assert_allclose(mesh.material.emission,
+                               [1.0, ((0.25 + 0.055) / 1.055) ** 2.4, 0.0], rtol=1e-12)
+
+
+def _glowing_obj(tmp_path, map_kd: str, map_ke: str) -> Path:
+    """A textured OBJ square whose .mtl has Ke 1 1 1 and the given map lines."""
+    Image.fromarray(PICTURE).save(tmp_path / "paint.png")
+    Image.fromarray(PICTURE[::-1]).save(tmp_path / "my glow.png")
+    (tmp_path / "glow.mtl").write_text(f"newmtl glow\nKd 1 1 1\nKe 1 1 1\n{map_kd}{map_ke}")
+    (tmp_path / "glow.obj").write_text(
+        "mtllib glow.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+        "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nusemtl glow\nf 1/1 2/2 3/3 4/4\n")
+    return tmp_path / "glow.obj"
+
+
+def test_an_mtl_map_ke_is_drawn(tmp_path):
+    path = _glowing_obj(tmp_path, "map_Kd -s 2 2 1 paint.png\n", "map_Ke -s 2 2 1 my glow.png\n")
+    (mesh,) = read_model(path).objects
+    np.testing.assert_array_equal(mesh.material.emission_texture.levels[0][..., :3],
+                                  PICTURE[::-1])
+    assert mesh.material.emits and mesh.material.emission_texture.name == "my glow.png (map_Ke)"
+
+
+@pytest.mark.parametrize(
+    ("map_ke", "message"),
+    [
+        ("map_Ke my glow.png\n", "a map_Ke texture whose -s or -o differ from map_Kd's"),
+        ("map_Ke -s 2 2 1 gone.png\n", "a map_Ke texture that was not found"),
+    ],
+)
+def test_an_mtl_map_ke_that_cannot_be_drawn_is_named(tmp_path, map_ke, message):
+    path = _glowing_obj(tmp_path, "map_Kd -s 2 2 1 paint.png\n", map_ke)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        (mesh,) = read_model(path).objects
+    text = " | ".join(str(w.message) for w in caught)
+    assert f"glow.obj: material 'glow' emits light (Ke [1.0, 1.0, 1.0]) through {message}" in text
+    assert not mesh.material.emits and mesh.material.emission_texture is None
+
+
+def test_an_mtl_map_ke_outside_the_folder_is_refused(tmp_path):
+    (tmp_path / "inner").mkdir()
+    path = _glowing_obj(tmp_path / "inner", "", "map_Ke ../secret.png\n")
+    with pytest.raises(ValueError, match=r"glow\.obj.*outside the model's folder"):
+        read_model(path)
 
 
 def test_webp_textures_are_read(tmp_path):

@@ -97,8 +97,10 @@ glTF ``emissiveTexture``      ``emission_texture``, which scales ``emission`` po
                               colour's set and transform) with the base colour's sampler; one
                               that reads another set or is transformed otherwise is not
                               drawn, nor the colour it scales: a warning names the material
-MTL ``map_Ke``                not drawn, nor ``Ke``, which it scales: a warning names the
-                              material
+MTL ``map_Ke``                ``emission_texture`` (sRGB), scaling ``Ke``, when its ``-s``
+                              and ``-o`` are ``map_Kd``'s (they move the part's texture
+                              coordinates); otherwise, or when its file is missing, not
+                              drawn, nor ``Ke``: a warning names the material
 glTF ``normalTexture``,       not used (the notes' model has no such maps): the surface is
 ``occlusionTexture``,         lit with its interpolated normals and its material's metallic
 ``metallicRoughnessTexture``  and roughness factors; other PBR extensions (transmission,
@@ -368,7 +370,7 @@ def _read_checked(path: Path) -> tuple[list[Mesh], dict | None]:
         raise ValueError(f"{path}: refers to {resolver.refused[0]!r}, outside the file's folder")
     for name in resolver.missing:
         warnings.warn(f"{path}: {name!r} not found; using the material colour", stacklevel=3)
-    return _meshes(path, parts, named), gltf
+    return _meshes(path, parts, named, resolver), gltf
 
 
 def _stl_objects(path: Path) -> list[Mesh]:
@@ -625,7 +627,11 @@ def _mtl_map(source: Any) -> _MtlMap | None:
     """
     image = getattr(source, "image", None)
     line = getattr(image, "info", {}).get("file_path")
-    options = _mtl_map_line(line)[1] if isinstance(line, str) else []
+    return _mtl_options(_mtl_map_line(line)[1] if isinstance(line, str) else [])
+
+
+def _mtl_options(options: list[tuple[str, list[str]]]) -> _MtlMap | None:
+    """Return what an .mtl texture line's ``options`` ask (None when there are none)."""
     if not options:
         return None
     given = dict(options)  # a repeated option: its last values count
@@ -1377,12 +1383,13 @@ def _data_uri(data: bytes) -> str:
 # --- meshes and materials ---------------------------------------------------------------------
 
 
-def _meshes(path: Path, parts: list[_Part], gltf: dict | None) -> list[Mesh]:
+def _meshes(path: Path, parts: list[_Part], gltf: dict | None, resolver: Any) -> list[Mesh]:
     node_names = {n.get("name") for n in (gltf or {}).get("nodes", []) if isinstance(n, dict)}
     meshes = []
     # Parts share trimesh's material and image objects: each is mapped (and each picture
     # decoded) once, and parts sharing a picture share one Texture, packed once to render.
-    shared: dict[tuple, Any] = {}
+    # (and the resolver, which reads the pictures trimesh leaves unread: an .mtl's map_Ke)
+    shared: dict[Any, Any] = {"resolver": resolver}
     primitives: dict[str, int] = {}  # parts named after each node so far
     for part in parts:
         if len(part.faces) == 0:
@@ -1840,9 +1847,9 @@ def _simple_material(path: Path, source: Any, shared: dict) -> Material:
     opacity = _fraction(_mtl_number(raw.get("d"), 1.0))
     ka = float(np.mean(ka_color))
     ke = _mtl_color(raw.get("ke"), (0.0, 0.0, 0.0))  # a display colour, as Kd's
-    emission = _emission(path, source.name, ("Ke", srgb_to_linear(ke)),
-                         None if raw.get("map_ke") is None else "a map_Ke texture")
     options = _mtl_map_of(source, shared)
+    glow, unread = _mtl_glow(path, raw.get("map_ke"), options, shared)
+    emission = _emission(path, source.name, ("Ke", srgb_to_linear(ke)), unread)
     if options is not None and options.ignored:
         warnings.warn(f"{path}: material {source.name!r}: the .mtl texture options "
                       f"{options.ignored!r} are not applied", stacklevel=2)
@@ -1857,7 +1864,41 @@ def _simple_material(path: Path, source: Any, shared: dict) -> Material:
         texture=_texture(path, getattr(source, "image", None), shared, keep_alpha=True),
         texture_wrap="clamp" if options is not None and options.clamp else "repeat",
         emission=emission,
+        emission_texture=glow,
     )
+
+
+def _uv_moves(options: _MtlMap | None) -> tuple:
+    """Return how an .mtl texture line's options move texture coordinates: (scale, offset)."""
+    return ((1.0, 1.0), (0.0, 0.0)) if options is None else (options.scale, options.offset)
+
+
+def _mtl_glow(
+    path: Path, words: Any, options: _MtlMap | None, shared: dict
+) -> tuple[Texture | None, str | None]:
+    """Return an .mtl ``map_Ke`` line's picture as a texture, or why it is not drawn.
+
+    trimesh keeps the line's words and leaves the picture unread: it is read here through
+    the model's resolver (confined to its folder), and drawn through the part's texture
+    coordinates, which ``map_Kd``'s ``-s`` and ``-o`` move, so ``map_Ke`` must move them alike.
+    """
+    if words is None:
+        return None, None
+    line = " ".join(map(str, words)) if isinstance(words, list) else str(words)
+    name, given = _mtl_map_line(line)
+    if _uv_moves(_mtl_options(given)) != _uv_moves(options):
+        return None, "a map_Ke texture whose -s or -o differ from map_Kd's"
+    try:
+        data = shared["resolver"].get(name)
+    except FileNotFoundError:  # named in the warning about missing files
+        return None, "a map_Ke texture that was not found"
+    import PIL.Image
+
+    try:
+        picture = PIL.Image.open(io.BytesIO(data))
+    except (OSError, ValueError):
+        raise ValueError(f"{path}: map_Ke {name!r} is not a picture Pillow can read") from None
+    return Texture.deferred(picture, name=f"{name} (map_Ke)", opaque=True), None
 
 
 def _mtl_color(value: Any, default: tuple[float, ...]) -> np.ndarray:
