@@ -1848,7 +1848,7 @@ def _simple_material(path: Path, source: Any, shared: dict) -> Material:
     ka = float(np.mean(ka_color))
     ke = _mtl_color(raw.get("ke"), (0.0, 0.0, 0.0))  # a display colour, as Kd's
     options = _mtl_map_of(source, shared)
-    glow, unread = _mtl_glow(path, raw.get("map_ke"), options, shared)
+    glow, unread = _mtl_glow(raw.get("map_ke"), options, shared)
     emission = _emission(path, source.name, ("Ke", srgb_to_linear(ke)), unread)
     if options is not None and options.ignored:
         warnings.warn(f"{path}: material {source.name!r}: the .mtl texture options "
@@ -1874,7 +1874,7 @@ def _uv_moves(options: _MtlMap | None) -> tuple:
 
 
 def _mtl_glow(
-    path: Path, words: Any, options: _MtlMap | None, shared: dict
+    words: Any, options: _MtlMap | None, shared: dict
 ) -> tuple[Texture | None, str | None]:
     """Return an .mtl ``map_Ke`` line's picture as a texture, or why it is not drawn.
 
@@ -1890,14 +1890,14 @@ def _mtl_glow(
         return None, "a map_Ke texture whose -s or -o differ from map_Kd's"
     try:
         data = shared["resolver"].get(name)
-    except FileNotFoundError:  # named in the warning about missing files
+    except FileNotFoundError:  # after the missing-file warnings: the emission's names it
         return None, "a map_Ke texture that was not found"
     import PIL.Image
 
     try:
         picture = PIL.Image.open(io.BytesIO(data))
     except (OSError, ValueError):
-        raise ValueError(f"{path}: map_Ke {name!r} is not a picture Pillow can read") from None
+        raise ValueError(f"map_Ke {name!r} is not a picture Pillow can read") from None
     return Texture.deferred(picture, name=f"{name} (map_Ke)", opaque=True), None
 
 
