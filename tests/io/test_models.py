@@ -1044,11 +1044,27 @@ def _only_named_errors(path: Path) -> None:
         warnings.simplefilter("ignore")
         try:
             for obj in read_model(path).objects:
-                texture = getattr(obj.material, "texture", None)
-                if texture is not None:
-                    assert texture.levels  # pictures decode at first use: errors come here
+                for texture in (obj.material.texture, obj.material.emission_texture):
+                    if texture is not None:
+                        assert texture.levels  # pictures decode at first use: errors come here
         except (ValueError, TypeError) as exc:
             assert path.name in str(exc), f"{type(exc).__name__} without the file's name: {exc}"
+
+
+def edited_loads_or_names_itself(tmp_path: Path, gltf: dict, key_index: int, value) -> None:
+    """``gltf`` with one JSON value replaced (:func:`_edited_json`): it loads, or the error
+    names the file."""
+    path = tmp_path / "fuzz.gltf"
+    path.write_text(json.dumps(_edited_json(gltf, key_index, value)))
+    _only_named_errors(path)
+
+
+def refused(tmp_path: Path, gltf: dict, message: str) -> None:
+    """Reading ``gltf`` raises a ValueError naming the file, then ``message`` (a pattern)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        with pytest.raises(ValueError, match=rf"model\.gltf.*{message}"):
+            read_model(write(tmp_path, gltf))
 
 
 FUZZ = settings(max_examples=50, deadline=None,

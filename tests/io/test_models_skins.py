@@ -8,7 +8,6 @@ matrix, blended by the weights, and the skinned node's own transform ignored (th
 from __future__ import annotations
 
 import base64
-import json
 import math
 
 import numpy as np
@@ -20,9 +19,9 @@ from test_models import (
     JSON_VALUES,
     QUAD,
     _data_uri,
-    _edited_json,
-    _only_named_errors,
+    edited_loads_or_names_itself,
     quad_gltf,
+    refused,
     write,
 )
 
@@ -113,8 +112,7 @@ def test_the_inverse_bind_matrix_undoes_the_joints_rest_place(tmp_path):
 def test_bad_skins_are_refused(tmp_path, edit, message):
     gltf = skinned_quad([{}], FULLY, ONE_JOINT)
     edit(gltf)
-    with pytest.raises(ValueError, match=rf"model\.gltf.*{message}"):
-        read_model(write(tmp_path, gltf))
+    refused(tmp_path, gltf, message)
 
 
 def test_a_joint_the_skin_lacks_is_refused(tmp_path):
@@ -131,6 +129,4 @@ def test_fuzz_edited_skinned_gltf(tmp_path, key_index, value):
     weights = np.tile([0.25, 0.75, 0.0, 0.0], (4, 1))
     gltf = skinned_quad(joints, weights, np.tile([0, 1, 0, 0], (4, 1)),
                         np.tile(np.eye(4), (2, 1, 1)), normals=True)
-    path = tmp_path / "fuzz.gltf"
-    path.write_text(json.dumps(_edited_json(gltf, key_index, value)))
-    _only_named_errors(path)
+    edited_loads_or_names_itself(tmp_path, gltf, key_index, value)
