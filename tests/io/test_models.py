@@ -1107,14 +1107,21 @@ def _decoded_quad() -> dict:
     return _with_attribute(gltf, "COLOR_0", np.full((4, 4), 40000, dtype="<u2"), 5123)
 
 
+def _glowing_quad() -> dict:
+    """The textured quad whose picture is its emissiveTexture too, through a transform."""
+    gltf = quad_gltf(image=_png(PICTURE), extensionsUsed=["KHR_texture_transform"])
+    gltf["materials"][0].update(emissiveFactor=[1.0, 0.5, 0.0], emissiveTexture={
+        "index": 0, "texCoord": 0, "extensions": {"KHR_texture_transform": {"scale": [2, 2]}}})
+    return gltf
+
+
 @FUZZ
-@given(key_index=st.integers(0, 500), value=JSON_VALUES, decoded=st.booleans())
-def test_fuzz_edited_gltf_json(tmp_path, key_index, value, decoded):
-    gltf = _edited_json(_decoded_quad() if decoded else quad_gltf(image=_png(PICTURE)),
-                        key_index, value)
-    path = tmp_path / "fuzz.gltf"
-    path.write_text(json.dumps(gltf))
-    _only_named_errors(path)
+@given(key_index=st.integers(0, 500), value=JSON_VALUES,
+       base=st.sampled_from(["textured", "decoded", "glowing"]))
+def test_fuzz_edited_gltf_json(tmp_path, key_index, value, base):
+    gltf = {"textured": lambda: quad_gltf(image=_png(PICTURE)), "decoded": _decoded_quad,
+            "glowing": _glowing_quad}[base]()
+    edited_loads_or_names_itself(tmp_path, gltf, key_index, value)
 
 
 TOML_VALUES = st.recursive(
