@@ -100,8 +100,10 @@ def test_instances_of_a_morphed_mesh_are_morphed(tmp_path):
     np.testing.assert_allclose(meshes["quad[1]"].vertices, QUAD + LIFT + SHIFTS[1])
 
 
-def test_an_unnamed_node_s_instances_take_its_mesh_s_name(tmp_path):
-    gltf = instanced_quad(quad_gltf(), TRANSLATION=(SHIFTS[:1], 5126, "VEC3"))
+@pytest.mark.parametrize("morphed", [False, True])
+def test_an_unnamed_node_s_instances_take_its_mesh_s_name(tmp_path, morphed):
+    gltf = morphed_quad(quad_gltf(), [1.0, 0.0]) if morphed else quad_gltf()
+    gltf = instanced_quad(gltf, TRANSLATION=(SHIFTS[:1], 5126, "VEC3"))
     del gltf["nodes"][0]["name"]
     gltf["meshes"][0]["name"] = "tile"
     assert list(_by_name(write(tmp_path, gltf))) == ["tile[0]"]

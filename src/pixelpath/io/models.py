@@ -906,7 +906,7 @@ def _instance_nodes(
         if len(counts) != 1:
             raise ValueError(f"{path}: {where} needs TRANSLATION, ROTATION or SCALE, each "
                              "with one value an instance")
-        name = _instance_base_name(gltf, n, node)
+        name = _instance_base_name(gltf, n)
         extra = {"weights": node["weights"]} if "weights" in node else {}
         children = node.get("children") if isinstance(node.get("children"), list) else []
         first = len(nodes)
@@ -918,9 +918,12 @@ def _instance_nodes(
     return nodes
 
 
-def _instance_base_name(gltf: dict, n: int, node: dict) -> str:
-    """Return what node ``n`` is called as a part: its name, else its mesh's, else "node n"."""
-    meshes = gltf.get("meshes", [])  # a list of objects (checked)
+def _instance_base_name(gltf: dict, n: int) -> str:
+    """Return what node ``n`` is called as a part: its name, else its mesh's, else "node n".
+
+    The file's own node and mesh, not the posed copy a morphed node's mesh became.
+    """
+    node, meshes = gltf["nodes"][n], gltf.get("meshes", [])  # lists of objects (checked)
     mesh = node["mesh"]
     for name in (node.get("name"),
                  meshes[mesh].get("name") if _is_int(mesh) and 0 <= mesh < len(meshes) else None):
