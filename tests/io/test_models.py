@@ -368,6 +368,49 @@ def test_gltf_emission_is_the_factor_times_the_strength(tmp_path, strength, expe
     assert mesh.material.emission.tolist() == expected
 
 
+@pytest.mark.parametrize(
+    ("extensions", "transparency", "ior", "kd"),
+    [
+        ({"KHR_materials_transmission": {"transmissionFactor": 0.9},
+          "KHR_materials_ior": {"ior": 1.33}}, 0.9, 1.33, 0.1),
+        ({"KHR_materials_transmission": {"transmissionFactor": 0.25}}, 0.25, 1.5, 0.75),
+        ({"KHR_materials_transmission": {}}, 0.0, 1.5, 1.0),  # glTF's default factor is 0
+        ({"KHR_materials_ior": {"ior": 2.0}}, 0.0, 2.0, 1.0),
+        ({"KHR_materials_ior": {"ior": 0}}, 0.0, 1.5, 1.0),  # below 1: glTF's default
+        ({"KHR_materials_transmission": {"transmissionFactor": "x"}}, 0.0, 1.5, 1.0),
+        ({"KHR_materials_transmission": {"transmissionFactor": 1.0},
+          "KHR_materials_unlit": {}}, 0.0, 1.5, 0.0),  # unlit: the colour as it is
+    ],
+)
+def test_gltf_transmission_and_ior_go_to_the_ray_tracer(tmp_path, extensions, transparency,
+                                                       ior, kd):
+    """A metallic factor of 0 gives kd = 1 before transmission takes its share."""
+    gltf = quad_gltf()
+    gltf["materials"][0]["extensions"] = extensions
+    (mesh,) = read_model(write(tmp_path, gltf)).objects
+    material = mesh.material
+    assert (material.transparency, material.ior, material.kd) == pytest.approx(
+        (transparency, ior, kd))
+
+
+def test_a_transmissive_gltf_square_lets_the_wall_behind_show(tmp_path):
+    """Ray traced, a red wall seen through the square: redder through glass than through
+    the same square opaque."""
+    images = []
+    for extensions in ({}, {"KHR_materials_transmission": {"transmissionFactor": 1.0}}):
+        gltf = quad_gltf()
+        gltf["materials"][0].update(extensions=extensions, doubleSided=True)
+        scene = read_model(write(tmp_path, gltf))
+        wall = pp.Mesh([[-5, -5, -1], [6, -5, -1], [6, 6, -1], [-5, 6, -1]], [[0, 1, 2, 3]],
+                       pp.Material(color=(1, 0, 0), ka=1.0))
+        camera = pp.Camera(eye=(0.5, 0.5, 3), target=(0.5, 0.5, 0), width=16, height=16,
+                           fov=20)
+        scene = dataclasses.replace(scene, camera=camera, objects=[*scene.objects, wall])
+        images.append(pp.render(scene, "raytrace").rgb[8, 8])
+    opaque, glass = images
+    assert glass[0] - glass[1] > opaque[0] - opaque[1] + 0.2
+
+
 def test_a_gltf_emission_texture_is_drawn(tmp_path):
     """The quad's picture as its emissiveTexture too, emissiveFactor (1, 0.5, 1): in the dark
     the quad shows the factor times the picture, its blue corner at the world's (0, 0, 0),

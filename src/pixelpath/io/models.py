@@ -103,8 +103,13 @@ MTL ``map_Ke``                ``emission_texture`` (sRGB), scaling ``Ke``, when 
                               drawn, nor ``Ke``: a warning names the material
 glTF ``normalTexture``,       not used (the notes' model has no such maps): the surface is
 ``occlusionTexture``,         lit with its interpolated normals and its material's metallic
-``metallicRoughnessTexture``  and roughness factors; other PBR extensions (transmission,
-                              clearcoat, sheen, ...) are not used either
+``metallicRoughnessTexture``  and roughness factors; other PBR extensions (clearcoat,
+                              sheen, volume, ...) are not used either
+glTF transmission             ``transparency`` = ``KHR_materials_transmission``'s
+                              ``transmissionFactor`` (the ray tracer's refraction; its
+                              texture is not used), ``ka`` and ``kd`` scaled by
+                              ``1 - transparency``; ``ior`` 1.5 unless given below
+``KHR_materials_ior`` (glTF)  ``ior`` (below 1, as glTF's 0: 1.5)
 ``KHR_materials_unlit``       ``ka = 1 / AMBIENT`` (5), ``kd = ks = 0``: the surface colour
 (glTF)                        under the model's own ambient light (0.2) and no other light,
                               as the extension asks (a scene file with another ``ambient``
@@ -1677,8 +1682,16 @@ def _pbr_material(path: Path, source: Any, gltf: dict | None, shared: dict) -> M
         texture_filter, texture_wrap = _sampler(path, source, gltf, shared)
     kd = 1.0 - 0.6 * metallic
     ka, ks = kd, (1.0 - roughness) ** 2 * (0.25 + 0.75 * metallic)
+    transparency = _fraction(1.0 - rgba[3]) if mode == "BLEND" else 0.0
+    transmission = _extension_number(gltf, source, "KHR_materials_transmission",
+                                     "transmissionFactor", 0.0)
+    ior = _extension_number(gltf, source, "KHR_materials_ior", "ior", 1.5, minimum=1.0)
+    if transmission is not None:  # glass: what is transmitted is not diffused
+        transparency = min(transmission, 1.0)
+        ka, kd = ka * (1.0 - transparency), kd * (1.0 - transparency)
+        ior = 1.5 if ior is None else ior  # glTF's index of refraction when none is given
     if _is_unlit(gltf, source):  # the ambient term alone shows the colour as it is
-        ka, kd, ks = 1.0 / AMBIENT, 0.0, 0.0
+        ka, kd, ks, transparency = 1.0 / AMBIENT, 0.0, 0.0, 0.0
     factor = source.emissiveFactor
     if factor is not None:
         factor = np.asarray(factor, dtype=float) * _emissive_strength(gltf, source)
@@ -1691,7 +1704,8 @@ def _pbr_material(path: Path, source: Any, gltf: dict | None, shared: dict) -> M
         kd=kd,
         ks=ks,
         shininess=_shininess(roughness),
-        transparency=_fraction(1.0 - rgba[3]) if mode == "BLEND" else 0.0,
+        transparency=transparency,
+        ior=1.0 if ior is None else ior,
         name=source.name if isinstance(source.name, str) else None,
         texture=texture,
         texture_filter=texture_filter,
@@ -1754,15 +1768,31 @@ def _emission(path: Path, name: Any, color: tuple[str, Any], unread: str | None)
 
 def _emissive_strength(gltf: dict | None, source: Any) -> float:
     """Return the ``KHR_materials_emissive_strength`` of ``source``'s glTF material (1 if none)."""
+    strength = _extension_number(gltf, source, "KHR_materials_emissive_strength",
+                                 "emissiveStrength", 1.0)
+    return 1.0 if strength is None else strength
+
+
+def _extension_number(
+    gltf: dict | None, source: Any, extension: str, key: str, default: float,
+    minimum: float = 0.0,
+) -> float | None:
+    """Return the number ``key`` of ``extension`` on ``source``'s glTF material.
+
+    None when the material has no such extension (or no single glTF material has its name);
+    ``default`` where the extension leaves the number out or gives anything but a finite number
+    of at least ``minimum`` (trimesh drops these extensions: the JSON is read here).
+    """
     index = _gltf_material_index(gltf, getattr(source, "name", None))
     if index is None:
-        return 1.0
+        return None
     extensions = gltf["materials"][index].get("extensions")
-    strength = extensions.get("KHR_materials_emissive_strength") if isinstance(
-        extensions, dict) else None
-    value = strength.get("emissiveStrength", 1.0) if isinstance(strength, dict) else 1.0
+    table = extensions.get(extension) if isinstance(extensions, dict) else None
+    if not isinstance(table, dict):
+        return None
+    value = table.get(key, default)
     number = isinstance(value, int | float) and not isinstance(value, bool)
-    return float(value) if number and math.isfinite(value) and value >= 0.0 else 1.0
+    return float(value) if number and math.isfinite(value) and value >= minimum else default
 
 
 def _is_unlit(gltf: dict | None, source: Any) -> bool:
