@@ -1694,7 +1694,8 @@ def _pbr_material(path: Path, source: Any, gltf: dict | None, shared: dict) -> M
         ka, kd, ks, transparency = 1.0 / AMBIENT, 0.0, 0.0, 0.0
     factor = source.emissiveFactor
     if factor is not None:
-        factor = np.asarray(factor, dtype=float) * _emissive_strength(gltf, source)
+        strength = _emissive_strength(gltf, source)
+        factor = [float(channel) * strength for channel in factor]
     glow = _texture(path, source.emissiveTexture, shared, keep_alpha=False)
     unread = None if glow is None else _unread_emission(gltf, source)
     emission = _emission(path, source.name, ("emissiveFactor", factor), unread)
@@ -1740,7 +1741,7 @@ def _unread_emission(gltf: dict | None, source: Any) -> str | None:
     return None
 
 
-def _emission(path: Path, name: Any, color: tuple[str, Any], unread: str | None) -> np.ndarray:
+def _emission(path: Path, name: Any, color: tuple[str, Any], unread: str | None) -> list[float]:
     """Return the light a file's material emits (linear r, g, b), zero when it emits none.
 
     ``color`` is the file's key for the emitted colour and its value (None when absent), in
@@ -1749,21 +1750,21 @@ def _emission(path: Path, name: Any, color: tuple[str, Any], unread: str | None)
     would light the whole surface evenly): a warning says so.
     """
     key, value = color
-    try:
-        emitted = np.asarray(value if value is not None else (0.0, 0.0, 0.0), dtype=float)
-        usable = emitted.shape == (3,) and bool(np.all(np.isfinite(emitted)))
+    try:  # three Python floats: NumPy's calls cost more than the arithmetic on a 3-vector
+        emitted = [float(channel) for channel in (value if value is not None else (0, 0, 0))]
+        usable = len(emitted) == 3 and all(map(math.isfinite, emitted))
     except (TypeError, ValueError):
         usable = False
-    emitted = np.maximum(emitted, 0.0) if usable else np.zeros(3)
+    emitted = [max(channel, 0.0) for channel in emitted] if usable else [0.0, 0.0, 0.0]
     if unread is None:
         return emitted
-    if emitted.any():
+    if any(emitted):
         warnings.warn(
-            f"{path}: material {name!r} emits light ({key} {emitted.tolist()}) through "
-            f"{unread}, which is not drawn, nor the colour it scales",
+            f"{path}: material {name!r} emits light ({key} {emitted}) through {unread}, which "
+            "is not drawn, nor the colour it scales",
             stacklevel=3,
         )
-    return np.zeros(3)
+    return [0.0, 0.0, 0.0]
 
 
 def _emissive_strength(gltf: dict | None, source: Any) -> float:
