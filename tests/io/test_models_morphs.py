@@ -3,7 +3,8 @@
 glTF's rest shape is ``base + sum(weight_i * target_i)``, the weights the node's ``weights``,
 else its mesh's, else zeros; trimesh ignores targets and drew the base. The files are the quad
 of ``quad_gltf`` with targets written here, so each expected corner is derived by hand.
-Khronos' SimpleMorph (weights 0.5 and 0.5) is this test's first case, made here.
+Khronos' SimpleMorph (weights 0.5 and 0.5) drew its base triangle so; the first case here is
+of its kind.
 """
 
 from __future__ import annotations
