@@ -1339,3 +1339,17 @@ def test_orthographic_file_camera(tmp_path):
     np.testing.assert_allclose(camera.eye, [0.5, 0.5, 5])
     np.testing.assert_allclose(camera.target[:2], [0.5, 0.5])  # looking down -Z
     assert (camera.near, camera.far) == (pytest.approx(0.1), pytest.approx(50))
+
+
+def test_glTF_materials_are_found_by_name_in_each_file_read():
+    from pixelpath.io.models import _gltf_material_index, _gltf_materials_named
+
+    first = {"materials": [{"name": "a"}, {"name": "b"}, {"name": "a"}, 7, {"name": [1]}, {}]}
+    second = {"materials": [{"name": "b"}, {"name": "a"}]}
+    assert _gltf_materials_named(first, "a") == (0, 2)
+    assert _gltf_material_index(first, "a") is None  # ambiguous
+    assert _gltf_material_index(first, "b") == 1
+    assert _gltf_material_index(first, None) == 5  # the one material without a name
+    assert _gltf_materials_named(first, [1]) == ()  # a JSON list names nothing
+    assert _gltf_material_index(second, "a") == 1  # another file: its own names
+    assert _gltf_material_index(first, "b") == 1 and _gltf_material_index(None, "b") is None

@@ -187,7 +187,7 @@ import os
 import re
 import struct
 import warnings
-from collections.abc import Iterator
+from collections.abc import Hashable, Iterator
 from pathlib import Path
 from typing import Any, BinaryIO, NamedTuple
 from urllib.parse import unquote
@@ -1733,9 +1733,10 @@ def _unread_emission(gltf: dict | None, source: Any) -> str | None:
     glow = material.get("emissiveTexture")
     pbr = material.get("pbrMetallicRoughness")
     base = pbr.get("baseColorTexture") if isinstance(pbr, dict) else None
-    if _reference_set(glow) != _texture_set(material):
-        return (f"an emissiveTexture reading texture coordinates TEXCOORD_{_reference_set(glow)}"
-                f" where the base colour reads TEXCOORD_{_texture_set(material)}")
+    glow_set, base_set = _reference_set(glow), _reference_set(base)
+    if glow_set != base_set:
+        return (f"an emissiveTexture reading texture coordinates TEXCOORD_{glow_set} where the "
+                f"base colour reads TEXCOORD_{base_set}")
     if _reference_transform(glow) != _reference_transform(base):
         return "an emissiveTexture with a KHR_texture_transform other than the base colour's"
     return None
@@ -1976,9 +1977,8 @@ def _texture(path: Path, image: Any, shared: dict, *, keep_alpha: bool) -> Textu
 
 def _refuse_lost_texture(path: Path, source: Any, gltf: dict | None) -> None:
     """Refuse a material whose texture trimesh skipped (it drops what it cannot decode)."""
-    for material in (gltf or {}).get("materials", []):
-        if not isinstance(material, dict) or material.get("name") != source.name:
-            continue
+    for index in _gltf_materials_named(gltf, source.name):
+        material = gltf["materials"][index]
         pbr = material.get("pbrMetallicRoughness")
         if isinstance(pbr, dict) and "baseColorTexture" in pbr:
             if _missing_image_file(path, gltf, pbr["baseColorTexture"]):
@@ -2055,15 +2055,35 @@ def _sampler(path: Path, source: Any, gltf: dict | None, shared: dict) -> tuple[
 
 def _gltf_material_index(gltf: dict | None, name: Any) -> int | None:
     """Return the index of the one glTF material named ``name`` (None: none or ambiguous)."""
-    materials = (gltf or {}).get("materials")
-    if not isinstance(materials, list):
-        return None
-    found = [
-        i
-        for i, material in enumerate(materials)
-        if isinstance(material, dict) and material.get("name") == name
-    ]
+    found = _gltf_materials_named(gltf, name)
     return found[0] if len(found) == 1 else None
+
+
+# The last glTF materials list looked in, and the indices of its materials by name. Every
+# material's mapping asks for its glTF material several times (sampler, unlit, extensions,
+# emission) and each part's texture transform once more: a scan each made a file of M
+# materials cost M^2 look-ups (600 materials: 1,800 scans of the list).
+_names_seen: tuple[Any, dict] = (None, {})
+
+
+def _gltf_materials_named(gltf: dict | None, name: Any) -> tuple[int, ...]:
+    """Return the indices of the glTF materials named ``name``, in the file's order."""
+    global _names_seen
+    materials = (gltf or {}).get("materials")
+    if not isinstance(materials, list) or not isinstance(name, Hashable):
+        return ()
+    seen, indices = _names_seen
+    if seen is not materials:  # another file (a reading thread's, or the next one)
+        indices = {}
+        for i, material in enumerate(materials):
+            key = material.get("name") if isinstance(material, dict) else _NOT_A_NAME
+            if isinstance(key, Hashable):  # a name that is a JSON list or object names nothing
+                indices[key] = (*indices.get(key, ()), i)
+        _names_seen = (materials, indices)
+    return indices.get(name, ())
+
+
+_NOT_A_NAME = object()  # the key of list entries that are not material objects
 
 
 def _sampler_json(gltf: dict, ref: Any, where: str) -> dict:
