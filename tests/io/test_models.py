@@ -1002,6 +1002,32 @@ def test_truncated_glb_is_refused(tmp_path):
             read_model(path)
 
 
+@pytest.mark.parametrize("version", ["1.0", "1.1", 1])
+def test_gltf_1_json_is_refused_by_its_version(tmp_path, version):
+    refused(tmp_path, quad_gltf(asset={"version": version}), r"version.*only glTF 2\.0")
+
+
+def test_glb_of_version_1_is_refused(tmp_path):
+    data = bytearray(glb_bytes(quad_gltf()))
+    data[4:8] = struct.pack("<I", 1)
+    path = tmp_path / "old.glb"
+    path.write_bytes(bytes(data))
+    with pytest.raises(ValueError, match=r"old\.glb: a GLB of version 1; only glTF 2\.0"):
+        read_model(path)
+
+
+def test_buffer_files_are_read_when_a_view_reads_them(tmp_path):
+    gltf = quad_gltf()
+    blob = base64.b64decode(gltf["buffers"][0]["uri"].partition(",")[2])
+    (tmp_path / "quad.bin").write_bytes(blob)
+    gltf["buffers"] = [{"byteLength": len(blob), "uri": "quad.bin"},
+                       {"byteLength": 4, "uri": "unused.bin"}]  # no bufferView reads it
+    (mesh,) = read_model(write(tmp_path, gltf)).objects
+    np.testing.assert_array_equal(mesh.vertices, QUAD)
+    (tmp_path / "quad.bin").unlink()
+    refused(tmp_path, gltf, r"buffer 0's file 'quad\.bin' was not found")
+
+
 def test_corrupt_jpeg_texture_is_refused_when_first_used(tmp_path):
     for name in ("fuze.obj", "fuze.obj.mtl"):
         shutil.copy(DATA / name, tmp_path / name)

@@ -364,11 +364,13 @@ def _read_checked(path: Path) -> tuple[list[Mesh], dict | None]:
         # chunk is read once, as trimesh.load reads it
         with path.open("rb") as file:
             gltf, chunk = _checked_gltf(path, file)
-            decoded = _decoded(path, gltf, file, chunk, resolver)
-            file.seek(0)
-            parts = _trimesh_parts(path, resolver, file if decoded is None else decoded[0])
-        # the parts are named after the nodes trimesh read (instances are nodes of their own)
-        named = gltf if decoded is None else decoded[1]
+            read = functools.cache(lambda index: _buffer_bytes(path, gltf, index, file, chunk,
+                                                               resolver))
+            # the parts are named after the nodes trimesh read (instances are nodes of
+            # their own)
+            named, added = _decoded(path, gltf, read) or (gltf, None)
+            buffers = _viewed_buffers(path, named, read, added)
+        parts = _trimesh_parts(path, resolver, (named, buffers))
     else:
         gltf, named, parts = None, None, _trimesh_parts(path, resolver, None)
     if resolver.refused:
@@ -402,12 +404,15 @@ class _Part(NamedTuple):
     face_colors: Any = None  # per-face colours (a PLY file's), or None
 
 
-def _trimesh_parts(path: Path, resolver: Any, gltf_file: BinaryIO | None) -> list[_Part]:
+def _trimesh_parts(
+    path: Path, resolver: Any, gltf: tuple[dict, list[bytes]] | None
+) -> list[_Part]:
+    """Return the parts trimesh reads from ``path``: from a glTF's checked JSON and buffers."""
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")  # trimesh's own warnings say nothing about our file
-            if gltf_file is not None:
-                return _gltf_parts(path, resolver, gltf_file)
+            if gltf is not None:
+                return _gltf_parts(resolver, *gltf)
             return _scene_parts(path, resolver)
     except Exception as exc:  # trimesh's parsers raise anything on a broken file
         raise ValueError(
@@ -438,18 +443,19 @@ def _scene_parts(path: Path, resolver: Any) -> list[_Part]:
     return parts
 
 
-def _gltf_parts(path: Path, resolver: Any, file: BinaryIO) -> list[_Part]:
-    """Return the parts of a glTF file, from what trimesh's glTF reader returns.
+def _gltf_parts(resolver: Any, gltf: dict, buffers: list[bytes]) -> list[_Part]:
+    """Return the parts of a glTF file, from what trimesh's glTF reader makes of its JSON.
 
-    The reader's own output (arrays, visuals and the node graph's edges) is used as it is:
-    building trimesh's Trimesh and Scene objects from it would double the time to load.
+    trimesh's ``load_glb`` and ``load_gltf`` read the JSON and the buffers, then hand them to
+    ``_read_buffers``; the JSON, already read and checked, is handed to it here, with the
+    buffers read once (the JSON's second reading was a tenth of the Duck's load). The reader's
+    own output (arrays, visuals and the node graph's edges) is used as it is: building
+    trimesh's Trimesh and Scene objects from it would double the time to load.
     """
-    from trimesh.exchange.gltf import load_glb, load_gltf
+    from trimesh.exchange.gltf import _read_buffers
     from trimesh.visual.color import to_rgba
 
-    glb = file.read(4) == b"glTF"  # a GLB whose accessors were decoded comes as JSON
-    file.seek(0)
-    loaded = (load_glb if glb else load_gltf)(file_obj=file, resolver=resolver)
+    loaded = _read_buffers(header=gltf, buffers=buffers, mesh_kwargs={}, resolver=resolver)
     geometries = loaded["geometry"]
     parent: dict[str, tuple[str, np.ndarray]] = {}
     named: dict[str, str] = {}
@@ -688,6 +694,10 @@ def _checked_gltf(path: Path, file: BinaryIO) -> tuple[dict, _GlbChunk | None]:
         raise ValueError(f"{path}: the glTF JSON is not valid ({exc})") from None
     if not isinstance(gltf, dict):
         raise ValueError(f"{path}: the glTF JSON is not an object")
+    asset = gltf.get("asset")
+    version = asset.get("version", "2.0") if isinstance(asset, dict) else "2.0"
+    if str(version).split(".", 1)[0] != "2":  # glTF 1.0 is another format
+        raise ValueError(f"{path}: glTF version {version!r}; only glTF 2.0 is read")
     for kind in ("buffers", "images"):
         for item in _list(path, gltf, kind):
             uri = item.get("uri")
@@ -711,13 +721,15 @@ def _glb_parts(path: Path, file: BinaryIO) -> tuple[bytes, _GlbChunk | None]:
     """Return a GLB's JSON chunk and where its next (binary) chunk lies (None: no such chunk).
 
     The chunk lengths are checked against the file's size; the binary chunk is left unread
-    (trimesh reads it).
+    (:func:`_buffer_bytes` reads it).
     """
     size = os.fstat(file.fileno()).st_size
     head = file.read(20)
     if len(head) < 20 or head[:4] != b"glTF":
         raise ValueError(f"{path}: not a GLB file (no 'glTF' header)")
-    _, length = struct.unpack("<II", head[4:12])
+    version, length = struct.unpack("<II", head[4:12])
+    if version != 2:
+        raise ValueError(f"{path}: a GLB of version {version}; only glTF 2.0 is read")
     json_length, json_type = struct.unpack("<II", head[12:20])
     if length > size or json_type != 0x4E4F534A or 20 + json_length > size:
         raise ValueError(f"{path}: truncated or corrupt GLB (the chunk lengths do not fit)")
@@ -802,9 +814,7 @@ _INDEX_DTYPES = {5121: "<u1", 5123: "<u2", 5125: "<u4"}  # a sparse block's elem
 _NORMALIZABLE = (5120, 5121, 5122, 5123)  # the integer types an accessor may mark normalized
 
 
-def _decoded(
-    path: Path, gltf: dict, file: BinaryIO, chunk: _GlbChunk | None, resolver: Any
-) -> tuple[BinaryIO, dict] | None:
+def _decoded(path: Path, gltf: dict, read: Any) -> tuple[dict, bytes] | None:
     """Return the glTF JSON, for trimesh to read, with the accessors it would misread decoded.
 
     trimesh reads an accessor's dense data (zeros where it has no bufferView), ignoring its
@@ -813,14 +823,13 @@ def _decoded(
     0..255 or 0..65535, 16-bit colours were clipped, and ``KHR_mesh_quantization``'s integer
     positions, normals and texture coordinates were not floats. Each such accessor that a
     primitive draws from is decoded here (base values, substitutions, then integers as float32,
-    normalized ones as fractions) into a new buffer (a data: URI) that the accessor then reads
-    (the node transforms that scale quantized positions back are applied as any node's); a GLB's
-    binary chunk becomes a data: URI too, so trimesh reads the whole as a .gltf. The meshes
-    come with the texture coordinate sets their base colours read as set 0
+    normalized ones as fractions) into a new buffer, after the file's, that the accessor then
+    reads (the node transforms that scale quantized positions back are applied as any node's).
+    The meshes come with the texture coordinate sets their base colours read as set 0
     (:func:`_base_color_sets`), the skinned and morphed nodes posed (:func:`_posed_nodes`),
     and the instances of ``EXT_mesh_gpu_instancing`` made nodes (:func:`_instance_nodes`).
-    Returned as a file and as the edited JSON; None when nothing needs it (the file is read as
-    it is).
+    ``read(index)`` returns the bytes of the file's buffer ``index``. Returned as the edited
+    JSON and the new buffer's bytes; None when nothing needs it (the file is read as it is).
     """
     meshes = _base_color_sets(path, gltf)
     drawn = gltf if meshes is None else {**gltf, "meshes": meshes}
@@ -831,11 +840,9 @@ def _decoded(
                  if "mesh" in node and _INSTANCING in (node.get("extensions") or ())]
     if not misread and not fans and not posed and not instanced and meshes is None:
         return None
-    read = functools.cache(lambda index: _buffer_bytes(path, gltf, index, file, chunk,
-                                                       resolver))
     accessors = list(gltf["accessors"])
     views = list(_list(path, gltf, "bufferViews"))
-    buffers = [dict(buffer) for buffer in _list(path, gltf, "buffers")]
+    buffers = _list(path, gltf, "buffers")
     data = bytearray()
 
     def stored(values: np.ndarray) -> int:
@@ -863,16 +870,26 @@ def _decoded(
     nodes = _posed_nodes(path, gltf, posed, meshes, accessors, stored, read) if posed else None
     if instanced:
         nodes = _instance_nodes(path, gltf, instanced, nodes, read)
-    for index, buffer in enumerate(buffers):
-        if "uri" not in buffer:  # the GLB's binary chunk
-            buffer["uri"] = _data_uri(read(index))
-    buffers.append({"byteLength": len(data), "uri": _data_uri(bytes(data))})
-    edited = {**gltf, "accessors": accessors, "bufferViews": views, "buffers": buffers}
+    edited = {**gltf, "accessors": accessors, "bufferViews": views,
+              "buffers": [*buffers, {"byteLength": len(data)}]}
     if meshes is not None:
         edited["meshes"] = meshes
     if nodes is not None:
         edited["nodes"] = nodes
-    return io.BytesIO(json.dumps(edited).encode()), edited
+    return edited, bytes(data)
+
+
+def _viewed_buffers(path: Path, gltf: dict, read: Any, added: bytes | None) -> list[bytes]:
+    """Return the buffers' bytes for trimesh: the file's that a bufferView reads, then ``added``.
+
+    ``read(index)`` returns the bytes of the file's buffer ``index`` (a missing buffer or file
+    is named there); a buffer no bufferView reads is left unread (b""). ``added`` is the buffer
+    :func:`_decoded` added after the file's, or None.
+    """
+    viewed = [view.get("buffer") for view in _list(path, gltf, "bufferViews")]
+    count = len(_list(path, gltf, "buffers")) - (added is not None)
+    own = [read(index) if index in viewed else b"" for index in range(count)]
+    return own if added is None else [*own, added]
 
 
 _INSTANCING = "EXT_mesh_gpu_instancing"
@@ -1382,10 +1399,6 @@ def _buffer_bytes(
         return resolver.get(uri)  # confined to the file's folder, as trimesh's reads are
     except FileNotFoundError:
         raise ValueError(f"{path}: buffer {index}'s file {uri!r} was not found") from None
-
-
-def _data_uri(data: bytes) -> str:
-    return "data:application/octet-stream;base64," + base64.b64encode(data).decode("ascii")
 
 
 # --- meshes and materials ---------------------------------------------------------------------
