@@ -327,6 +327,64 @@ def test_gltf_smooth_metal_and_flags(tmp_path):
     np.testing.assert_allclose(material.color, [1, 0.5, 0.25], atol=1 / 255)
 
 
+def _with_metal_rough_picture(gltf: dict, picture: bytes) -> dict:
+    """Give the quad's material a metallicRoughnessTexture of ``picture`` (PNG bytes)."""
+    gltf.setdefault("images", []).append({"uri": _data_uri(picture, "image/png")})
+    gltf.setdefault("textures", []).append({"source": len(gltf["images"]) - 1})
+    pbr = gltf["materials"][0]["pbrMetallicRoughness"]
+    pbr["metallicRoughnessTexture"] = {"index": len(gltf["textures"]) - 1}
+    return gltf
+
+
+# roughness (green) 0, 102, 204, 255: mean 140.25 = 0.55 x 255; metalness (blue) 0, 0, 51,
+# 255: mean 76.5 = 0.3 x 255; red (occlusion, when packed) is not used
+METAL_ROUGH = np.array([[[9, 0, 0], [9, 102, 0]], [[9, 204, 51], [9, 255, 255]]], np.uint8)
+
+
+@pytest.mark.parametrize(
+    ("factors", "metallic", "roughness"),
+    [({}, 0.3, 0.55),  # absent factors are 1: the texture's means alone
+     ({"metallicFactor": 0.5, "roughnessFactor": 0.8}, 0.15, 0.44)],
+)
+def test_a_metallic_roughness_texture_counts_by_its_means(tmp_path, factors, metallic,
+                                                          roughness):
+    gltf = quad_gltf(image=_png(PICTURE))
+    gltf["materials"][0]["pbrMetallicRoughness"] = factors | {"baseColorTexture": {"index": 0}}
+    _with_metal_rough_picture(gltf, _png(METAL_ROUGH))
+    material = read_model(write(tmp_path, gltf)).objects[0].material
+    assert material.kd == pytest.approx(1 - 0.6 * metallic)
+    assert material.ka == material.kd
+    assert material.ks == pytest.approx((1 - roughness) ** 2 * (0.25 + 0.75 * metallic))
+    assert material.shininess == pytest.approx(2 / roughness**4 - 2)
+    assert material.texture is not None  # the base colour's, as before
+
+
+def test_a_16_bit_grey_metallic_roughness_texture_is_read_as_fractions(tmp_path):
+    grey = io.BytesIO()
+    Image.fromarray(np.full((2, 2), 32768, dtype=np.uint16)).save(grey, format="PNG")
+    gltf = quad_gltf()
+    gltf["materials"][0]["pbrMetallicRoughness"] = {}  # factors 1: the texture's means alone
+    scene = read_model(write(tmp_path, _with_metal_rough_picture(gltf, grey.getvalue())))
+    assert scene.objects[0].material.kd == pytest.approx(1 - 0.6 * 32768 / 65535)
+
+
+def test_a_textured_specular_glossiness_material_is_not_drawn_as_a_rough_metal(tmp_path):
+    # trimesh turns KHR_materials_pbrSpecularGlossiness into metallic-roughness, the
+    # texture's factors 1 and a metallic-roughness picture that holds the glossiness
+    gltf = quad_gltf(image=_png(PICTURE))
+    gltf["materials"][0] = {"extensions": {"KHR_materials_pbrSpecularGlossiness": {
+        "diffuseTexture": {"index": 0}, "specularFactor": [0.2] * 3, "glossinessFactor": 0.5}}}
+    material = read_model(write(tmp_path, gltf)).objects[0].material
+    assert material.shininess == pytest.approx(2 / 0.5**4 - 2, rel=0.05)  # roughness 1 - 0.5
+    assert material.kd > 0.7  # a metal's would be 0.4
+
+
+def test_a_corrupt_metallic_roughness_texture_is_refused(tmp_path):
+    noise = np.random.default_rng(3).integers(0, 256, (64, 64, 3), dtype=np.uint8)
+    gltf = _with_metal_rough_picture(quad_gltf(), _png(noise)[:200])
+    refused(tmp_path, gltf, "metallic-roughness texture is not a readable image")
+
+
 @pytest.mark.parametrize("named", [True, False])
 @pytest.mark.parametrize("method", ["zbuffer", "raytrace"])
 def test_unlit_gltf_material_shows_its_colour_unshaded(tmp_path, named, method):

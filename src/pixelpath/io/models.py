@@ -72,6 +72,10 @@ glTF ``baseColorTexture``     ``texture`` (sRGB); its alpha channel is dropped w
 glTF ``metallicFactor`` m     ``kd = 1 - 0.6 m``; ``ks = (1 - r)^2 (0.25 + 0.75 m)``
 glTF ``roughnessFactor`` r    ``shininess = clip(2 / r^4 - 2, 1, 1000)``; r = 1 (the default)
                               gives ``ks = 0``: no highlight
+``metallicRoughnessTexture``  m and r are the factors times the picture's mean blue and
+(glTF)                        green: one value per material, as the notes' model has (the
+                              picture is decoded when the file is read); trimesh turns
+                              ``KHR_materials_pbrSpecularGlossiness`` into these
 glTF sampler of the           ``texture_wrap`` from ``wrapS``: REPEAT (10497, the default)
 ``baseColorTexture``          "repeat", CLAMP_TO_EDGE (33071) "clamp", MIRRORED_REPEAT
                               (33648) "mirror"; pixelpath has one wrap for both axes, so a
@@ -102,9 +106,8 @@ MTL ``map_Ke``                ``emission_texture`` (sRGB), scaling ``Ke``, when 
                               coordinates); otherwise, or when its file is missing, not
                               drawn, nor ``Ke``: a warning names the material
 glTF ``normalTexture``,       not used (the notes' model has no such maps): the surface is
-``occlusionTexture``,         lit with its interpolated normals and its material's metallic
-``metallicRoughnessTexture``  and roughness factors; other PBR extensions (clearcoat,
-                              sheen, volume, ...) are not used either
+``occlusionTexture``          lit with its interpolated normals; other PBR extensions
+                              (clearcoat, sheen, volume, ...) are not used either
 glTF transmission             ``transparency`` = ``KHR_materials_transmission``'s
                               ``transmissionFactor`` (the ray tracer's refraction; its
                               texture is not used), ``ka`` and ``kd`` scaled by
@@ -201,7 +204,7 @@ from pixelpath.scene.loader import MODEL_FORMATS
 from pixelpath.scene.material import Material
 from pixelpath.scene.mesh import Mesh, bounding_box, moved
 from pixelpath.scene.scene import Scene
-from pixelpath.scene.texture import Texture, srgb_to_linear
+from pixelpath.scene.texture import _WIDE_MODES, Texture, srgb_to_linear
 
 __all__ = [
     "MODEL_FORMATS",
@@ -543,6 +546,8 @@ def _chain_product(chain: list[np.ndarray]) -> np.ndarray:
 
 def _is_identity(matrix: np.ndarray) -> bool:
     """Whether trimesh's scene graph takes the edge ``matrix`` for the identity (and drops it)."""
+    if matrix.tobytes() == _IDENTITY_BYTES:  # the commonest edge, told at a tenth of the cost
+        return True
     return not np.abs(matrix - _IDENTITY).max() > 1e-8
 
 
@@ -1682,9 +1687,7 @@ def _stands_in(source: Any) -> bool:
 def _pbr_material(path: Path, source: Any, gltf: dict | None, shared: dict) -> Material:
     """Map a glTF metallic-roughness material onto the notes' Phong model (see the table)."""
     rgba = _base_color(source.baseColorFactor)
-    metallic = 1.0 if source.metallicFactor is None else float(source.metallicFactor)
-    roughness = 1.0 if source.roughnessFactor is None else float(source.roughnessFactor)
-    metallic, roughness = _fraction(metallic), _fraction(roughness)
+    metallic, roughness = _metal_and_roughness(path, source, shared)
     mode = (source.alphaMode or "OPAQUE").upper()
     alpha_cutoff = _alpha_cutoff(source, mode)
     texture = _texture(path, source.baseColorTexture, shared, keep_alpha=mode != "OPAQUE")
@@ -1730,6 +1733,50 @@ def _pbr_material(path: Path, source: Any, gltf: dict | None, shared: dict) -> M
         emission=emission,
         emission_texture=None if unread else glow,
     )
+
+
+def _metal_and_roughness(path: Path, source: Any, shared: dict) -> tuple[float, float]:
+    """Return a glTF material's metalness and roughness: its factors × its texture's means.
+
+    The notes' model gives a material one ``kd``, ``ks`` and shininess, so a
+    ``metallicRoughnessTexture`` (roughness in green, metalness in blue, linear values) counts
+    by its average over the picture. Without it, a texture's factors (1 when absent, as they
+    usually are) would make every such surface a rough metal: a wooden bed whose texture says
+    metalness 0.008 drew with 40 % of its diffuse light.
+    """
+    metallic = 1.0 if source.metallicFactor is None else float(source.metallicFactor)
+    roughness = 1.0 if source.roughnessFactor is None else float(source.roughnessFactor)
+    metallic, roughness = _fraction(metallic), _fraction(roughness)
+    image = getattr(source, "metallicRoughnessTexture", None)
+    if image is not None:
+        green, blue = _once(shared, ("means", id(image)), _green_and_blue, (path, image))
+        metallic, roughness = metallic * blue, roughness * green
+    return metallic, roughness
+
+
+def _green_and_blue(file_and_image: tuple[Path, Any]) -> tuple[float, float]:
+    """Return a picture's mean green and blue values as fractions of full scale."""
+    import PIL.Image
+    import PIL.ImageStat
+
+    path, image = file_and_image
+    if not isinstance(image, PIL.Image.Image):
+        raise ValueError(f"{path}: a metallic-roughness texture is not a picture "
+                         f"({type(image).__name__})")
+    try:
+        if image.mode in _WIDE_MODES:  # one channel of 16-bit integers or floats: grey
+            grey = float(np.asarray(image, dtype=np.float64).mean())
+            grey /= 1.0 if image.mode == "F" else 65535.0
+            return grey, grey
+        if not {"G", "B"} <= set(image.getbands()):
+            image = image.convert("RGB")
+        means = PIL.ImageStat.Stat(image).mean  # counted from the histogram: no float copy
+        bands = image.getbands()
+        return means[bands.index("G")] / 255.0, means[bands.index("B")] / 255.0
+    except (OSError, SyntaxError, PIL.Image.DecompressionBombError) as exc:
+        # truncated or corrupt data is found when the pixels are decoded
+        raise ValueError(f"{path}: the metallic-roughness texture is not a readable image "
+                         f"({exc})") from None
 
 
 def _unread_emission(gltf: dict | None, source: Any) -> str | None:
