@@ -363,8 +363,8 @@ def _read_checked(path: Path) -> tuple[list[Mesh], dict | None]:
         return _stl_objects(path), None
     resolver = _confined_resolver(path)
     if suffix in (".glb", ".gltf"):
-        # the checks read the JSON, then trimesh reads the file from its start: a GLB's binary
-        # chunk is read once, as trimesh.load reads it
+        # the JSON is read and checked here, then handed to trimesh's reader with the buffers
+        # its bufferViews read: each is read once
         with path.open("rb") as file:
             gltf, chunk = _checked_gltf(path, file)
             read = functools.cache(lambda index: _buffer_bytes(path, gltf, index, file, chunk,
