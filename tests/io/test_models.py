@@ -31,6 +31,7 @@ DATA = Path(__file__).resolve().parents[1] / "data" / "models"
 
 QUAD = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], dtype="<f4")
 QUAD_FACES = np.array([0, 1, 2, 0, 2, 3], dtype="<u2")
+QUAD_TRIANGLES = QUAD_FACES.reshape(-1, 3)
 # glTF's v runs down the image: the world's bottom-left corner (0, 0, 0) shows the image's
 # bottom-left texel at glTF (u, v) = (0, 1)
 QUAD_UV_GLTF = np.array([[0, 1], [1, 1], [1, 0], [0, 0]], dtype="<f4")
@@ -79,6 +80,15 @@ def quad_gltf(*, vertices=QUAD, indices=QUAD_FACES, image: bytes | None = None, 
         gltf["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"] = {"index": 0}
     gltf.update(extra)
     return gltf
+
+
+def corner_positions(mesh: pp.Mesh) -> np.ndarray:
+    """Return the positions at each triangle's corners, (T, 3, 3).
+
+    The same whether a part keeps its shared vertices or, a glTF part without normals that is
+    not flat, is drawn flat with corners of their own: compare with ``expected[QUAD_TRIANGLES]``.
+    """
+    return mesh.vertices[mesh.triangles]
 
 
 def write(tmp_path: Path, gltf: dict, name: str = "model.gltf") -> Path:
@@ -890,8 +900,9 @@ def test_sparse_vertices_are_substituted(tmp_path, container):
     (mesh,) = read_model(path).objects
     expected = QUAD.astype(np.float64)
     expected[0] = moved[0]
-    np.testing.assert_array_equal(mesh.vertices, expected)
-    np.testing.assert_array_equal(mesh.uv, [[0, 0], [1, 0], [1, 1], [0, 1]])  # untouched
+    np.testing.assert_array_equal(corner_positions(mesh), expected[QUAD_TRIANGLES])
+    untouched = np.array([[0, 0], [1, 0], [1, 1], [0, 1]])[QUAD_TRIANGLES]  # v up
+    np.testing.assert_array_equal(mesh.uv[mesh.triangles], untouched)
 
 
 def test_sparse_accessor_without_base_data_starts_from_zeros(tmp_path):

@@ -19,7 +19,9 @@ from test_models import (
     FUZZ,
     JSON_VALUES,
     QUAD,
+    QUAD_TRIANGLES,
     _data_uri,
+    corner_positions,
     edited_loads_or_names_itself,
     quad_gltf,
     refused,
@@ -65,15 +67,15 @@ def morphed_quad(gltf: dict, weights: list | None, normals: bool = False) -> dic
 def test_the_default_weights_shape_the_mesh(tmp_path):
     (mesh,) = read_model(write(tmp_path, morphed_quad(quad_gltf(), [0.5, 0.25]))).objects
     expected = QUAD + 0.5 * LIFT + 0.25 * SLIDE  # corner 2 to (1, 1.5, 1), corner 3 to (0.5, 1, 0)
-    np.testing.assert_allclose(mesh.vertices, expected)
-    assert mesh.vertices[2].tolist() == [1.0, 1.5, 1.0] and mesh.vertices[3].tolist() == [0.5, 1, 0]
+    np.testing.assert_allclose(corner_positions(mesh), expected[QUAD_TRIANGLES])
+    assert corner_positions(mesh)[1].tolist() == [[0, 0, 0], [1.0, 1.5, 1.0], [0.5, 1, 0]]
 
 
 def test_the_node_s_weights_override_the_mesh_s(tmp_path):
     gltf = morphed_quad(quad_gltf(), [0.5, 0.25])
     gltf["nodes"][0]["weights"] = [0.0, 1.0]
     (mesh,) = read_model(write(tmp_path, gltf)).objects
-    np.testing.assert_allclose(mesh.vertices, QUAD + SLIDE)
+    np.testing.assert_allclose(corner_positions(mesh), (QUAD + SLIDE)[QUAD_TRIANGLES])
 
 
 @pytest.mark.parametrize("weights", [None, [0, 0.0]])
@@ -88,8 +90,9 @@ def test_two_nodes_of_one_mesh_take_their_own_weights(tmp_path):
                           "translation": [5.0, 0.0, 0.0]})
     gltf["scenes"][0]["nodes"] = [0, 1]
     meshes = {mesh.name: mesh for mesh in read_model(write(tmp_path, gltf)).objects}
-    np.testing.assert_allclose(meshes["quad"].vertices, QUAD + LIFT)
-    np.testing.assert_allclose(meshes["slid"].vertices, QUAD + SLIDE + [5.0, 0.0, 0.0])
+    np.testing.assert_allclose(corner_positions(meshes["quad"]), (QUAD + LIFT)[QUAD_TRIANGLES])
+    np.testing.assert_allclose(corner_positions(meshes["slid"]),
+                               (QUAD + SLIDE + [5.0, 0.0, 0.0])[QUAD_TRIANGLES])
 
 
 def test_targets_move_the_normals_too(tmp_path):
@@ -114,7 +117,7 @@ def test_a_sparse_target_moves_only_its_listed_vertices(tmp_path):
     gltf["meshes"][0]["weights"] = [0.5]
     (mesh,) = read_model(write(tmp_path, gltf)).objects
     moved = np.array([[0, 0, 0], [0, 0, 1.5], [0, 0, 0], [0, 0, 0]])
-    np.testing.assert_allclose(mesh.vertices, QUAD + moved)
+    np.testing.assert_allclose(corner_positions(mesh), (QUAD + moved)[QUAD_TRIANGLES])
 
 
 def test_a_skinned_mesh_is_morphed_before_it_is_posed(tmp_path):
@@ -124,8 +127,8 @@ def test_a_skinned_mesh_is_morphed_before_it_is_posed(tmp_path):
     joint = {"translation": [5.0, 0.0, 0.0], "rotation": [half, 0.0, 0.0, half]}
     gltf = morphed_quad(skinned_quad([joint], FULLY, ONE_JOINT), [1.0, 0.0])
     (mesh,) = read_model(write(tmp_path, gltf)).objects
-    np.testing.assert_allclose(mesh.vertices, [[5, 0, 0], [6, 0, 0], [6, 0, 2], [5, 0, 1]],
-                               atol=1e-6)
+    posed = np.array([[5, 0, 0], [6, 0, 0], [6, 0, 2], [5, 0, 1]])
+    np.testing.assert_allclose(corner_positions(mesh), posed[QUAD_TRIANGLES], atol=1e-6)
 
 
 def test_a_target_moving_texture_coordinates_is_named_in_a_warning(tmp_path):
@@ -134,7 +137,7 @@ def test_a_target_moving_texture_coordinates_is_named_in_a_warning(tmp_path):
     with pytest.warns(UserWarning, match=r"model\.gltf: morph targets move TEXCOORD_0, which "
                                          "pixelpath does not morph"):
         (mesh,) = read_model(write(tmp_path, gltf)).objects
-    np.testing.assert_allclose(mesh.vertices, QUAD + LIFT)
+    np.testing.assert_allclose(corner_positions(mesh), (QUAD + LIFT)[QUAD_TRIANGLES])
 
 
 @pytest.mark.parametrize(

@@ -28,10 +28,14 @@ What a model file gives (:func:`read_model`)
   drawn once per instance, at the node's world transform times the instance's translation,
   rotation and scale, and not at the node itself; instance k of a part called "tree" is
   called "tree[k]".
-- **Normals**: those the file stores, turned by the node's inverse transpose; where it has
-  none, the area-weighted normals of the faces (:class:`~pixelpath.scene.Mesh`'s). A zero
-  vector in the file (some exporters write them at degenerate corners) becomes the faces'
-  normal there, and non-finite ones drop the part's stored normals.
+- **Normals**: those the file stores, turned by the node's inverse transpose. A glTF part
+  without normals is drawn flat, as the glTF specification asks: unless it is planar, each
+  triangle gets corners of its own carrying its face's normal (trimesh's own GLB files have
+  no normals, so a CAD part exported by trimesh shows its flat faces, not smooth shading
+  stretched across its edges). Where an OBJ, PLY or STL part has none, the area-weighted
+  normals of the faces (:class:`~pixelpath.scene.Mesh`'s). A zero vector in the file (some
+  exporters write them at degenerate corners) becomes the faces' normal there, and
+  non-finite ones drop the part's stored normals (a glTF part is then drawn flat).
 - **Texture coordinates**: pixelpath's uv have v up, (0, 0) the bottom-left of the image.
   trimesh already flips glTF's v when it loads a file (OBJ's is v up already), so its uv are
   used as they are (the tests pin this with a 2 x 2 texture in a hand-written glTF).
@@ -1472,6 +1476,8 @@ def _mesh(path: Path, part: _Part, name: str, gltf: dict | None, shared: dict) -
         if face_colors is not None:
             vertices, faces, normals, uv, colors = _face_colored(vertices, faces, normals, uv,
                                                                  face_colors)
+    if gltf is not None and normals is None:
+        vertices, faces, normals, uv, colors = _flat(vertices, faces, uv, colors)
     material = _material(path, part.visual, gltf, shared, colored=colors is not None)
     try:
         return Mesh(vertices, faces, material, normals, colors, uv, name)
@@ -1497,11 +1503,44 @@ def _face_colored(
     """
     if (face_colors == face_colors[0]).all():
         return vertices, faces, normals, uv, np.repeat(face_colors[:1], len(vertices), axis=0)
-    corners = faces.ravel()
     if normals is None:
         normals = Mesh(vertices, faces).vertex_normals
-    return (vertices[corners], np.arange(len(corners)).reshape(-1, 3), normals[corners],
-            None if uv is None else uv[corners], np.repeat(face_colors, 3, axis=0))
+    faces, vertices, normals, uv = _own_corners(faces, vertices, normals, uv)
+    return vertices, faces, normals, uv, np.repeat(face_colors, 3, axis=0)
+
+
+def _flat(
+    vertices: np.ndarray, faces: np.ndarray, uv: np.ndarray | None, colors: np.ndarray | None
+) -> tuple[np.ndarray, np.ndarray, np.ndarray | None, np.ndarray | None, np.ndarray | None]:
+    """Return a glTF part that has no normals as a flat-shaded part, as glTF asks.
+
+    The glTF specification has a primitive without ``NORMAL`` drawn with flat normals. Where
+    every vertex's area-weighted normal is already the normal of each face around it (a
+    planar part, such as a quad) the part is kept as it is, normals left to the Mesh; otherwise
+    each corner becomes a vertex of its own carrying its face's normal (+Z on a face of no
+    area, which is never seen), with the corner's texture coordinates and colour.
+    """
+    shape = Mesh(vertices, faces)
+    face_normals = shape.face_normals
+    degenerate = ~face_normals.any(axis=1)
+    # cosines between each corner's vertex normal and its face's normal
+    agree = np.einsum("fkc,fc->fk", shape.vertex_normals[faces], face_normals)
+    if np.all((agree >= 1.0 - 1e-12) | degenerate[:, None]):
+        return vertices, faces, None, uv, colors
+    normals = np.repeat(face_normals, 3, axis=0)
+    normals[np.repeat(degenerate, 3)] = (0.0, 0.0, 1.0)
+    faces, vertices, uv, colors = _own_corners(faces, vertices, uv, colors)
+    return vertices, faces, normals, uv, colors
+
+
+def _own_corners(faces: np.ndarray, *per_vertex: np.ndarray | None) -> tuple:
+    """Return triangles ``faces`` with a vertex of its own at each corner, and ``per_vertex``.
+
+    Each array of ``per_vertex`` (None stays None) is taken at the corners, in their order.
+    """
+    corners = faces.ravel()
+    return (np.arange(len(corners)).reshape(-1, 3),
+            *(None if values is None else values[corners] for values in per_vertex))
 
 
 def _placed(
