@@ -32,10 +32,12 @@ What a model file gives (:func:`read_model`)
   without normals is drawn flat, as the glTF specification asks: unless it is planar, each
   triangle gets corners of its own carrying its face's normal (trimesh's own GLB files have
   no normals, so a CAD part exported by trimesh shows its flat faces, not smooth shading
-  stretched across its edges). Where an OBJ, PLY or STL part has none, the area-weighted
-  normals of the faces (:class:`~pixelpath.scene.Mesh`'s). A zero vector in the file (some
-  exporters write them at degenerate corners) becomes the faces' normal there, and
-  non-finite ones drop the part's stored normals (a glTF part is then drawn flat).
+  stretched across its edges). An OBJ, PLY or STL part without normals is smoothed within a
+  crease angle of 50 degrees (:func:`~pixelpath.io.creases.crease_normals`): a scanned or
+  finely tessellated surface gets the faces' area-weighted normals, as before, while the
+  sharp edges of a CAD part (an STL file's cube) stay sharp, its vertices split there. A zero
+  vector in the file (some exporters write them at degenerate corners) becomes the faces'
+  normal there, and non-finite ones drop the part's stored normals (as if it had none).
 - **Texture coordinates**: pixelpath's uv have v up, (0, 0) the bottom-left of the image.
   trimesh already flips glTF's v when it loads a file (OBJ's is v up already), so its uv are
   used as they are (the tests pin this with a 2 x 2 texture in a hand-written glTF).
@@ -202,6 +204,7 @@ from urllib.parse import unquote
 import numpy as np
 
 from pixelpath import _validate as v
+from pixelpath.io.creases import CREASE_ANGLE, crease_normals
 from pixelpath.scene.camera import Camera
 from pixelpath.scene.lights import DirectionalLight, PointLight
 from pixelpath.scene.loader import MODEL_FORMATS
@@ -391,10 +394,12 @@ def _stl_objects(path: Path) -> list[Mesh]:
     """Return an STL file's solids as meshes of the plain material, named after the solids."""
     from pixelpath.io.meshes import read_stl_solids
 
-    return [
-        Mesh(vertices, faces, _plain_material(), name=name, source={"path": path})
-        for name, vertices, faces in read_stl_solids(path)
-    ]
+    meshes = []
+    for name, vertices, faces in read_stl_solids(path):
+        vertices, faces, normals, _, _ = _creased(vertices, faces, None, None, CREASE_ANGLE)
+        meshes.append(Mesh(vertices, faces, _plain_material(), normals, name=name,
+                           source={"path": path}))
+    return meshes
 
 
 class _Part(NamedTuple):
@@ -1471,13 +1476,14 @@ def _mesh(path: Path, part: _Part, name: str, gltf: dict | None, shared: dict) -
         uv = (_texture_transformed(uv, part.visual, gltf) if gltf is not None
               else _mtl_moved(uv, _mtl_map_of(getattr(part.visual, "material", None), shared)))
     colors = _vertex_colors(part.colors, len(vertices), linear=gltf is not None)
+    if normals is None:  # glTF asks for flat normals; other files are smoothed up to creases
+        angle = FLAT_ANGLE if gltf is not None else CREASE_ANGLE
+        vertices, faces, normals, uv, colors = _creased(vertices, faces, uv, colors, angle)
     if colors is None and part.face_colors is not None:
         face_colors = _vertex_colors(part.face_colors, len(faces), linear=False)
         if face_colors is not None:
             vertices, faces, normals, uv, colors = _face_colored(vertices, faces, normals, uv,
                                                                  face_colors)
-    if gltf is not None and normals is None:
-        vertices, faces, normals, uv, colors = _flat(vertices, faces, uv, colors)
     material = _material(path, part.visual, gltf, shared, colored=colors is not None)
     try:
         return Mesh(vertices, faces, material, normals, colors, uv, name)
@@ -1503,44 +1509,34 @@ def _face_colored(
     """
     if (face_colors == face_colors[0]).all():
         return vertices, faces, normals, uv, np.repeat(face_colors[:1], len(vertices), axis=0)
+    corners = faces.ravel()
     if normals is None:
         normals = Mesh(vertices, faces).vertex_normals
-    faces, vertices, normals, uv = _own_corners(faces, vertices, normals, uv)
-    return vertices, faces, normals, uv, np.repeat(face_colors, 3, axis=0)
+    return (vertices[corners], np.arange(len(corners)).reshape(-1, 3), normals[corners],
+            None if uv is None else uv[corners], np.repeat(face_colors, 3, axis=0))
 
 
-def _flat(
-    vertices: np.ndarray, faces: np.ndarray, uv: np.ndarray | None, colors: np.ndarray | None
+def _creased(
+    vertices: np.ndarray, faces: np.ndarray, uv: np.ndarray | None, colors: np.ndarray | None,
+    angle: float,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray | None, np.ndarray | None, np.ndarray | None]:
-    """Return a glTF part that has no normals as a flat-shaded part, as glTF asks.
+    """Return a part without normals with normals smoothed within ``angle`` degrees.
 
-    The glTF specification has a primitive without ``NORMAL`` drawn with flat normals. Where
-    every vertex's area-weighted normal is already the normal of each face around it (a
-    planar part, such as a quad) the part is kept as it is, normals left to the Mesh; otherwise
-    each corner becomes a vertex of its own carrying its face's normal (+Z on a face of no
-    area, which is never seen), with the corner's texture coordinates and colour.
+    Vertices are split along the edges sharper than that (:func:`crease_normals`), with their
+    texture coordinates and colours; a part with no such edge is kept as it is, its normals
+    left to the Mesh (the same area-weighted normals).
     """
-    shape = Mesh(vertices, faces)
-    face_normals = shape.face_normals
-    degenerate = ~face_normals.any(axis=1)
-    # cosines between each corner's vertex normal and its face's normal
-    agree = np.einsum("fkc,fc->fk", shape.vertex_normals[faces], face_normals)
-    if np.all((agree >= 1.0 - 1e-12) | degenerate[:, None]):
+    found = crease_normals(vertices, faces, angle)
+    if found is None:
         return vertices, faces, None, uv, colors
-    normals = np.repeat(face_normals, 3, axis=0)
-    normals[np.repeat(degenerate, 3)] = (0.0, 0.0, 1.0)
-    faces, vertices, uv, colors = _own_corners(faces, vertices, uv, colors)
-    return vertices, faces, normals, uv, colors
+    source, faces, normals = found
+    return (vertices[source], faces, normals, None if uv is None else uv[source],
+            None if colors is None else colors[source])
 
 
-def _own_corners(faces: np.ndarray, *per_vertex: np.ndarray | None) -> tuple:
-    """Return triangles ``faces`` with a vertex of its own at each corner, and ``per_vertex``.
-
-    Each array of ``per_vertex`` (None stays None) is taken at the corners, in their order.
-    """
-    corners = faces.ravel()
-    return (np.arange(len(corners)).reshape(-1, 3),
-            *(None if values is None else values[corners] for values in per_vertex))
+# The glTF specification asks for flat normals where a primitive has none: faces within this
+# angle (degrees) of each other are one flat face whose rounding made two normals.
+FLAT_ANGLE = 0.01
 
 
 def _placed(

@@ -1,0 +1,177 @@
+"""Vertex normals that keep a mesh's sharp edges sharp: smoothing within a crease angle.
+
+A file without normals leaves the renderer to make them. Area-weighted vertex normals (the
+average of the faces around a vertex) suit a smooth surface sampled by triangles, such as a
+scanned bunny, but round off a box: at a cube's corner they point along the diagonal, and
+Phong shading smears each face's light across its edges. Modelling tools therefore smooth
+only across edges whose faces meet at less than a crease angle (Blender's "auto smooth"):
+each corner of a face takes the area-weighted average of the faces around its vertex whose
+normals lie within the angle of its own face's, and a vertex whose corners end up with
+different normals is split into one vertex per normal.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+__all__ = ["CREASE_ANGLE", "crease_normals"]
+
+# degrees: between the common angles of CAD edges (45-degree chamfers are smoothed, a hexagonal
+# prism's 60-degree edges and right angles stay sharp); a decimated scan keeps few creases
+CREASE_ANGLE = 50.0
+
+# Corner pairs worked out at once, to bound the memory of a large mesh (about 60 MB).
+_PAIRS_AT_ONCE = 1 << 21
+
+
+def crease_normals(
+    vertices: np.ndarray, triangles: np.ndarray, angle: float = CREASE_ANGLE
+) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
+    """Return normals smoothed within ``angle`` degrees, splitting vertices along sharp edges.
+
+    Parameters
+    ----------
+    vertices : (V, 3) float64 ndarray
+    triangles : (F, 3) int ndarray
+        Indices into ``vertices``.
+    angle : float
+        Faces whose normals differ by more than this many degrees share no smoothing.
+
+    Returns
+    -------
+    (source, triangles, normals) or None
+        ``source`` (V',) the vertex of ``vertices`` each new vertex copies (its texture
+        coordinates and colour too), ``triangles`` (F, 3) into the new vertices, ``normals``
+        (V', 3) unit vectors; None when no two faces at a vertex are more than ``angle``
+        apart, so that area-weighted vertex normals are these normals already.
+
+    Examples
+    --------
+    Two faces folded at a right angle along the edge (0, 1): the edge's vertices split in two.
+
+    >>> import numpy as np
+    >>> from pixelpath.io.creases import crease_normals
+    >>> vertices = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], dtype=float)
+    >>> source, triangles, normals = crease_normals(vertices, np.array([[0, 1, 2], [0, 3, 1]]))
+    >>> sorted(source.tolist())
+    [0, 0, 1, 1, 2, 3]
+    >>> normals[triangles[0]].tolist()  # the first face's corners: its own normal, +z
+    [[0.0, 0.0, 1.0], [0.0, 0.0, 1.0], [0.0, 0.0, 1.0]]
+    >>> normals[triangles[1]].tolist()  # the second face's: +y
+    [[0.0, 1.0, 0.0], [0.0, 1.0, 0.0], [0.0, 1.0, 0.0]]
+    """
+    corners = triangles.ravel()
+    a, b, c = (vertices[triangles[:, k]] for k in range(3))
+    weighted = np.cross(b - a, c - a)  # twice each face's area, along its normal
+    face = np.arange(len(corners)) // 3
+    at_corners = np.take(weighted, face, axis=0)
+    smooth = _unit(np.stack([np.bincount(corners, at_corners[:, k], len(vertices))
+                             for k in range(3)], axis=1))
+    facing = np.take(_unit(weighted), face, axis=0)
+    # Faces all within half the angle of their vertex's smooth normal are within the angle of
+    # each other: only the other vertices ("doubtful") need their faces compared in pairs.
+    # A face of no area faces no way: it makes no crease (and weighs nothing).
+    within = np.einsum("ij,ij->i", facing, np.take(smooth, corners, axis=0))
+    doubtful = np.zeros(len(vertices), dtype=bool)
+    doubtful[corners[(within < math.cos(math.radians(angle) / 2.0)) & facing.any(axis=1)]] = True
+    if not doubtful.any():
+        return None
+    look = np.flatnonzero(doubtful[corners])
+    groups = _Groups(corners[look], at_corners[look], facing[look])
+    found = groups.normals_within(math.cos(math.radians(angle)))
+    if found is None:
+        return None
+    vertex, normals, group_vertex = found
+    sure = np.flatnonzero(~doubtful)
+    index = np.cumsum(~doubtful) - 1  # a sure vertex's place among the new vertices
+    new = index[corners]
+    new[look] = len(sure) + group_vertex[groups.group]
+    fallback = smooth[sure]
+    fallback[~fallback.any(axis=1)] = (0.0, 0.0, 1.0)  # used by no face, or faces of no area
+    return (np.concatenate([sure, vertex]), new.reshape(-1, 3),
+            np.concatenate([fallback, normals]))
+
+
+def _unit(vectors: np.ndarray) -> np.ndarray:
+    lengths = np.linalg.norm(vectors, axis=1, keepdims=True)
+    return np.divide(vectors, lengths, out=np.zeros_like(vectors), where=lengths > 0.0)
+
+
+class _Groups:
+    """The corners of each vertex grouped by the way their faces face.
+
+    Faces around a vertex often face the same way (a CAD part's flat side is a fan of many
+    triangles): their corners form one group, so that pairs are made of groups, not of
+    corners, which keeps the pairs few at a vertex of hundreds of faces. Two faces are in
+    one group when their unit normals agree to about 1e-6 (:func:`_direction_keys`).
+    """
+
+    def __init__(self, corners: np.ndarray, weighted: np.ndarray, unit: np.ndarray) -> None:
+        order, first = _runs(corners, _direction_keys(unit))
+        self.group = np.empty(len(corners), dtype=np.intp)  # each corner's group
+        self.group[order] = np.cumsum(first) - 1
+        self.vertex = corners[order[first]]  # each group's vertex, groups ordered by vertex
+        self.unit = unit[order[first]]  # the way its faces face
+        count = len(self.vertex)
+        self.weighted = np.stack([np.bincount(self.group, weighted[:, k], count)
+                                  for k in range(3)], axis=1)
+
+    def normals_within(
+        self, cos_limit: float
+    ) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
+        """Return the new vertices' (vertex, normal) and each group's new vertex.
+
+        A group's normal sums the weighted normals of its vertex's groups within the limit;
+        groups of a vertex that come to the same normal share a new vertex. None when every
+        group takes in every other group of its vertex (no crease).
+        """
+        sums = self._sums_within(cos_limit)
+        if sums is None:
+            return None
+        normals = _unit(sums)
+        flat = ~normals.any(axis=1)  # faces of no area all round: their own normal, or +z
+        normals[flat] = self.unit[flat]
+        normals[~normals.any(axis=1)] = (0.0, 0.0, 1.0)
+        order, first = _runs(self.vertex, _direction_keys(normals))
+        new = np.empty(len(order), dtype=np.intp)
+        new[order] = np.cumsum(first) - 1
+        return self.vertex[order[first]], normals[order[first]], new
+
+    def _sums_within(self, cos_limit: float) -> np.ndarray | None:
+        count = len(self.vertex)
+        starts = np.flatnonzero(np.r_[True, self.vertex[1:] != self.vertex[:-1]])
+        sizes = np.diff(np.r_[starts, count])
+        group_size, group_start = np.repeat(sizes, sizes), np.repeat(starts, sizes)
+        sums = np.zeros((count, 3))
+        creased = False
+        pointless = ~self.unit.any(axis=1)  # a group of faces of no area goes with any
+        bounds = np.searchsorted(np.cumsum(group_size),
+                                 np.arange(0, group_size.sum(), _PAIRS_AT_ONCE))
+        for lo, hi in zip(bounds, [*bounds[1:], count], strict=True):
+            k = group_size[lo:hi]
+            mine = np.repeat(np.arange(lo, hi), k)  # each group beside each of its vertex's
+            step = np.arange(len(mine)) - np.repeat(np.cumsum(k) - k, k)
+            theirs = np.repeat(group_start[lo:hi], k) + step
+            cosines = np.einsum("ij,ij->i", np.take(self.unit, mine, axis=0),
+                                np.take(self.unit, theirs, axis=0))
+            keep = (cosines >= cos_limit) | (mine == theirs) | pointless[mine] | pointless[theirs]
+            creased = creased or not keep.all()
+            kept = np.take(self.weighted, theirs[keep], axis=0)
+            for axis in range(3):
+                sums[:, axis] += np.bincount(mine[keep], kept[:, axis], minlength=count)
+        return sums if creased else None
+
+
+def _direction_keys(unit: np.ndarray) -> np.ndarray:
+    """Return one int64 per unit vector: its components to 20 bits each (steps of 2e-6)."""
+    steps = np.rint((unit + 1.0) * ((1 << 19) - 0.5)).astype(np.int64)  # 0 .. 2^20 - 1
+    return (steps[:, 0] << 40) | (steps[:, 1] << 20) | steps[:, 2]
+
+
+def _runs(vertex: np.ndarray, key: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Return the order that sorts by ``vertex``, then ``key``, and where each run starts."""
+    order = np.lexsort((key, vertex))
+    vertex, key = vertex[order], key[order]
+    return order, np.r_[True, (vertex[1:] != vertex[:-1]) | (key[1:] != key[:-1])]
