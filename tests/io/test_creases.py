@@ -84,6 +84,15 @@ def test_a_smooth_surface_is_left_to_area_weighted_normals():
     assert crease_normals(np.asarray(sphere.vertices, float), np.asarray(sphere.faces)) is None
 
 
+def test_an_angle_of_0_draws_every_face_flat_unless_the_part_is_planar():
+    source, triangles, normals = crease_normals(CUBE_VERTICES, CUBE_TRIANGLES, 0.0)
+    np.testing.assert_array_equal(source, CUBE_TRIANGLES.ravel())  # a vertex per corner
+    np.testing.assert_array_equal(normals[triangles],
+                                  np.repeat(CUBE_NORMALS[:, None], 3, axis=1))
+    side = CUBE_TRIANGLES[:2]  # the two triangles of the side x = 0
+    assert crease_normals(CUBE_VERTICES, side, 0.0) is None
+
+
 def test_a_face_of_no_area_makes_no_crease():
     vertices = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 0, 0]], float)  # 3 on 0
     assert crease_normals(vertices, np.array([[0, 1, 2], [0, 2, 3]])) is None

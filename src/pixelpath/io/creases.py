@@ -37,7 +37,8 @@ def crease_normals(
     triangles : (F, 3) int ndarray
         Indices into ``vertices``.
     angle : float
-        Faces whose normals differ by more than this many degrees share no smoothing.
+        Faces whose normals differ by more than this many degrees share no smoothing; 0
+        draws every face flat (each corner of a part that is not planar its own vertex).
 
     Returns
     -------
@@ -70,10 +71,12 @@ def crease_normals(
     smooth = _unit(np.stack([np.bincount(corners, at_corners[:, k], len(vertices))
                              for k in range(3)], axis=1))
     facing = np.take(_unit(weighted), face, axis=0)
+    within = np.einsum("ij,ij->i", facing, np.take(smooth, corners, axis=0))
+    if angle == 0.0:
+        return _flat(corners, facing, within)
     # Faces all within half the angle of their vertex's smooth normal are within the angle of
     # each other: only the other vertices ("doubtful") need their faces compared in pairs.
     # A face of no area faces no way: it makes no crease (and weighs nothing).
-    within = np.einsum("ij,ij->i", facing, np.take(smooth, corners, axis=0))
     doubtful = np.zeros(len(vertices), dtype=bool)
     doubtful[corners[(within < math.cos(math.radians(angle) / 2.0)) & facing.any(axis=1)]] = True
     if not doubtful.any():
@@ -92,6 +95,23 @@ def crease_normals(
     fallback[~fallback.any(axis=1)] = (0.0, 0.0, 1.0)  # used by no face, or faces of no area
     return (np.concatenate([sure, vertex]), new.reshape(-1, 3),
             np.concatenate([fallback, normals]))
+
+
+def _flat(
+    corners: np.ndarray, facing: np.ndarray, within: np.ndarray
+) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
+    """Return every corner as a vertex of its own with its face's normal; None for a flat part.
+
+    ``within`` holds the cosine between each corner's face normal and its vertex's smooth
+    normal: 1 at every corner (faces of no area aside) is a part whose vertices' faces all face
+    one way, whose area-weighted normals are its faces' normals already.
+    """
+    real = facing.any(axis=1)
+    if np.all((within >= 1.0 - 1e-12) | ~real):
+        return None
+    normals = facing.copy()
+    normals[~real] = (0.0, 0.0, 1.0)  # faces of no area, never seen
+    return corners.copy(), np.arange(len(corners)).reshape(-1, 3), normals
 
 
 def _unit(vectors: np.ndarray) -> np.ndarray:

@@ -1534,9 +1534,8 @@ def _creased(
             None if colors is None else colors[source])
 
 
-# The glTF specification asks for flat normals where a primitive has none: faces within this
-# angle (degrees) of each other are one flat face whose rounding made two normals.
-FLAT_ANGLE = 0.01
+# The glTF specification asks for flat normals where a primitive has none: a crease angle of 0.
+FLAT_ANGLE = 0.0
 
 
 def _placed(
