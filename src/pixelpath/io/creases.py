@@ -86,11 +86,11 @@ def crease_normals(
     found = groups.normals_within(math.cos(math.radians(angle)))
     if found is None:
         return None
-    vertex, normals, group_vertex = found
+    vertex, normals, group_new = found
     sure = np.flatnonzero(~doubtful)
     index = np.cumsum(~doubtful) - 1  # a sure vertex's place among the new vertices
     new = index[corners]
-    new[look] = len(sure) + group_vertex[groups.group]
+    new[look] = len(sure) + group_new[groups.group]
     fallback = smooth[sure]
     fallback[~fallback.any(axis=1)] = (0.0, 0.0, 1.0)  # used by no face, or faces of no area
     return (np.concatenate([sure, vertex]), new.reshape(-1, 3),
@@ -144,8 +144,8 @@ class _Groups:
         """Return the new vertices' (vertex, normal) and each group's new vertex.
 
         A group's normal sums the weighted normals of its vertex's groups within the limit;
-        groups of a vertex that come to the same normal share a new vertex. None when every
-        group takes in every other group of its vertex (no crease).
+        groups of a vertex that come to the same normal (to 2e-6) share a new vertex. None
+        when every group takes in every other group of its vertex (no crease).
         """
         sums = self._sums_within(cos_limit)
         if sums is None:
