@@ -9,6 +9,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+import pixelpath as pp
 import pixelpath.io.creases as creases
 from pixelpath.io.creases import CREASE_ANGLE, crease_normals
 from pixelpath.io.models import read_model
@@ -94,8 +95,29 @@ def test_an_angle_of_0_draws_every_face_flat_unless_the_part_is_planar():
 
 
 def test_a_face_of_no_area_makes_no_crease():
-    vertices = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 0, 0]], float)  # 3 on 0
+    vertices = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [2, 2, 0]], float)  # 0, 2, 3 in line
     assert crease_normals(vertices, np.array([[0, 1, 2], [0, 2, 3]])) is None
+
+
+def test_copies_of_a_vertex_at_one_point_share_its_normal():
+    """A texture seam: trimesh gives a vertex a copy for each (position, uv) pair. The
+    sphere's faces on one side use copies of the vertices on the seam: no crease, but the
+    copies get the whole sphere's normals, not each their side's."""
+    import trimesh
+
+    sphere = trimesh.creation.icosphere(subdivisions=2)
+    vertices, triangles = np.asarray(sphere.vertices, float), np.array(sphere.faces)
+    east = vertices[triangles].mean(axis=1)[:, 0] > 0.0
+    seam = np.unique(triangles[east])
+    copies = np.full(len(vertices), -1)
+    copies[seam] = len(vertices) + np.arange(len(seam))
+    triangles[east] = copies[triangles[east]]
+    source, new, normals = crease_normals(np.vstack([vertices, vertices[seam]]), triangles)
+    np.testing.assert_array_equal(new, triangles)  # no crease: nothing split
+    np.testing.assert_array_equal(source, np.arange(len(vertices) + len(seam)))
+    np.testing.assert_array_equal(normals[len(vertices):], normals[seam])
+    welded = pp.Mesh(vertices, np.asarray(sphere.faces)).vertex_normals  # area-weighted
+    np.testing.assert_allclose(normals[: len(vertices)], welded, atol=1e-12)
 
 
 def test_large_meshes_are_worked_out_in_pieces_with_the_same_result(monkeypatch):

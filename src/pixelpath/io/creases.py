@@ -7,7 +7,9 @@ Phong shading smears each face's light across its edges. Modelling tools therefo
 only across edges whose faces meet at less than a crease angle (Blender's "auto smooth"):
 each corner of a face takes the area-weighted average of the faces around its vertex whose
 normals lie within the angle of its own face's, and a vertex whose corners end up with
-different normals is split into one vertex per normal.
+different normals is split into one vertex per normal. Vertices at the same point (the copies
+trimesh makes along a texture seam, one per texture coordinate) are one place for this, so
+that a smooth textured surface shows no seam in its shading.
 """
 
 from __future__ import annotations
@@ -68,33 +70,38 @@ def crease_normals(
     weighted = np.cross(b - a, c - a)  # twice each face's area, along its normal
     face = np.arange(len(corners)) // 3
     at_corners = np.take(weighted, face, axis=0)
-    smooth = _unit(np.stack([np.bincount(corners, at_corners[:, k], len(vertices))
-                             for k in range(3)], axis=1))
     facing = np.take(_unit(weighted), face, axis=0)
-    within = np.einsum("ij,ij->i", facing, np.take(smooth, corners, axis=0))
+    # Normals are made per place: copies of a vertex at one point (a texture seam's, which
+    # trimesh splits) share them, or the seam would show in the shading. Flat faces need none.
+    place = np.arange(len(vertices)) if angle == 0.0 else _places(vertices)
+    at = place[corners]
+    smooth = _unit(np.stack([np.bincount(at, at_corners[:, k], place.max(initial=-1) + 1)
+                             for k in range(3)], axis=1))
+    within = np.einsum("ij,ij->i", facing, np.take(smooth, at, axis=0))
     if angle == 0.0:
         return _flat(corners, facing, within)
-    # Faces all within half the angle of their vertex's smooth normal are within the angle of
-    # each other: only the other vertices ("doubtful") need their faces compared in pairs.
+    smooth[~smooth.any(axis=1)] = (0.0, 0.0, 1.0)  # a place of faces of no area, never seen
+    # Faces all within half the angle of their place's smooth normal are within the angle of
+    # each other: only the other places ("doubtful") need their faces compared in pairs.
     # A face of no area faces no way: it makes no crease (and weighs nothing).
-    doubtful = np.zeros(len(vertices), dtype=bool)
-    doubtful[corners[(within < math.cos(math.radians(angle) / 2.0)) & facing.any(axis=1)]] = True
-    if not doubtful.any():
-        return None
-    look = np.flatnonzero(doubtful[corners])
-    groups = _Groups(corners[look], at_corners[look], facing[look])
-    found = groups.normals_within(math.cos(math.radians(angle)))
-    if found is None:
-        return None
-    vertex, normals, group_new = found
-    sure = np.flatnonzero(~doubtful)
-    index = np.cumsum(~doubtful) - 1  # a sure vertex's place among the new vertices
-    new = index[corners]
-    new[look] = len(sure) + group_new[groups.group]
-    fallback = smooth[sure]
-    fallback[~fallback.any(axis=1)] = (0.0, 0.0, 1.0)  # used by no face, or faces of no area
-    return (np.concatenate([sure, vertex]), new.reshape(-1, 3),
-            np.concatenate([fallback, normals]))
+    doubtful = np.zeros(len(smooth), dtype=bool)
+    doubtful[at[(within < math.cos(math.radians(angle) / 2.0)) & facing.any(axis=1)]] = True
+    look = np.flatnonzero(doubtful[at])
+    groups = _Groups(at[look], at_corners[look], facing[look]) if len(look) else None
+    normals = groups and groups.normals_within(math.cos(math.radians(angle)))
+    if normals is None:  # no crease: the smooth normals, unless every vertex has a place
+        seams = place.max(initial=-1) + 1 < len(vertices)
+        return (np.arange(len(vertices)), triangles, smooth[place]) if seams else None
+    # a vertex at a smooth place keeps its index; the corners at the other places make a
+    # vertex for each of their vertices and normals
+    sure = ~doubtful[place]
+    new = (np.cumsum(sure) - 1)[corners]
+    split = normals[groups.group]
+    order, first = _runs(corners[look], _direction_keys(split))
+    new[look[order]] = np.count_nonzero(sure) + np.cumsum(first) - 1
+    ends = order[first]
+    return (np.concatenate([np.flatnonzero(sure), corners[look][ends]]), new.reshape(-1, 3),
+            np.concatenate([smooth[place[sure]], split[ends]]))
 
 
 def _flat(
@@ -138,14 +145,10 @@ class _Groups:
         self.weighted = np.stack([np.bincount(self.group, weighted[:, k], count)
                                   for k in range(3)], axis=1)
 
-    def normals_within(
-        self, cos_limit: float
-    ) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
-        """Return the new vertices' (vertex, normal) and each group's new vertex.
+    def normals_within(self, cos_limit: float) -> np.ndarray | None:
+        """Return each group's normal: the sum of its place's groups' within the limit.
 
-        A group's normal sums the weighted normals of its vertex's groups within the limit;
-        groups of a vertex that come to the same normal (to 2e-6) share a new vertex. None
-        when every group takes in every other group of its vertex (no crease).
+        None when every group takes in every other group of its place (no crease).
         """
         sums = self._sums_within(cos_limit)
         if sums is None:
@@ -154,10 +157,7 @@ class _Groups:
         flat = ~normals.any(axis=1)  # faces of no area all round: their own normal, or +z
         normals[flat] = self.unit[flat]
         normals[~normals.any(axis=1)] = (0.0, 0.0, 1.0)
-        order, first = _runs(self.vertex, _direction_keys(normals))
-        new = np.empty(len(order), dtype=np.intp)
-        new[order] = np.cumsum(first) - 1
-        return self.vertex[order[first]], normals[order[first]], new
+        return normals
 
     def _sums_within(self, cos_limit: float) -> np.ndarray | None:
         count = len(self.vertex)
@@ -182,6 +182,16 @@ class _Groups:
             for axis in range(3):
                 sums[:, axis] += np.bincount(mine[keep], kept[:, axis], minlength=count)
         return sums if creased else None
+
+
+def _places(vertices: np.ndarray) -> np.ndarray:
+    """Return, for each vertex, the index of its point among the distinct points."""
+    order = np.lexsort(vertices.T[::-1])
+    ordered = vertices[order]
+    first = np.r_[True, (ordered[1:] != ordered[:-1]).any(axis=1)]
+    place = np.empty(len(vertices), dtype=np.intp)
+    place[order] = np.cumsum(first) - 1
+    return place
 
 
 def _direction_keys(unit: np.ndarray) -> np.ndarray:

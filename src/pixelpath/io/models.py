@@ -34,8 +34,9 @@ What a model file gives (:func:`read_model`)
   no normals, so a CAD part exported by trimesh shows its flat faces, not smooth shading
   stretched across its edges). An OBJ, PLY or STL part without normals is smoothed within a
   crease angle of 50 degrees (:func:`~pixelpath.io.creases.crease_normals`): a scanned or
-  finely tessellated surface gets the faces' area-weighted normals, as before, while the
-  sharp edges of a CAD part (an STL file's cube) stay sharp, its vertices split there. A zero
+  finely tessellated surface gets the faces' area-weighted normals, as before (now also
+  across texture seams, where trimesh splits vertices), while the sharp edges of a CAD part
+  (an STL file's cube) stay sharp, its vertices split there. A zero
   vector in the file (some exporters write them at degenerate corners) becomes the faces'
   normal there, and non-finite ones drop the part's stored normals (as if it had none).
 - **Texture coordinates**: pixelpath's uv have v up, (0, 0) the bottom-left of the image.
