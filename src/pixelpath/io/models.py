@@ -1537,8 +1537,9 @@ def _creased(
     """Return a part without normals with normals smoothed within ``angle`` degrees.
 
     Vertices are split along the edges sharper than that (:func:`crease_normals`), with their
-    texture coordinates and colours; a part with no such edge is kept as it is, its normals
-    left to the Mesh (the same area-weighted normals).
+    texture coordinates and colours. A part with no such edge whose vertices each have a point
+    of their own is kept as it is, its normals left to the Mesh (the same area-weighted
+    normals).
     """
     found = crease_normals(vertices, faces, angle)
     if found is None:
