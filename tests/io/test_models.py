@@ -85,8 +85,9 @@ def quad_gltf(*, vertices=QUAD, indices=QUAD_FACES, image: bytes | None = None, 
 def corner_positions(mesh: pp.Mesh) -> np.ndarray:
     """Return the positions at each triangle's corners, (T, 3, 3).
 
-    The same whether a part keeps its shared vertices or, a glTF part without normals that is
-    not flat, is drawn flat with corners of their own: compare with ``expected[QUAD_TRIANGLES]``.
+    The same whether a part keeps its shared vertices or gets corners of their own (a glTF
+    part without normals that is not planar is drawn flat): compare with
+    ``expected[QUAD_TRIANGLES]``.
     """
     return mesh.vertices[mesh.triangles]
 
