@@ -48,7 +48,8 @@ def crease_normals(
         ``source`` (V',) the vertex of ``vertices`` each new vertex copies (its texture
         coordinates and colour too), ``triangles`` (F, 3) into the new vertices, ``normals``
         (V', 3) unit vectors; None when no two faces at a vertex are more than ``angle``
-        apart, so that area-weighted vertex normals are these normals already.
+        apart and no two vertices lie at one point, so that the area-weighted vertex normals
+        are these normals already.
 
     Examples
     --------
