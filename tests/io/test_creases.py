@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from test_models import DATA, FUZZ, _only_named_errors
 
 import pixelpath as pp
 import pixelpath.io.creases as creases
@@ -180,3 +181,23 @@ def test_normals_in_the_file_are_kept(tmp_path):
     (tmp_path / "given.obj").write_text(lines)
     (mesh,) = read_model(tmp_path / "given.obj").objects
     np.testing.assert_array_equal(mesh.normals, [[0, 0, 1]] * len(mesh.vertices))
+
+
+CUBE_FILES = {"cube.stl": _ascii_stl(CUBE_VERTICES, CUBE_TRIANGLES).encode(),
+              "cube.obj": _obj(CUBE_VERTICES, CUBE_TRIANGLES).encode(),
+              "multibody.stl": (DATA / "multibody.stl").read_bytes()}
+
+
+@FUZZ
+@given(name=st.sampled_from(sorted(CUBE_FILES)), cut=st.floats(0.0, 1.0),
+       edits=st.lists(st.tuples(st.floats(0.0, 1.0), st.sampled_from(b"0123456789-. e/\nf")),
+                      max_size=6))
+def test_fuzz_mesh_files_without_normals(tmp_path, name, cut, edits):
+    """Truncated and edited files whose parts get crease normals: they load, or raise a
+    ValueError or TypeError naming the file."""
+    data = bytearray(CUBE_FILES[name])
+    for where, byte in edits:
+        data[min(int(where * len(data)), len(data) - 1)] = byte
+    path = tmp_path / name
+    path.write_bytes(bytes(data[: max(1, int(cut * len(data)))] if cut < 1.0 else data))
+    _only_named_errors(path)
