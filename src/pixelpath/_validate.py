@@ -135,6 +135,21 @@ def unit_rows(vectors: np.ndarray, lengths: np.ndarray | None = None) -> np.ndar
     return unit
 
 
+def unit_or_zero(vectors: np.ndarray) -> np.ndarray:
+    """Return (N, 3) ``vectors`` scaled to unit length; a row of length 0 becomes 0.
+
+    For normals summed from faces, where a zero sum (faces of no area) means no direction.
+
+    Examples
+    --------
+    >>> from pixelpath._validate import unit_or_zero
+    >>> unit_or_zero(np.array([[0.0, 3.0, 4.0], [0.0, 0.0, 0.0]])).tolist()
+    [[0.0, 0.6, 0.8], [0.0, 0.0, 0.0]]
+    """
+    lengths = np.linalg.norm(vectors, axis=1, keepdims=True)
+    return np.divide(vectors, lengths, out=np.zeros_like(vectors), where=lengths > 0.0)
+
+
 def row_lengths(vectors: np.ndarray) -> np.ndarray:
     """Return the lengths of (..., 3) vectors, shaped (..., 1).
 

@@ -18,6 +18,8 @@ import math
 
 import numpy as np
 
+from pixelpath import _validate as v
+
 __all__ = ["CREASE_ANGLE", "crease_normals"]
 
 # degrees: between the common angles of CAD edges (45-degree chamfers are smoothed, a hexagonal
@@ -71,12 +73,12 @@ def crease_normals(
     weighted = np.cross(b - a, c - a)  # twice each face's area, along its normal
     face = np.arange(len(corners)) // 3
     at_corners = np.take(weighted, face, axis=0)
-    facing = np.take(_unit(weighted), face, axis=0)
+    facing = np.take(v.unit_or_zero(weighted), face, axis=0)
     # Normals are made per place: copies of a vertex at one point (a texture seam's, which
     # trimesh splits) share them, or the seam would show in the shading. Flat faces need none.
     place = np.arange(len(vertices)) if angle == 0.0 else _places(vertices)
     at = place[corners]
-    smooth = _unit(np.stack([np.bincount(at, at_corners[:, k], place.max(initial=-1) + 1)
+    smooth = v.unit_or_zero(np.stack([np.bincount(at, at_corners[:, k], place.max(initial=-1) + 1)
                              for k in range(3)], axis=1))
     within = np.einsum("ij,ij->i", facing, np.take(smooth, at, axis=0))
     if angle == 0.0:
@@ -122,11 +124,6 @@ def _flat(
     return corners.copy(), np.arange(len(corners)).reshape(-1, 3), normals
 
 
-def _unit(vectors: np.ndarray) -> np.ndarray:
-    lengths = np.linalg.norm(vectors, axis=1, keepdims=True)
-    return np.divide(vectors, lengths, out=np.zeros_like(vectors), where=lengths > 0.0)
-
-
 class _Groups:
     """The corners of each vertex grouped by the way their faces face.
 
@@ -154,7 +151,7 @@ class _Groups:
         sums = self._sums_within(cos_limit)
         if sums is None:
             return None
-        normals = _unit(sums)
+        normals = v.unit_or_zero(sums)
         flat = ~normals.any(axis=1)  # faces of no area all round: their own normal, or +z
         normals[flat] = self.unit[flat]
         normals[~normals.any(axis=1)] = (0.0, 0.0, 1.0)

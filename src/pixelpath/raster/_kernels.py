@@ -509,12 +509,8 @@ def _row_surface_colors(j, x0, ids, info, setup, triangles, uv, vertex_colors, t
         out[i, 1] = g
         out[i, 2] = bl
         if texture >= 0:
-            u, v, dudx, dvdx, dudy, dvdy = texture_at(line, x)
-            lookups[0, count] = u
-            lookups[1, count] = v
-            lookups[2, count] = footprint_squared(tables, texture, dudx, dvdx, dudy, dvdy)
-            lookup_columns[count] = i
-            lookup_textures[count] = texture
+            _list_lookup(lookups, lookup_columns, lookup_textures, count, tables, texture, line,
+                         x, i)
             count += 1
     if count > 0:
         _apply_lookups(np.intp(0), count, tables, batch, out)
@@ -549,16 +545,26 @@ def _row_glow(j, x0, ids, info, setup, triangles, uv, tables, emission, batch):
             obj = info[t, 0]
             line = texture_line(setup, t, y, uv, triangles[t, 0], triangles[t, 1],
                                 triangles[t, 2])
-        u, v, dudx, dvdx, dudy, dvdy = texture_at(line, (x0 + i) + 0.5)
-        batch.lookups[0, count] = u
-        batch.lookups[1, count] = v
-        batch.lookups[2, count] = footprint_squared(tables, glow, dudx, dvdx, dudy, dvdy)
-        batch.lookup_columns[count] = i
-        batch.lookup_textures[count] = glow
+        _list_lookup(batch.lookups, batch.lookup_columns, batch.lookup_textures, count, tables,
+                     glow, line, (x0 + i) + 0.5, i)
         count += 1
         for channel in range(3):
             batch.row_glow[i, channel] = emission[obj, channel]
     _apply_lookups(width, count, tables, batch, batch.row_glow)
+
+
+@njit(inline="always")
+def _list_lookup(lookups, columns, textures, q, tables, texture, line, x, i):
+    """List, as lookup q of a row, ``texture`` read at pixel i (centre x) of a triangle's line.
+
+    Its texture coordinates and squared footprint (:func:`texture_at`), its column and texture.
+    """
+    u, v, dudx, dvdx, dudy, dvdy = texture_at(line, x)
+    lookups[0, q] = u
+    lookups[1, q] = v
+    lookups[2, q] = footprint_squared(tables, texture, dudx, dvdx, dudy, dvdy)
+    columns[q] = i
+    textures[q] = texture
 
 
 # A kernel of its own, called once per row. When Numba still copied the lookups (sample_level)

@@ -19,7 +19,7 @@ from pixelpath._jit import njit
 from pixelpath.raytrace._hit_kernels import plane_t, refract_direction, sphere_roots, sphere_t
 from pixelpath.raytrace._records import PLANE, SPHERE, TRANSPARENCY
 from pixelpath.raytrace._traversal_kernels import MISS
-from pixelpath.scene._texture_kernels import GLOW, sample, surface_color, texel_footprint
+from pixelpath.scene._texture_kernels import GLOW, sample_at, surface_color
 
 # These helpers are inlined into their callers (see pixelpath._jit): by LLVM (forceinline) the
 # larger ones called from several places, by Numba the others, whose conversion saved no
@@ -254,14 +254,10 @@ def textured_emission(scene, emission, obj, index, w1, w2, px, py, pz, nx, ny, n
     The texture is read at the hit's texture coordinates, filtered for the pixel's footprint
     there (:func:`_hit_span`), as the surface colour's is.
     """
-    texture = scene.tables.objects[obj, GLOW]
     span = _hit_span(scene, index, px, py, pz, nx, ny, nz, dx, dy, dz)
-    first = 3 * index
-    w0, uv = 1.0 - w1 - w2, scene.tri_uv
-    u = w0 * uv[first, 0] + w1 * uv[first + 1, 0] + w2 * uv[first + 2, 0]
-    v = w0 * uv[first, 1] + w1 * uv[first + 1, 1] + w2 * uv[first + 2, 1]
-    footprint = texel_footprint(scene.tables, texture, span, 0.0, 0.0, span)
-    r, g, b, _ = sample(scene.tables, texture, u, v, footprint)
+    first = 3 * index  # the triangle's corners' rows of tri_uv
+    r, g, b, _ = sample_at(scene.tables, scene.tables.objects[obj, GLOW], scene.tri_uv, first,
+                           first + 1, first + 2, 1.0 - w1 - w2, w1, w2, span, 0.0, 0.0, span)
     return emission[0] * r, emission[1] * g, emission[2] * b
 
 

@@ -277,15 +277,24 @@ def surface_color(tables, materials, obj, uv, colors, a, b, c, w0, w1, w2, dudx,
     r, g, bl, alpha = base_color(tables, materials, obj, colors, a, b, c, w0, w1, w2)
     texture = tables.objects[obj, TEXTURE]
     if texture >= 0:
-        u = w0 * uv[a, 0] + w1 * uv[b, 0] + w2 * uv[c, 0]
-        v = w0 * uv[a, 1] + w1 * uv[b, 1] + w2 * uv[c, 1]
-        footprint = texel_footprint(tables, texture, dudx, dvdx, dudy, dvdy)
-        tr, tg, tb, ta = sample(tables, texture, u, v, footprint)
+        tr, tg, tb, ta = sample_at(tables, texture, uv, a, b, c, w0, w1, w2, dudx, dvdx, dudy,
+                                   dvdy)
         r *= tr
         g *= tg
         bl *= tb
         alpha *= ta
     return r, g, bl, alpha
+
+
+@njit(inline="always")
+def sample_at(tables, texture, uv, a, b, c, w0, w1, w2, dudx, dvdx, dudy, dvdy):
+    """``texture`` (r, g, b, alpha) at the texture coordinates of weights (w0, w1, w2) of a, b, c.
+
+    Filtered for the footprint that (dudx, dvdx) and (dudy, dvdy) span (:func:`texel_footprint`).
+    """
+    u = w0 * uv[a, 0] + w1 * uv[b, 0] + w2 * uv[c, 0]
+    v = w0 * uv[a, 1] + w1 * uv[b, 1] + w2 * uv[c, 1]
+    return sample(tables, texture, u, v, texel_footprint(tables, texture, dudx, dvdx, dudy, dvdy))
 
 
 @njit(inline="always")

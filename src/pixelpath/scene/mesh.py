@@ -240,7 +240,7 @@ class Mesh:
     @functools.cached_property
     def face_normals(self) -> np.ndarray:
         """(F, 3) unit face normals by Newell's method; zero for degenerate faces."""
-        return v.frozen(_normalized(self._newell))
+        return v.frozen(v.unit_or_zero(self._newell))
 
     @functools.cached_property
     def vertex_normals(self) -> np.ndarray:
@@ -252,7 +252,7 @@ class Mesh:
         sums = np.stack(
             [np.bincount(self.face_indices, owner[:, axis], count) for axis in range(3)], axis=1
         )
-        return v.frozen(_normalized(sums))
+        return v.frozen(v.unit_or_zero(sums))
 
     def bounds(self) -> np.ndarray:
         """Return the (2, 3) axis-aligned bounding box ``[minimum, maximum]`` of the vertices.
@@ -529,11 +529,6 @@ def _cross(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> Any:
     """Return the z of (b - a) × (c - a): positive when a, b, c turn counter-clockwise."""
     c = np.asarray(c)
     return (b[0] - a[0]) * (c[..., 1] - a[1]) - (b[1] - a[1]) * (c[..., 0] - a[0])
-
-
-def _normalized(vectors: np.ndarray) -> np.ndarray:
-    lengths = np.linalg.norm(vectors, axis=1, keepdims=True)
-    return np.divide(vectors, lengths, out=np.zeros_like(vectors), where=lengths > 0.0)
 
 
 def _affine_parts(matrix: Any) -> tuple[np.ndarray, np.ndarray]:
