@@ -369,3 +369,50 @@ def test_plain_helpers_are_inlined_by_llvm_into_their_callers():
     assert result["forced"] is True
     assert result["always_inline"] is True
     assert result["calls"] == 0
+
+
+KERNEL_ONLY = """
+import json
+import numpy as np
+from pixelpath._jit import njit
+from pixelpath.scene._texture_kernels import wrapped
+
+def add_one(x):
+    return x + 1.0
+
+helper = njit(from_python=False, cache=False)(add_one)
+
+def through_helper(values):
+    return helper(values[0])
+
+kernel = njit(cache=False)(through_helper)
+result = kernel(np.array([2.0]))
+messages = []
+for function, arguments in ((helper, (2.0,)), (wrapped, (5, 4, 0))):
+    try:
+        function(*arguments)
+    except TypeError as error:
+        messages.append(str(error))
+
+def wrappers(dispatcher):
+    compiled = dispatcher.overloads[dispatcher.signatures[0]]
+    library, names = compiled.library, compiled.fndesc
+    return [library.get_pointer_to_function(name) != 0
+            for name in (names.llvm_cpython_wrapper_name, names.llvm_cfunc_wrapper_name)]
+
+print(json.dumps({"result": result, "messages": messages, "kernel": wrappers(kernel),
+                  "helper": wrappers(helper)}))
+"""
+
+
+def test_helpers_for_kernels_only_have_no_python_wrapper_and_refuse_python_calls():
+    # A helper compiled without the CPython wrapper (njit(from_python=False)) would crash the
+    # interpreter if Python called it (a jump to address 0): it raises a TypeError instead.
+    # No kernel gets Numba's C-callable wrapper, and only Python's entry points the CPython one.
+    result = run_python(KERNEL_ONLY, **JIT_ON)
+    assert result["result"] == 3.0
+    assert len(result["messages"]) == 2
+    assert "add_one is compiled for other kernels to call" in result["messages"][0]
+    assert "_texture_kernels.wrapped is compiled for other kernels" in result["messages"][1]
+    assert result["kernel"] == [True, False]
+    assert result["helper"] == [False, False]

@@ -172,7 +172,7 @@ def check_subject(xy):
     return TOO_FEW_VERTICES
 
 
-@njit
+@njit(from_python=False)
 def _run_stages(xy, table, a, b):
     """Clip ``xy`` through every boundary, ping-ponging between scratch buffers ``a``, ``b``.
 
@@ -251,7 +251,7 @@ def _bounds(xy):
     return xmin, ymin, xmax, ymax, repeats
 
 
-@njit
+@njit(from_python=False)
 def _scan_bridges(poly, m, table, out):
     """Count the zero-width bridges of ``poly[:m]``; write them into ``out`` if it has room.
 

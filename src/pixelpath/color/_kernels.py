@@ -91,7 +91,7 @@ def load3(src, i, scale):
     return a, b, c, not_finite((a - a) + (b - b) + (c - c))
 
 
-@njit(error_model="numpy")
+@njit(error_model="numpy", from_python=False)
 def affine_span(src, dst, scale, matrix, offset):
     m00, m01, m02 = matrix[0, 0], matrix[0, 1], matrix[0, 2]
     m10, m11, m12 = matrix[1, 0], matrix[1, 1], matrix[1, 2]
@@ -107,7 +107,7 @@ def affine_span(src, dst, scale, matrix, offset):
     return bad
 
 
-@njit(error_model="numpy")
+@njit(error_model="numpy", from_python=False)
 def rgb_to_hsx_span(src, dst, scale, lightness):
     zero, one, two, four, six, _, _, sixty = numbers(scale)
     bad = False
@@ -144,7 +144,7 @@ def clamp(x, zero, one):
     return smaller(larger(x, zero), one)
 
 
-@njit(error_model="numpy")
+@njit(error_model="numpy", from_python=False)
 def hsx_to_rgb_span(src, dst, scale, lightness):
     zero, one, two, four, six, sixth, per_degree, _ = numbers(scale)
     three = two + one
@@ -168,7 +168,7 @@ def hsx_to_rgb_span(src, dst, scale, lightness):
     return bad
 
 
-@njit(error_model="numpy")
+@njit(error_model="numpy", from_python=False)
 def rgb_to_cmyk_span(src, dst, scale):
     zero, one, _, _, _, _, _, _ = numbers(scale)
     bad = False
@@ -188,7 +188,7 @@ def rgb_to_cmyk_span(src, dst, scale):
     return bad
 
 
-@njit(error_model="numpy")
+@njit(error_model="numpy", from_python=False)
 def cmyk_to_rgb_span(src, dst, scale):
     _, one, _, _, _, _, _, _ = numbers(scale)
     bad = False

@@ -380,7 +380,7 @@ def _store_normal(normal, i, normals, a, b, c, b0, b1, b2, flipped):
 
 
 # Compiled once and inlined by LLVM into its three callers (see pixelpath._jit).
-@njit(refcount=False, forceinline=True)
+@njit(refcount=False, forceinline=True, from_python=False)
 def _line_weights(setup, t, y):
     """Return the perspective weights' numerators ``t_k = s_k / w_k`` of triangle t on row y.
 
@@ -408,7 +408,7 @@ def _weights_at(numerators, x):
 
 
 # Compiled once and inlined by LLVM into its callers (see pixelpath._jit).
-@njit(refcount=False, forceinline=True)
+@njit(refcount=False, forceinline=True, from_python=False)
 def texture_line(setup, t, y, uv, a, b, c):
     """Texture coordinates of set-up triangle t (vertices a, b, c) along scan line y.
 
@@ -448,7 +448,7 @@ def texture_at(line, x):
             (line[7] - u * line[6]) * inv, (line[8] - v * line[6]) * inv)
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def _row_surface_colors(j, x0, ids, info, setup, triangles, uv, vertex_colors, tables,
                         materials, emission, coloured, out, batch):
     """Write the surface colour (r, g, b) of row j's pixels that show a coloured object.
@@ -518,7 +518,7 @@ def _row_surface_colors(j, x0, ids, info, setup, triangles, uv, vertex_colors, t
         _row_glow(j, x0, ids, info, setup, triangles, uv, tables, emission, batch)
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def _row_glow(j, x0, ids, info, setup, triangles, uv, tables, emission, batch):
     """Write into ``batch.row_glow`` the light row j's emission-textured pixels give off.
 
@@ -678,7 +678,7 @@ def _scanline_surface(setup, t, y, triangles, positions, normals, sign):
     )
 
 
-@njit(error_model="numpy", refcount=False)
+@njit(error_model="numpy", refcount=False, from_python=False)
 def _fill_row(inv_depth_row, background, rgb_row, depth_row, id_row, normal_row, orthographic,
               near, far):
     """Write a row as if nothing were drawn, but with every drawn pixel's depth.
@@ -702,7 +702,7 @@ def _fill_row(inv_depth_row, background, rgb_row, depth_row, id_row, normal_row,
         normal_flat[3 * i + 2] = 0.0
 
 
-@njit(error_model="numpy", refcount=False)
+@njit(error_model="numpy", refcount=False, from_python=False)
 def _shade_batch(count, batch, obj, surfaces, rgb_row, normal_row):
     """Shade the gathered pixels of one row (object ``obj``'s); write their colours and normals.
 

@@ -68,21 +68,21 @@ def clip_segments(starts, ends, matrix, orthographic, screen, kept, width, heigh
     return cut
 
 
-@njit
+@njit(from_python=False)
 def _transform(matrix, row, point):
     """Return row ``row`` of ``matrix`` (4, 4) applied to the point (x, y, z, 1)."""
     return (matrix[row, 0] * point[0] + matrix[row, 1] * point[1] + matrix[row, 2] * point[2]
             + matrix[row, 3])
 
 
-@njit
+@njit(from_python=False)
 def _plane_side(plane, point):
     """Return c · (x, y, z, w) for a boundary row [PLANE, c0, c1, c2, c3] of FRUSTUM_PLANES."""
     return (plane[1] * point[0] + plane[2] * point[1] + plane[3] * point[2]
             + plane[4] * point[3])
 
 
-@njit
+@njit(from_python=False)
 def _to_screen(a, b, s, orthographic, screen, e, column, width, height):
     """Write (x, y, depth key) in pixels of the point a + s (b - a) (clip coordinates).
 
@@ -102,7 +102,7 @@ def _to_screen(a, b, s, orthographic, screen, e, column, width, height):
         screen[e, column + 2] = inv_w
 
 
-@njit
+@njit(from_python=False)
 def _end_pixels(segment, width, height):
     """Pixel indices of both ends, walked from the end earlier in scan order (row, then column).
 
@@ -119,7 +119,7 @@ def _end_pixels(segment, width, height):
     return ia, ja, ib, jb, flipped
 
 
-@njit
+@njit(from_python=False)
 def _step(i, j, error, dx, dy, sx, sy):
     """One step of Bresenham's algorithm (all octants): dx = |Δi|, dy = -|Δj|."""
     twice = 2 * error
@@ -198,7 +198,7 @@ def draw_segments(screen, kept, owner, width, height, orthographic, near, far, x
     return inside, hidden
 
 
-@njit
+@njit(from_python=False)
 def _along(coordinate, start, stop):
     """Position of ``coordinate`` between ``start`` and ``stop`` as a fraction in [0, 1]."""
     if stop == start:

@@ -80,7 +80,7 @@ def _band_rows(band, band_rows, y0, height):
     return first, min(first + band_rows, y0 + height)
 
 
-@njit
+@njit(from_python=False)
 def _clear_band(first, stop, y0, inv_depth, triangle_id):
     """Mark rows [first, stop) of the region as empty: 1/w = 0 (infinitely far), no triangle."""
     for j in range(first - y0, stop - y0):
@@ -122,7 +122,7 @@ def _rasterize_band(setup, rows, offsets, items, band, band_first, band_stop, x0
                     triangle_id[j - top, i - x0] = t
 
 
-@njit
+@njit(from_python=False)
 def _draw_masked(t, row_first, row_stop, x0, y0, inv_depth, triangle_id, cutouts, depth_test):
     """Draw alpha-tested triangle t on image rows [row_first, row_stop), skipping its holes.
 
@@ -220,7 +220,7 @@ def count_coverage(setup, rows, x0, y0, counts):
                 counts[j - y0, i - x0] += 1
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def cut_away_at(cutouts, t, x, y):
     """Whether triangle t's surface is cut away by its alpha test at pixel centre (x, y).
 

@@ -198,7 +198,7 @@ def _grown(array, needed):
 
 
 # Cutting a triangle by a plane (the painter's and BSP methods' polygon splitting).
-@njit
+@njit(from_python=False)
 def cut_triangle(vertices, count, corners, distances, eps, pieces, cut_edges, cut_params):
     """Cut a triangle by a plane into pieces that each lie on one side of it.
 

@@ -107,7 +107,7 @@ def _set_box(box, k, low, high):
         box[k, 3 + axis] = high[axis]
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def _node_boxes(boxes, start, stop, bounds, node, centre_boxes, c):
     """Write the box of boxes[start:stop] to bounds[node], of their centroids to centre_boxes[c]."""
     _empty_box(bounds, node)
@@ -119,7 +119,7 @@ def _node_boxes(boxes, start, stop, bounds, node, centre_boxes, c):
     _set_box(centre_boxes, c, low, high)
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def _best_split(boxes, start, stop, centre_boxes, c, bins, counts, sweep, right_areas, filled):
     """Return (axis, last bin of the left side, SAH sum) of the best binned split; axis -1 if none.
 
@@ -252,7 +252,7 @@ def build_bvh(boxes, order, bounds, links):
     return used, depth
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def _partition(boxes, order, start, stop, axis, last, centre_boxes, left, right):
     """Move the primitives of bins 0..last to the front of [start, stop); return the split.
 

@@ -42,7 +42,7 @@ BOX_SLACK = 2.0 * (3.0 * EPS / (1.0 - 3.0 * EPS))
 
 
 # Inlined by LLVM into its three callers (see pixelpath._jit), which left it a call otherwise.
-@njit(refcount=False, forceinline=True)
+@njit(refcount=False, forceinline=True, from_python=False)
 def sphere_roots(ox, oy, oz, dx, dy, dz, cx, cy, cz, radius):
     """Return the roots t0 <= t1 of the ray-sphere quadratic, (inf, inf) when it misses."""
     fx = ox - cx
@@ -74,7 +74,7 @@ def sphere_roots(ox, oy, oz, dx, dy, dz, cx, cy, cz, radius):
     return (t0, t1) if t0 <= t1 else (t1, t0)
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def sphere_t(t0, t1, t_min, t_max, cull):
     """Return the nearest root in (t_min, t_max), inf if none; with cull, the entering root only.
 
@@ -87,7 +87,7 @@ def sphere_t(t0, t1, t_min, t_max, cull):
     return math.inf
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def plane_t(ox, oy, oz, dx, dy, dz, qx, qy, qz, nx, ny, nz):
     """Return t = n·(Q − o) / (n·d): inf when parallel, 0 for an origin on the plane."""
     denominator = nx * dx + ny * dy + nz * dz
@@ -111,13 +111,13 @@ def slab_nan_allowed():
     return np.errstate(invalid="ignore")
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def reciprocal(value):
     """Return 1/value, ±inf for ±0 (the sign of zero kept), with no division by zero."""
     return 1.0 / value if value != 0.0 else math.copysign(math.inf, value)
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def shear_setup(ox, oy, oz, dx, dy, dz):
     """Per-ray constants of the watertight test: axes (kx, ky, kz), origin on them, shear."""
     ax, ay, az = abs(dx), abs(dy), abs(dz)
@@ -134,7 +134,7 @@ def shear_setup(ox, oy, oz, dx, dy, dz):
 
 # Inlined by LLVM into its six callers (see pixelpath._jit): left a call, the traversal loops
 # took 10-14 % longer to cast the same rays.
-@njit(refcount=False, forceinline=True)
+@njit(refcount=False, forceinline=True, from_python=False)
 def triangle_t(tris, i, kx, ky, kz, okx, oky, okz, sx, sy, sz):
     """Return (t, w1, w2) of the ray with triangle i of tris (T, 9); t = inf on a miss.
 
@@ -168,7 +168,7 @@ def triangle_t(tris, i, kx, ky, kz, okx, oky, okz, sx, sy, sz):
     return sz * (u * az + v * bz + w * cz) * inv, v * inv, w * inv
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def slab_columns(ix, iy, iz):
     """Return the columns of a box row holding each axis's near and far plane for this ray.
 
@@ -181,7 +181,7 @@ def slab_columns(ix, iy, iz):
     return nx, ny, nz, 3 - nx, 5 - ny, 7 - nz
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def box_limit(t):
     """Return t grown by the box test's rounding bound: the farthest box entry worth visiting.
 
@@ -191,7 +191,7 @@ def box_limit(t):
     return t + abs(t) * BOX_SLACK
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def box_entry(bounds, k, ox, oy, oz, ix, iy, iz, columns, t_min, t_max):
     """Return where the ray enters box k within [t_min, t_max], inf when it misses it.
 
@@ -215,7 +215,7 @@ def box_entry(bounds, k, ox, oy, oz, ix, iy, iz, columns, t_min, t_max):
     return lo if lo <= box_limit(hi) else math.inf
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def enters_box(bounds, k, ox, oy, oz, dx, dy, dz, t_min, t_max):
     """Return whether the ray enters box k within [t_min, t_max]: the traversals' own test.
 
@@ -250,7 +250,7 @@ def ray_plane_many(origins, directions, points, normals, out):
         out[r] = t if 0.0 < t < math.inf else math.inf
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def reflect_direction(dx, dy, dz, nx, ny, nz):
     """Return R = d − 2(d·N)N, the mirror image of direction d about the unit normal N."""
     dot = dx * nx + dy * ny + dz * nz
@@ -267,7 +267,7 @@ def reflect_many(directions, normals, out):
         )
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def refract_direction(dx, dy, dz, nx, ny, nz, eta):
     """Return the notes' T = ηd + (η cos θi − cos θt) N and whether it exists (False on TIR).
 

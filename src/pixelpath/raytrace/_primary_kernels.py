@@ -36,7 +36,7 @@ from pixelpath.raytrace._traversal_kernels import (
 )
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def _mul32(x, c):
     """Return x·c mod 2³² for x, c < 2³², in products below 2⁴⁹ (no int64 overflow)."""
     low = x * (c & 0xFFFF)
@@ -44,7 +44,7 @@ def _mul32(x, c):
     return (low + high) & 0xFFFFFFFF
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def _hash32(x):
     """Return a 32-bit integer hash of x (Wellons' lowbias32), in int64 arithmetic."""
     x &= 0xFFFFFFFF
@@ -56,7 +56,7 @@ def _hash32(x):
     return x
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def _uniform(pixel, sample, axis):
     """Return a number in [0, 1) fixed by (pixel, sample, axis): the same in every run."""
     h = _hash32(pixel ^ _hash32(2 * sample + axis + 0x9E3779B9))
@@ -82,7 +82,7 @@ def sample_position(pixel, sample, samples):
     return (cx + _uniform(pixel, sample, 0)) / columns, (cy + _uniform(pixel, sample, 1)) / rows
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def primary_ray(camera, px, py, width, height):
     """Return the origin and direction of the ray through image point (px, py).
 
@@ -102,7 +102,7 @@ def primary_ray(camera, px, py, width, height):
     )
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def primary_hits(y, x0, width, scene, settings, work):
     """Find the nearest hit of every primary ray of a row, the triangles a packet at a time.
 
@@ -188,7 +188,7 @@ def primary_hits(y, x0, width, scene, settings, work):
     return first, stop
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def searched_rays(y, x0, width, samples, screen_bounds, logging):
     """Return the first and stop of the eye rays of row y that :func:`primary_hits` searches.
 
@@ -295,7 +295,7 @@ def primary_shadows(first, stop, scene, settings, work):
                         hit, stack, counts, result)
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def _stored_geometry(geometry, ray):
     """Return a primary hit's point, geometric and shading normals from work.primary_geometry."""
     g = geometry

@@ -27,7 +27,7 @@ from pixelpath.scene._texture_kernels import GLOW, sample_at, surface_color
 # ray-traced frame took 7-14 % longer.
 
 
-@njit(refcount=False, forceinline=True)
+@njit(refcount=False, forceinline=True, from_python=False)
 def hit_geometry(spheres, sphere_object, planes, plane_object, tris, tri_normals, tri_flat,
                  tri_object, flat, ox, oy, oz, dx, dy, dz, t, kind, index, w1, w2):
     """Return what a ray's hit is: (object, point, geometric normal, shading normal, entering).
@@ -54,7 +54,7 @@ def hit_geometry(spheres, sphere_object, planes, plane_object, tris, tri_normals
     return obj, px, py, pz, gx, gy, gz, nx, ny, nz, entering
 
 
-@njit(refcount=False, forceinline=True)
+@njit(refcount=False, forceinline=True, from_python=False)
 def shadow_start(spheres, sphere_object, planes, plane_object, materials, lights, light, px, py,
                  pz, gx, gy, gz, lx, ly, lz, epsilon, has_analytic):
     """Return the shadow ray of a hit towards a light, with what the spheres and planes do to it.
@@ -87,7 +87,7 @@ def nearest_analytic(spheres, planes, plane_back, ox, oy, oz, dx, dy, dz, t_min,
     return t, kind, index
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def nearest_sphere(spheres, ox, oy, oz, dx, dy, dz, t_min, t_max, cull):
     """Return (t, index) of the nearest sphere hit in (t_min, t_max); (t_max, MISS) if none.
 
@@ -105,7 +105,7 @@ def nearest_sphere(spheres, ox, oy, oz, dx, dy, dz, t_min, t_max, cull):
     return best_t, index
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def nearest_plane(planes, plane_back, ox, oy, oz, dx, dy, dz, t_min, t_max, cull):
     """Return (t, index) of the nearest plane hit in (t_min, t_max); (t_max, MISS) if none.
 
@@ -132,13 +132,13 @@ def _unit(x, y, z):
     return x * inv, y * inv, z * inv
 
 
-@njit(refcount=False, forceinline=True)
+@njit(refcount=False, forceinline=True, from_python=False)
 def sphere_normal(cx, cy, cz, radius, px, py, pz):
     """Return the outward unit normal at point p of the sphere (centre c, radius)."""
     return _unit((px - cx) / radius, (py - cy) / radius, (pz - cz) / radius)
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def triangle_normals(tris, tri_normals, tri_flat, flat, index, w1, w2):
     """Return (geometric normal, shading normal) of triangle ``index`` at barycentric (w1, w2).
 
@@ -171,7 +171,7 @@ def _offset(px, py, pz, gx, gy, gz, dx, dy, dz, epsilon):
     return px + side * gx, py + side * gy, pz + side * gz
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def analytic_let_through(spheres, sphere_object, planes, plane_object, materials, ox, oy, oz,
                          dx, dy, dz, t_max):
     """Return (light let through, blocking object or MISS) by the spheres and planes.

@@ -60,7 +60,7 @@ class Cutouts(NamedTuple):
     tables: object  # SurfaceTables: textures, alpha and cutoff of each object
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def cut_away_hit(cutouts, i, w1, w2):
     """Whether triangle i's surface is cut away by its alpha test at barycentric (w1, w2).
 
@@ -207,7 +207,7 @@ def any_triangle(bounds, links, tris, pass_through, ox, oy, oz, dx, dy, dz, t_mi
     return let_through, MISS, nodes, tests
 
 
-@njit(simd=True, refcount=False)
+@njit(simd=True, refcount=False, from_python=False)
 def _enter_lanes(bounds, k, ox, oy, oz, ix, iy, iz, columns, t_min, limit):
     """Return box k's entry distance for each lane (``box_entry``, four times side by side).
 
@@ -222,7 +222,7 @@ def _enter_lanes(bounds, k, ox, oy, oz, ix, iy, iz, columns, t_min, limit):
     )
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def _packet(rays):
     """Return a packet's (coherent, slab columns, ox, oy, oz, 1/dx, 1/dy, 1/dz), each a 4-tuple.
 
@@ -258,7 +258,7 @@ def _packet_shear(rays):
     )
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def _lane_limits(best_t):
     """Return each lane's farthest box entry still worth visiting (its nearest hit, grown)."""
     return (
@@ -266,12 +266,12 @@ def _lane_limits(best_t):
     )
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def _lane(values, r):
     return values[0] if r == 0 else values[1] if r == 1 else values[2] if r == 2 else values[3]
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def _lanes_entering(entry, limit):
     return (
         (entry[0] <= limit[0]) + (entry[1] <= limit[1]) + (entry[2] <= limit[2])
@@ -394,7 +394,7 @@ def _closest_packet(bounds, links, tris, source, skip, cull, rays, lanes, t_min,
     return nodes, tests
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def _lanes_in(entry):
     """Return the bit mask of the lanes whose entry is finite (bit r for lane r)."""
     return (
@@ -403,7 +403,7 @@ def _lanes_in(entry):
     )
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def _lane_count(mask):
     return (mask & 1) + ((mask >> 1) & 1) + ((mask >> 2) & 1) + ((mask >> 3) & 1)
 
@@ -553,7 +553,7 @@ def intersect_many(bounds, links, tris, source, skip, cull, labels, origins, dir
     return unusable
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def _usable_ray(packet, r):
     """Whether row r of a packet holds a finite origin and a finite, non-zero direction.
 

@@ -112,7 +112,7 @@ from pixelpath.raytrace._traversal_kernels import MISS, any_triangle, closest_tr
 from pixelpath.scene._texture_kernels import GLOW, colored
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def _log_ray(log, row, parent, kind, depth, weight, ox, oy, oz, dx, dy, dz, sample):
     log[row, PARENT] = parent
     log[row, KIND] = kind
@@ -123,7 +123,7 @@ def _log_ray(log, row, parent, kind, depth, weight, ox, oy, oz, dx, dy, dz, samp
     log[row, SAMPLE] = sample
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def _log_miss(log, row, background):
     log[row, T] = math.inf
     log[row, OBJECT] = MISS
@@ -132,7 +132,7 @@ def _log_miss(log, row, background):
         log[row, LOCAL + c] = background[c]
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def _log_hit(log, row, t, obj, kind, index, source, px, py, pz, nx, ny, nz, gx, gy, gz,
              entering, material, shaded, kr, kt, total, fresnel, eta):
     log[row, T] = t
@@ -153,7 +153,7 @@ def _log_hit(log, row, t, obj, kind, index, source, px, py, pz, nx, ny, nz, gx, 
     log[row, ETA] = eta
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def _clamp01(value):
     return min(max(value, 0.0), 1.0)
 
@@ -456,7 +456,7 @@ def render_rows(rows, scene, settings, work, out, x0, y0, rgb, image_depth, obje
 
 
 # Compiled once and inlined by LLVM into its three places in render_rows (see pixelpath._jit).
-@njit(refcount=False, forceinline=True)
+@njit(refcount=False, forceinline=True, from_python=False)
 def _store_pixel(out, i, red, green, blue, depth, obj, nx, ny, nz):
     """Write pixel i's fields into ``out``, the row of traced pixels."""
     out[i, RED] = red

@@ -55,7 +55,7 @@ class SurfaceTables(NamedTuple):
     alpha: np.ndarray
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def wrapped(index, size, wrap):
     """Return texel ``index`` of a row or column of ``size`` texels under the wrap mode."""
     if wrap == CLAMP:
@@ -66,7 +66,7 @@ def wrapped(index, size, wrap):
     return index % size
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def _texel(tables, index):
     """Linear (r, g, b, a) of texel ``index`` of ``tables.texels``.
 
@@ -109,7 +109,7 @@ def _neighbours(x, size, wrap):
     return wrapped(i, size, wrap), wrapped(i + 1, size, wrap), fraction
 
 
-@njit(refcount=False, forceinline=True)
+@njit(refcount=False, forceinline=True, from_python=False)
 def _bilinear(tables, level, wrap, u, v):
     """Bilinear blend of the four texels around (u, v) on one level."""
     start, width, height = tables.levels[level, 0], tables.levels[level, 1], tables.levels[level, 2]
@@ -117,7 +117,7 @@ def _bilinear(tables, level, wrap, u, v):
     return blend_taps(tables, i00, i10, i01, i11, fx, fy)
 
 
-@njit(refcount=False, forceinline=True)
+@njit(refcount=False, forceinline=True, from_python=False)
 def bilinear_taps(start, width, height, wrap, u, v):
     """Return the four texels a bilinear lookup of (u, v) blends on a level, and the fractions.
 
@@ -132,7 +132,7 @@ def bilinear_taps(start, width, height, wrap, u, v):
     return upper + c0, upper + c1, lower + c0, lower + c1, fx, fy
 
 
-@njit(refcount=False, forceinline=True)
+@njit(refcount=False, forceinline=True, from_python=False)
 def blend_taps(tables, i00, i10, i01, i11, fx, fy):
     """Linear (r, g, b, a) of the bilinear blend of the texels :func:`bilinear_taps` found."""
     a = _texel(tables, i00)
@@ -219,7 +219,7 @@ def sample(tables, texture, u, v, footprint):
     return sample_level(tables, texture, u, v, level, blend)
 
 
-@njit(refcount=False, forceinline=True)
+@njit(refcount=False, forceinline=True, from_python=False)
 def sample_level(tables, texture, u, v, level, blend):
     """:func:`sample` once :func:`mip_level` has chosen the ``level`` and ``blend``."""
     first, wrap = tables.textures[texture, 0], tables.textures[texture, 3]
@@ -247,7 +247,7 @@ def colored(tables, obj):
     return tables.objects[obj, TEXTURE] >= 0 or tables.objects[obj, HAS_COLORS] != 0
 
 
-@njit(refcount=False, forceinline=True)
+@njit(refcount=False, forceinline=True, from_python=False)
 def base_color(tables, materials, obj, colors, a, b, c, w0, w1, w2):
     """:func:`surface_color` before the texture: the material's colour × the vertex colours.
 

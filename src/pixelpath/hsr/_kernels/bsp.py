@@ -63,7 +63,7 @@ def _classify(vertices, corners, plane, eps):
     return 2
 
 
-@njit
+@njit(from_python=False)
 def _new_node(planes, children, first, count, infinite, parent, side, nodes, owner, branch):
     """Append a node (no plane yet) under ``owner`` on side ``branch``; return the arrays."""
     if nodes == planes.shape[0]:
@@ -86,7 +86,7 @@ def _new_node(planes, children, first, count, infinite, parent, side, nodes, own
     return planes, children, first, count, infinite, parent, side
 
 
-@njit
+@njit(from_python=False)
 def _infinite_applies(k, node, branch, infinite, parent, side, relation):
     """Whether infinite plane k passes through the cell of side ``branch`` of ``node``.
 
@@ -102,7 +102,7 @@ def _infinite_applies(k, node, branch, infinite, parent, side, relation):
     return True
 
 
-@njit
+@njit(from_python=False)
 def _next_infinite(level, node, branch, infinite, parent, side, relation):
     """Return the first infinite plane from ``level`` on in that cell, or the plane count."""
     for k in range(level, relation.shape[0]):
@@ -111,7 +111,7 @@ def _next_infinite(level, node, branch, infinite, parent, side, relation):
     return relation.shape[0]
 
 
-@njit
+@njit(from_python=False)
 def _score(vertices, fragments, work, start, stop, step, plane, eps):
     """|front - back| + SPLIT_WEIGHT · splits over every ``step``-th polygon of the run."""
     front = 0
@@ -128,7 +128,7 @@ def _score(vertices, fragments, work, start, stop, step, plane, eps):
     return abs(front - back) + SPLIT_WEIGHT * splits, front, back
 
 
-@njit
+@njit(from_python=False)
 def _choose_splitter(vertices, fragments, source, planes, work, start, stop, eps, best, scratch):
     """Write the best splitting plane for the run into ``best``; return whose plane it is.
 
@@ -184,7 +184,7 @@ def _push(array, n, value):
     return array, n + 1
 
 
-@njit
+@njit(from_python=False)
 def _barycentric(v, t, triangles, base, weights, out):
     """Weights of vertex v over the corners of original triangle t (v is a corner or a cut)."""
     if v >= base:
@@ -195,7 +195,7 @@ def _barycentric(v, t, triangles, base, weights, out):
         out[k] = 1.0 if triangles[t, k] == v else 0.0
 
 
-@njit
+@njit(from_python=False)
 def _record_cuts(before, count, base, t, triangles, cut_edges, cut_params, blend_corners,
                  blend_weights):
     """Store, for the vertices just cut from a piece of triangle t, their blend of t's corners.

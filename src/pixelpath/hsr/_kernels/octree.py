@@ -185,7 +185,7 @@ def build_tree(bounds, candidates, root_lo, root_size, pad, leaf_size, max_depth
     return cells[:n_nodes], links[:n_nodes], items[:n_items]
 
 
-@njit
+@njit(from_python=False)
 def _new_node(cells, links, node, x, y, z, side, level, start, stop):
     """Write a node's cell, level and (for now) its range of the work array; no children."""
     cells[node, 0], cells[node, 1], cells[node, 2], cells[node, SIDE] = x, y, z, side
@@ -197,7 +197,7 @@ def _new_node(cells, links, node, x, y, z, side, level, start, stop):
         links[node, CHILD + octant] = -1
 
 
-@njit
+@njit(from_python=False)
 def _child_mask(bounds, pad, t, cell, half):
     """Bit k set when triangle t's padded box overlaps child octant k of ``cell``.
 
@@ -251,7 +251,7 @@ def cell_footprints(tree, triangle_rects, matrix, width, height, rects, outside)
         rects[node, 3] = min(rects[node, 3], y_max + FOOTPRINT_PAD)
 
 
-@njit
+@njit(from_python=False)
 def _triangle_box(tree, node, triangle_rects, rects):
     """Screen box of a node's triangles: of a leaf's items, or the union of its children's.
 
@@ -271,7 +271,7 @@ def _triangle_box(tree, node, triangle_rects, rects):
                 _widen(rects, node, rects, child)
 
 
-@njit
+@njit(from_python=False)
 def _widen(rects, node, boxes, k):
     rects[node, 0] = min(rects[node, 0], boxes[k, 0])
     rects[node, 1] = max(rects[node, 1], boxes[k, 1])
@@ -279,7 +279,7 @@ def _widen(rects, node, boxes, k):
     rects[node, 3] = max(rects[node, 3], boxes[k, 3])
 
 
-@njit
+@njit(from_python=False)
 def _corner_clip(tree, node, corner, matrix):
     """Clip coordinates of corner ``corner`` (octant bits) of a node's cell."""
     side = tree.cells[node, SIDE]
@@ -294,7 +294,7 @@ def _corner_clip(tree, node, corner, matrix):
     )
 
 
-@njit
+@njit(from_python=False)
 def eye_octant(tree, node, eye):
     """Return the eye's octant relative to a node's centre (bit set: eye on the upper side).
 
@@ -309,7 +309,7 @@ def eye_octant(tree, node, eye):
     return octant
 
 
-@njit
+@njit(from_python=False)
 def _push_children(tree, node, eye, stack, top):
     """Push a node's children so that they pop front to back; return the new stack top."""
     octant = eye_octant(tree, node, eye)
@@ -430,7 +430,7 @@ def _record(outcome, node, code):
         outcome[node] = code
 
 
-@njit
+@njit(from_python=False)
 def _tile_counts(rows, width):
     """Pixels per TILE × TILE tile of a band of ``rows`` × ``width`` pixels (all undecided)."""
     counts = np.empty(((rows + TILE - 1) // TILE, (width + TILE - 1) // TILE), dtype=np.intp)
@@ -440,7 +440,7 @@ def _tile_counts(rows, width):
     return counts
 
 
-@njit
+@njit(from_python=False)
 def _pixel_range(rect, col_first, col_stop, row_first, row_stop):
     """Columns [c0, c1) and rows [r0, r1) whose pixel centres lie in a screen rectangle."""
     x_lo = max(rect[0] - 0.5, col_first - 1.0)
@@ -456,7 +456,7 @@ def _pixel_range(rect, col_first, col_stop, row_first, row_stop):
     return c0, c1, r0, r1
 
 
-@njit
+@njit(from_python=False)
 def _any_undecided(undecided, c0, c1, r0, r1):
     """Whether a tile overlapping local columns [c0, c1), rows [r0, r1) has undecided pixels."""
     for ty in range(r0 // TILE, (r1 - 1) // TILE + 1):
@@ -466,7 +466,7 @@ def _any_undecided(undecided, c0, c1, r0, r1):
     return False
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def _draw_leaf(tree, node, scan, c0, c1, r0, r1, x0, y0, inv_depth, triangle_id, decided,
                stamp, visit, touched, level):
     """Scan-convert a leaf's triangles inside its footprint, with the depth test on 1/w.
@@ -519,7 +519,7 @@ def _draw_leaf(tree, node, scan, c0, c1, r0, r1, x0, y0, inv_depth, triangle_id,
     return n_touched
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def _decide(tree, node, scan, touched, n_touched, x0, y0, band_first, triangle_id, decided,
             undecided):
     """Mark decided the touched pixels whose nearest hit lies inside this leaf's cell.

@@ -87,7 +87,7 @@ def _describe(corners, attrs, screen, orthographic, record):
     record[YMAX] = max(screen[a, 1], screen[b, 1], screen[c, 1])
 
 
-@njit
+@njit(from_python=False)
 def _side_range(x, y, records, corners, attrs):
     """Smallest and largest distance of x's corners to y's plane, positive on the eye's side."""
     record = records[y]
@@ -103,7 +103,7 @@ def _side_range(x, y, records, corners, attrs):
     return low, high
 
 
-@njit
+@njit(from_python=False)
 def _separated(a, b, corners, screen):
     """Whether some edge of triangle a has all of triangle b on its outer side (or on it)."""
     i0, i1, i2 = corners[a, 0], corners[a, 1], corners[a, 2]
@@ -142,7 +142,7 @@ def compare(p, q, records, corners, attrs, screen, eps):
     return _plane_tests(p, q, records, corners, attrs, screen, eps)
 
 
-@njit
+@njit(from_python=False)
 def _plane_tests(p, q, records, corners, attrs, screen, eps):
     """Run tests 4 to 6 on a pair whose extents overlap; ``MOVE`` or ``SPLIT`` if all fail."""
     p_low, p_high = _side_range(p, q, records, corners, attrs)
@@ -158,7 +158,7 @@ def _plane_tests(p, q, records, corners, attrs, screen, eps):
     return SPLIT
 
 
-@njit
+@njit(from_python=False)
 def _straddles(x, y, records, corners, attrs, eps):
     """Whether polygon x has corners on both sides of y's plane."""
     low, high = _side_range(x, y, records, corners, attrs)
@@ -401,7 +401,7 @@ def depth_sort(attrs, screen, count, triangles, planes, width, height, orthograp
     return order[:drawn], attrs, screen, count, corners[:polygons], root[:polygons]
 
 
-@njit
+@njit(from_python=False)
 def _plane_cut(p, q, cycle, stack, top, records, corners, attrs, eps, room):
     """(polygon to cut, polygon whose plane cuts it) for a pair the tests left undecided.
 
@@ -427,7 +427,7 @@ def _plane_cut(p, q, cycle, stack, top, records, corners, attrs, eps, room):
     return -1, -1
 
 
-@njit
+@njit(from_python=False)
 def _room_in_front(rest, first, end):
     """Return the list with room for pieces in front: (array, first, end)."""
     slack = max(64, end - first)
@@ -437,7 +437,7 @@ def _room_in_front(rest, first, end):
     return bigger, slack, slack + end - first
 
 
-@njit
+@njit(from_python=False)
 def _insert_sorted(rest, first, end, polygon, records):
     """Insert ``polygon`` by farthest depth into rest[first:end]; return the new ``first``.
 
@@ -458,7 +458,7 @@ def _insert_sorted(rest, first, end, polygon, records):
     return first - 1
 
 
-@njit
+@njit(from_python=False)
 def _remove(stack, top, polygon):
     """Remove ``polygon`` from stack[:top]; return the new top."""
     k = 0

@@ -119,7 +119,7 @@ def _scan_band(setup, rows, band_items, first_row, stop_row, x0, y0, inv_depth, 
               masked, cutouts)
 
 
-@njit
+@njit(from_python=False)
 def _edge_table(setup, rows, band_items, first_row, stop_row):
     """Return the band's edge table, sorted by first row, and where each row's edges start.
 
@@ -189,7 +189,7 @@ def _edge_x(floats, e, y):
     return floats[e, EDGE_X] + (y - floats[e, EDGE_Y]) * floats[e, EDGE_SLOPE]
 
 
-@njit
+@njit(from_python=False)
 def _next_line(floats, ints, start, stop, edges, xs, active, j, line):
     """Bring the AEL to scan line j: drop leaving edges, move the rest, add edges start..stop.
 
@@ -236,7 +236,7 @@ def _next_line(floats, ints, start, stop, edges, xs, active, j, line):
     return kept + n
 
 
-@njit
+@njit(from_python=False)
 def _merge_sort(edges, xs, n, scratch, scratch_x):
     """Sort the first n edges by x, in place (bottom-up merge sort: many edges enter at once)."""
     width = 1
@@ -261,7 +261,7 @@ def _merge_sort(edges, xs, n, scratch, scratch_x):
             edges[q], xs[q] = scratch[q], scratch_x[q]
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def _walk(setup, band_items, ints, ael, ael_x, active, y, col_first, col_stop, depth_row, id_row,
           line, held, planes, where, stack, tested, masked, cutouts):
     """Walk one scan line's crossings left to right, filling the span before each.
@@ -327,7 +327,7 @@ def _walk(setup, band_items, ints, ael, ael_x, active, y, col_first, col_stop, d
     line[SPANS] = line[ONE_POLYGON] + line[BY_DEPTH]
 
 
-@njit
+@njit(from_python=False)
 def _by_depth(first, stop, inside, col_first, depth_row, id_row, line, held, planes, stack):
     """Fill a span covered by several triangles, deciding it from 1/w at its ends.
 
@@ -359,7 +359,7 @@ def _by_depth(first, stop, inside, col_first, depth_row, id_row, line, held, pla
         pending += 2
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def _by_pixel(first, stop, y, inside, col_first, depth_row, id_row, held, planes, masked,
               cutouts):
     """Fill columns [first, stop) pixel by pixel: the z-buffer's test among the kept surfaces.
@@ -380,7 +380,7 @@ def _by_pixel(first, stop, y, inside, col_first, depth_row, id_row, held, planes
         _fill_place(i, i + 1, best, col_first, depth_row, id_row, held, planes)
 
 
-@njit
+@njit(from_python=False)
 def _winner(x, reach, inside, held, planes):
     """Return the in-list place the z-buffer keeps at x (-1: none), and if it wins clearly.
 

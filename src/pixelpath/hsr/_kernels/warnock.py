@@ -169,7 +169,7 @@ def _inv_w(record, x, y):
     return record[KEY_PLANE] * x + (record[KEY_PLANE + 1] * y + record[KEY_PLANE + 2])
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def _nearest(x, y, lo, hi, candidates, kept, setup, cutouts):
     """Return the kept candidate the z-buffer shows at (x, y), or -1.
 
@@ -188,7 +188,7 @@ def _nearest(x, y, lo, hi, candidates, kept, setup, cutouts):
     return best
 
 
-@njit
+@njit(from_python=False)
 def _in_front(front, area, lo, hi, candidates, kept, setup):
     """Whether triangle ``front``'s plane is clearly nearer than every other kept candidate's.
 
@@ -220,7 +220,7 @@ def _size(record, reach_x, reach_y):
             + abs(record[KEY_PLANE + 2]))
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def _fill_area(area, t, setup, boxes, x0, y0, inv_depth, triangle_id, clipped, cutouts):
     """Write triangle t (-1: background) over the area: its covered pixels only if ``clipped``.
 
