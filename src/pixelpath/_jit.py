@@ -65,7 +65,7 @@ from numba.core.registry import CPUDispatcher
 from pixelpath._cache import cache_dir, enable_cache
 from pixelpath._precompiled import cache_root
 
-__all__ = ["cache_dir", "njit"]
+__all__ = ["cache_dir", "compile_for", "njit"]
 
 
 class KernelOnly(CPUDispatcher):
@@ -129,6 +129,24 @@ def njit(function: Callable | None = None, /, **options) -> Callable:
         return dispatcher
 
     return compile_kernel if function is None else compile_kernel(function)
+
+
+def compile_for(kernel: Callable, *arguments) -> None:
+    """Compile ``kernel`` for the types of ``arguments`` without running it.
+
+    For warm-ups of helpers that only kernels call (``njit(from_python=False)``), which
+    Python cannot call; with ``NUMBA_DISABLE_JIT=1`` there is nothing to compile.
+
+    Examples
+    --------
+    >>> from pixelpath._jit import compile_for, njit
+    >>> @njit(from_python=False, cache=False)
+    ... def halve(x):
+    ...     return x / 2
+    >>> compile_for(halve, 1.0)
+    """
+    if not config.DISABLE_JIT:
+        kernel.compile(tuple(numba.typeof(argument) for argument in arguments))
 
 
 @contextmanager

@@ -47,7 +47,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from pixelpath._jit import njit
+from pixelpath._jit import compile_for, njit
 from pixelpath.lighting._kernels import shade_planar, shade_point
 from pixelpath.raster._scan_kernels import (
     BAND_ROWS,
@@ -266,7 +266,7 @@ def shade_bands(bands, band_rows, x0, y0, inv_depth, triangle_id, surfaces, out)
             _shade_row(j, x0, y0, triangle_id[j - y0], inv_depth[j - y0], surfaces, out, batch)
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def _shade_row(j, x0, y0, ids, keys, surfaces, out, batch):
     """Fill image row j of the output buffers from the triangle seen at each of its pixels.
 
@@ -823,8 +823,8 @@ def warm_back() -> None:
         _tiny_shading_pass()
     )
     # The types the pass hands its row shading: a row of each visibility buffer, int64 rows.
-    _shade_row(np.intp(0), 0, 0, triangle_id[0], inv_depth[0], surfaces, out,
-               _new_batch(inv_depth.shape[1]))
+    compile_for(_shade_row, np.intp(0), 0, 0, triangle_id[0], inv_depth[0], surfaces, out,
+                _new_batch(inv_depth.shape[1]))
     render_bands(bands, setup, rows, offsets, items, BAND_ROWS, 0, 0, inv_depth, triangle_id,
                  tiny_cutouts(setup, surfaces.triangles), surfaces, out)
 
@@ -835,8 +835,8 @@ def warm_depth_test() -> None:
         _tiny_shading_pass()
     )
     first, stop = _band_rows(bands[0], BAND_ROWS, 0, inv_depth.shape[0])
-    _rasterize_band(setup, rows, offsets, items, bands[0], first, stop, 0, first, inv_depth,
-                    triangle_id, tiny_cutouts(setup, surfaces.triangles))
+    compile_for(_rasterize_band, setup, rows, offsets, items, bands[0], first, stop, 0, first,
+                inv_depth, triangle_id, tiny_cutouts(setup, surfaces.triangles))
 
 
 def warm_shade() -> None:

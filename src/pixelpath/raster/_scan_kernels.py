@@ -89,7 +89,7 @@ def _clear_band(first, stop, y0, inv_depth, triangle_id):
             triangle_id[j, i] = -1
 
 
-@njit
+@njit(from_python=False)
 def _rasterize_band(setup, rows, offsets, items, band, band_first, band_stop, x0, top, inv_depth,
                     triangle_id, cutouts):
     """Clear band ``band`` (image rows [band_first, band_stop)), then depth-test its pixels.

@@ -212,7 +212,7 @@ def searched_rays(y, x0, width, samples, screen_bounds, logging):
     return first - first % LANES, min(stop + (-stop) % LANES, count)
 
 
-@njit(refcount=False)
+@njit(refcount=False, from_python=False)
 def primary_shadows(first, stop, scene, settings, work):
     """Test the shadow rays of the primary hits ``first`` to ``stop`` of a row, packets at a time.
 

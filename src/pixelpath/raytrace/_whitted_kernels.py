@@ -48,7 +48,7 @@ import math
 
 import numpy as np
 
-from pixelpath._jit import njit
+from pixelpath._jit import compile_for, njit
 from pixelpath.lighting._kernels import light_direction, shade_point
 from pixelpath.raytrace._hit_kernels import enters_box, reflect_direction, slab_nan_allowed
 from pixelpath.raytrace._primary_kernels import _stored_geometry, primary_hits, primary_shadows
@@ -502,10 +502,10 @@ def warm_shadow_rays() -> None:
     """Compile the shadow search of a row's eye-ray hits (``primary_shadows``) alone.
 
     With the types :func:`render_rows` passes it, on a scene packed without triangles, so
-    that nothing of the BVH's group compiles here; called on no hits (nothing runs).
+    that nothing of the BVH's group compiles here.
     """
     from pixelpath.raytrace.tracer import warmup_scene
 
     scene, settings, bvh_depth = warmup_scene(triangles=False)
-    primary_shadows(np.intp(0), np.intp(0), scene, settings,
-                    new_work(scene, settings, bvh_depth, 0, 1))
+    compile_for(primary_shadows, np.intp(0), np.intp(0), scene, settings,
+                new_work(scene, settings, bvh_depth, 0, 1))
