@@ -21,7 +21,7 @@ The rules live here, once:
   function of its own). Neither wrapper is made for any kernel (``no_cfunc_wrapper``), nor the
   CPython one for the helpers that only other kernels call (``njit(from_python=False)``):
   their Python call would jump to a null address, so it raises a TypeError instead. The
-  render kernels of a build took 7-9 % less CPU time to compile (``docs/performance.md``).
+  render kernels of a build took about 9 % less CPU time to compile (``docs/performance.md``).
 * Kernels that only work on the arrays they are given (``njit(refcount=False)``) are compiled
   without Numba's reference counting: its atomic updates of the arrays' counts, at every call
   and inlined helper, made the threads tracing one scene contend for the same cache lines.
