@@ -150,6 +150,20 @@ def unit_or_zero(vectors: np.ndarray) -> np.ndarray:
     return np.divide(vectors, lengths, out=np.zeros_like(vectors), where=lengths > 0.0)
 
 
+def sum_rows_at(index: np.ndarray, rows: np.ndarray, count: int) -> np.ndarray:
+    """Return (count, 3): row k the sum of the (N, 3) ``rows`` whose ``index`` is k.
+
+    For normals gathered from faces onto vertices (or places, or groups of corners).
+
+    Examples
+    --------
+    >>> from pixelpath._validate import sum_rows_at
+    >>> sum_rows_at(np.array([1, 1, 0]), np.eye(3), 3).tolist()
+    [[0.0, 0.0, 1.0], [1.0, 1.0, 0.0], [0.0, 0.0, 0.0]]
+    """
+    return np.stack([np.bincount(index, rows[:, axis], count) for axis in range(3)], axis=1)
+
+
 def row_lengths(vectors: np.ndarray) -> np.ndarray:
     """Return the lengths of (..., 3) vectors, shaped (..., 1).
 

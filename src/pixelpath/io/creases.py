@@ -78,8 +78,7 @@ def crease_normals(
     # trimesh splits) share them, or the seam would show in the shading. Flat faces need none.
     place = np.arange(len(vertices)) if angle == 0.0 else _places(vertices)
     at = place[corners]
-    smooth = v.unit_or_zero(np.stack([np.bincount(at, at_corners[:, k], place.max(initial=-1) + 1)
-                             for k in range(3)], axis=1))
+    smooth = v.unit_or_zero(v.sum_rows_at(at, at_corners, place.max(initial=-1) + 1))
     within = np.einsum("ij,ij->i", facing, np.take(smooth, at, axis=0))
     if angle == 0.0:
         return _flat(corners, facing, within)
@@ -140,8 +139,7 @@ class _Groups:
         self.vertex = corners[order[first]]  # each group's vertex, groups ordered by vertex
         self.unit = unit[order[first]]  # the way its faces face
         count = len(self.vertex)
-        self.weighted = np.stack([np.bincount(self.group, weighted[:, k], count)
-                                  for k in range(3)], axis=1)
+        self.weighted = v.sum_rows_at(self.group, weighted, count)
 
     def normals_within(self, cos_limit: float) -> np.ndarray | None:
         """Return each group's normal: the sum of its place's groups' within the limit.
@@ -176,9 +174,8 @@ class _Groups:
                                 np.take(self.unit, theirs, axis=0))
             keep = (cosines >= cos_limit) | (mine == theirs) | pointless[mine] | pointless[theirs]
             creased = creased or not keep.all()
-            kept = np.take(self.weighted, theirs[keep], axis=0)
-            for axis in range(3):
-                sums[:, axis] += np.bincount(mine[keep], kept[:, axis], minlength=count)
+            sums += v.sum_rows_at(mine[keep], np.take(self.weighted, theirs[keep], axis=0),
+                                  count)
         return sums if creased else None
 
 

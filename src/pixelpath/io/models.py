@@ -212,7 +212,7 @@ from pixelpath.scene.loader import MODEL_FORMATS
 from pixelpath.scene.material import Material
 from pixelpath.scene.mesh import Mesh, bounding_box, moved
 from pixelpath.scene.scene import Scene
-from pixelpath.scene.texture import _WIDE_MODES, Texture, srgb_to_linear
+from pixelpath.scene.texture import Texture, srgb_to_linear, wide_grey
 
 __all__ = [
     "MODEL_FORMATS",
@@ -1813,10 +1813,10 @@ def _green_and_blue(file_and_image: tuple[Path, Any]) -> tuple[float, float]:
         raise ValueError(f"{path}: a metallic-roughness texture is not a picture "
                          f"({type(image).__name__})")
     try:
-        if image.mode in _WIDE_MODES:  # one channel of 16-bit integers or floats: grey
-            grey = float(np.asarray(image, dtype=np.float64).mean())
-            grey /= 1.0 if image.mode == "F" else 65535.0
-            return grey, grey
+        grey = wide_grey(image)
+        if grey is not None:  # one channel of 16-bit integers or floats
+            mean = float(grey.mean())
+            return mean, mean
         if not {"G", "B"} <= set(image.getbands()):
             image = image.convert("RGB")
         means = PIL.ImageStat.Stat(image).mean  # counted from the histogram: no float copy

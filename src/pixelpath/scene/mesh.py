@@ -249,10 +249,7 @@ class Mesh:
             return self.normals
         owner = np.repeat(self._newell, self.face_sizes, axis=0)
         count = len(self.vertices)
-        sums = np.stack(
-            [np.bincount(self.face_indices, owner[:, axis], count) for axis in range(3)], axis=1
-        )
-        return v.frozen(v.unit_or_zero(sums))
+        return v.frozen(v.unit_or_zero(v.sum_rows_at(self.face_indices, owner, count)))
 
     def bounds(self) -> np.ndarray:
         """Return the (2, 3) axis-aligned bounding box ``[minimum, maximum]`` of the vertices.

@@ -253,6 +253,23 @@ class Texture:
 _WIDE_MODES = ("I;16", "I;16B", "I;16L", "I", "F")
 
 
+def wide_grey(image: Any) -> np.ndarray | None:
+    """Return a PIL picture of more than 8 bits a channel as (H, W) fractions; None otherwise.
+
+    Such pictures (16-bit integers or floats) have one channel, taken as grey and as linear.
+
+    Examples
+    --------
+    >>> import numpy as np, PIL.Image
+    >>> from pixelpath.scene.texture import wide_grey
+    >>> wide_grey(PIL.Image.fromarray(np.array([[0, 65535]], dtype=np.uint16))).tolist()
+    [[0.0, 1.0]]
+    """
+    if image.mode not in _WIDE_MODES:
+        return None
+    return np.asarray(image, dtype=np.float64) / (65535.0 if image.mode != "F" else 1.0)
+
+
 def _frozen(array: np.ndarray) -> np.ndarray:
     array.flags.writeable = False
     return array
@@ -307,9 +324,8 @@ def _decoded_pil(img: Any, label: str, opaque: bool) -> tuple[np.ndarray, bool]:
             f"on a side; reduced {reduction} times", UserWarning, stacklevel=5,
         )
         img = img.reduce(reduction)
-    if img.mode in _WIDE_MODES:
-        grey = np.asarray(img, dtype=np.float64)
-        grey = grey / (65535.0 if img.mode != "F" else 1.0)
+    grey = wide_grey(img)
+    if grey is not None:
         return _from_array(np.repeat(grey[..., None], 3, axis=2))[0], False
     # Pillow adds (or drops) the alpha faster than NumPy does.
     return _from_array(np.asarray(img.convert("RGB" if opaque else "RGBA")))[0], True
