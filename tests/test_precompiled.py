@@ -4,6 +4,7 @@ first use, and loaded there instead of compiled. The round trip runs in fresh in
 
 from __future__ import annotations
 
+import itertools
 import json
 import os
 import pickle
@@ -14,6 +15,7 @@ from pathlib import Path
 
 import numba
 import pytest
+from numba.core import types
 
 from pixelpath import _precompiled, _warm
 
@@ -206,6 +208,47 @@ def test_an_installed_package_ships_kernels_for_its_own_sources():
     manifest = json.loads(manifest_path.read_text())
     assert set(manifest["groups"]) == set(_precompiled.BUILT_GROUPS)
     assert manifest["sources"] == _warm.sources_digest()
+
+
+def literal_twins(folder: Path) -> list[str]:
+    """Kernels in the Numba cache under ``folder`` compiled twice for want of a typed argument.
+
+    Numba types a literal argument (``0``, ``-1``, ``True`` or a global constant written at
+    the call) as a type of its own, so a helper called with a literal at one place and a
+    variable (or another literal) at another is compiled once per call: a kernel is listed
+    when two of its signatures differ in an argument that one of them takes as a literal.
+    """
+    twins = []
+    for path in sorted(folder.rglob("*.nbi")):
+        with path.open("rb") as index:
+            pickle.load(index)  # Numba's version
+            _, overloads = pickle.load(index)
+        signatures = [key[0] for key in overloads]
+        for first, other in itertools.combinations(signatures, 2):
+            if any(isinstance(a, types.Literal) or isinstance(b, types.Literal)
+                   for a, b in zip(first, other, strict=True) if a != b):
+                twins.append(f"{path.name}: {first} and {other}")
+    return twins
+
+
+def test_a_kernel_compiled_once_for_a_literal_and_once_for_a_variable_is_found(tmp_path):
+    path = tmp_path / "raster" / "_kernels.helper-1.py311.nbi"
+    path.parent.mkdir()
+    for second, found in ((types.int64, False), (types.literal(-1), True)):
+        with path.open("wb") as index:
+            pickle.dump(numba.__version__, index)
+            pickle.dump(("now", {((types.float64, types.int64), "cpu"): "a.nbc",
+                                 ((types.float64, second), "cpu"): "b.nbc"}), index)
+        assert bool(literal_twins(tmp_path)) == found
+
+
+def test_no_shipped_kernel_is_compiled_twice_for_a_literal_argument():
+    # Such a twin cost the z-buffer's pass 1.2 s of its compile, and each build and cold
+    # first use: the calls pass typed values instead (np.intp(0), np.bool_(False)).
+    if not (_precompiled.SHIPPED / _precompiled.MANIFEST).is_file():
+        pytest.skip("no kernels compiled at build time here (an editable install, or "
+                    "PIXELPATH_PRECOMPILED=0 when it was built)")
+    assert literal_twins(_precompiled.SHIPPED) == []
 
 
 def test_a_build_with_precompiling_off_ships_nothing_not_even_an_earlier_builds(

@@ -285,7 +285,7 @@ def _shade_row(j, x0, y0, ids, keys, surfaces, out, batch):
     rgb = out.rgb[row]
     normal = out.normal[row]
     count = np.intp(0)  # not a literal 0: that would compile a second _shade_batch
-    batch_object = -1
+    batch_object = np.intp(-1)  # not a literal either: one _shade_batch for both calls
     line_triangle = -1
     line = (0.0,) * 14
     y = j + 0.5

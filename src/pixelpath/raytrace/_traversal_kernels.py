@@ -94,7 +94,7 @@ def closest_triangle(bounds, links, tris, source, skip, cull, ox, oy, oz, dx, dy
     columns = slab_columns(ix, iy, iz)
     kx, ky, kz, okx, oky, okz, sx, sy, sz = shear_setup(ox, oy, oz, dx, dy, dz)
     k = 0
-    k_t = box_entry(bounds, 0, ox, oy, oz, ix, iy, iz, columns, t_min, t_max)
+    k_t = box_entry(bounds, np.intp(0), ox, oy, oz, ix, iy, iz, columns, t_min, t_max)
     if k_t == math.inf:
         return best_t, best, best_w1, best_w2, nodes, tests
     top = 0
@@ -163,7 +163,7 @@ def any_triangle(bounds, links, tris, pass_through, ox, oy, oz, dx, dy, dz, t_mi
     columns = slab_columns(ix, iy, iz)
     kx, ky, kz, okx, oky, okz, sx, sy, sz = shear_setup(ox, oy, oz, dx, dy, dz)
     limit = box_limit(t_max)
-    if box_entry(bounds, 0, ox, oy, oz, ix, iy, iz, columns, t_min, limit) == math.inf:
+    if box_entry(bounds, np.intp(0), ox, oy, oz, ix, iy, iz, columns, t_min, limit) == math.inf:
         return let_through, MISS, nodes, tests
     k = 0
     top = 0

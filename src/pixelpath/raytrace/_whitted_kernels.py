@@ -259,15 +259,15 @@ def render_rows(rows, scene, settings, work, out, x0, y0, rgb, image_depth, obje
         counts[COUNT_PRIMARY] += unsearched
         counts[COUNT_MISSED] += unsearched
         for i in range(searched_first):
-            _store_pixel(out, i, missed_red, missed_green, missed_blue, math.inf, MISS, 0.0,
-                         0.0, 0.0)
+            _store_pixel(out, i, missed_red, missed_green, missed_blue, math.inf, np.intp(MISS),
+                         0.0, 0.0, 0.0)
         for i in range(searched_stop, width):
-            _store_pixel(out, i, missed_red, missed_green, missed_blue, math.inf, MISS, 0.0,
-                         0.0, 0.0)
+            _store_pixel(out, i, missed_red, missed_green, missed_blue, math.inf, np.intp(MISS),
+                         0.0, 0.0, 0.0)
         for i in range(searched_first, searched_stop):
             red = green = blue = 0.0
             nearest = math.inf
-            nearest_object = MISS
+            nearest_object = np.intp(MISS)
             nearest_normal = (0.0, 0.0, 0.0)
             for sample in range(samples):
                 ray = i * samples + sample  # its eye ray's place in the row's primary pass
@@ -305,7 +305,8 @@ def render_rows(rows, scene, settings, work, out, x0, y0, rgb, image_depth, obje
                             cull_none,
                         )
                         w1 = w2 = 0.0
-                        if has_triangles and enters_box(bounds, 0, ox, oy, oz, dx, dy, dz, 0.0, t):
+                        if has_triangles and enters_box(bounds, np.intp(0), ox, oy, oz, dx, dy,
+                                                        dz, 0.0, t):
                             if holes:
                                 t_tri, tri, b1, b2, nodes, tests = closest_triangle(
                                     bounds, links, tris, tri_source, tri_back, cull_none, ox, oy,
