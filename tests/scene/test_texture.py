@@ -107,6 +107,48 @@ def test_halving_keeps_the_bits_of_numpys_block_mean(height, width, seed):
     assert np.array_equal(_half(codes, _decoded), expected)
 
 
+@settings(max_examples=30, deadline=None)
+@given(st.integers(1, 40), st.integers(1, 40), st.integers(0, 2**32 - 1))
+def test_every_level_is_the_encoded_block_mean_of_the_exact_level_above(height, width, seed):
+    # The whole pyramid, byte for byte, against a chain written plainly: decode the base,
+    # then take NumPy's block mean of the unrounded level above (an odd side padded with its
+    # last row or column) and encode each level with the sRGB formula.
+    codes = np.random.default_rng(seed).integers(0, 256, (height, width, 4), dtype=np.uint8)
+    linear = _decoded(codes)
+    expected = []
+    while linear.shape[0] > 1 or linear.shape[1] > 1:
+        h, w = linear.shape[:2]
+        linear = np.pad(linear, ((0, h % 2 if h > 1 else 0), (0, w % 2 if w > 1 else 0), (0, 0)),
+                        mode="edge")
+        rows, cols = min(linear.shape[0], 2), min(linear.shape[1], 2)
+        linear = linear.reshape(linear.shape[0] // rows, rows, linear.shape[1] // cols, cols,
+                                4).mean(axis=(1, 3))
+        level = np.empty(linear.shape, dtype=np.uint8)
+        level[..., :3] = np.rint(piecewise_srgb(np.clip(linear[..., :3], 0, 1)) * 255)
+        level[..., 3] = np.rint(np.clip(linear[..., 3], 0, 1) * 255)
+        expected.append(level)
+    levels = Texture(codes).levels
+    assert len(levels) == len(expected) + 1
+    for got, want in zip(levels[1:], expected, strict=True):
+        assert np.array_equal(got, want)
+
+
+def piecewise_srgb(x: np.ndarray) -> np.ndarray:
+    """The sRGB encoding as IEC 61966-2-1 writes it, one expression."""
+    return np.where(x <= 0.0031308, x * 12.92, 1.055 * x ** (1.0 / 2.4) - 0.055)
+
+
+def test_srgb_encoding_is_the_piecewise_formula_bit_for_bit():
+    rng = np.random.default_rng(7)
+    values = np.concatenate([rng.random(100_000), rng.random(1000) * 0.004,  # the dark segment
+                             [0.0, 0.0031308, np.nextafter(0.0031308, 1.0), 1.0]])
+    assert np.array_equal(linear_to_srgb(values), piecewise_srgb(values))
+    # out of range values are clipped first; NaN stays NaN; scalars give 0-d arrays
+    assert np.array_equal(linear_to_srgb([-0.5, 1.5]), piecewise_srgb(np.array([0.0, 1.0])))
+    assert np.isnan(linear_to_srgb(np.nan))
+    assert linear_to_srgb(0.001).shape == () and linear_to_srgb(0.001) == 0.001 * 12.92
+
+
 def test_level_sizes_for_odd_sides():
     texture = Texture(np.zeros((7, 5, 3), dtype=np.uint8))
     shapes = [level.shape for level in texture.levels]

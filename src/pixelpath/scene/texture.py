@@ -63,7 +63,14 @@ def linear_to_srgb(values: Any) -> np.ndarray:
     [0.0, 0.5, 1.0]
     """
     x = np.clip(np.asarray(values, dtype=np.float64), 0.0, 1.0)
-    return np.where(x <= 0.0031308, x * 12.92, 1.055 * x ** (1.0 / 2.4) - 0.055)
+    # np.where(x <= 0.0031308, x * 12.92, 1.055 * x ** (1 / 2.4) - 0.055), the same
+    # operations with fewer temporary arrays
+    encoded = np.power(x, 1.0 / 2.4, out=np.empty_like(x))
+    encoded *= 1.055
+    encoded -= 0.055
+    dark = x <= 0.0031308
+    encoded[dark] = x[dark] * 12.92
+    return encoded
 
 
 class Texture:
@@ -170,10 +177,14 @@ class Texture:
     def levels(self) -> tuple[np.ndarray, ...]:
         """The mip-map pyramid: (h, w, 4) uint8 levels (sRGB colour, linear alpha), base first."""
         levels = [self._base]
-        linear, decode = self._base, _decoded  # the base is decoded block by block
-        while linear.shape[0] > 1 or linear.shape[1] > 1:
-            linear, decode = _half(linear, decode), None
-            levels.append(_frozen(_encoded(linear)))
+        # Colour and alpha averaged apart, each array contiguous: an (h, w, 4) array's
+        # colour is a strided view, slower to add to. The base is decoded block by block.
+        colour, alpha = self._base, self._base
+        decode_colour, decode_alpha = _decoded_colour, _decoded_alpha
+        while colour.shape[0] > 1 or colour.shape[1] > 1:
+            colour, alpha = _half(colour, decode_colour), _half(alpha, decode_alpha)
+            decode_colour = decode_alpha = None
+            levels.append(_frozen(_encoded(colour, alpha)))
         return tuple(levels)
 
     def linear(self, level: int = 0) -> np.ndarray:
@@ -367,10 +378,10 @@ def _encoded_base(rgba: np.ndarray, srgb: bool) -> np.ndarray:
     if rgba.dtype == np.uint8:
         if srgb:
             return np.ascontiguousarray(rgba)
-        return _encoded(rgba.astype(np.float64) / 255.0)
-    if srgb:
+        rgba = rgba.astype(np.float64) / 255.0
+    elif srgb:
         return np.ascontiguousarray(np.rint(rgba * 255.0).astype(np.uint8))
-    return _encoded(rgba)
+    return _encoded(rgba[..., :3], rgba[..., 3])
 
 
 @functools.cache
@@ -383,15 +394,28 @@ def decode_table() -> np.ndarray:
 
 def _decoded(level: np.ndarray) -> np.ndarray:
     out = np.empty(level.shape)
-    out[..., :3] = decode_table()[level[..., :3]]
-    out[..., 3] = level[..., 3] / 255.0
+    out[..., :3] = _decoded_colour(level)
+    out[..., 3] = _decoded_alpha(level)
     return out
 
 
-def _encoded(linear: np.ndarray) -> np.ndarray:
-    out = np.empty(linear.shape, dtype=np.uint8)
-    out[..., :3] = np.rint(linear_to_srgb(linear[..., :3]) * 255.0)
-    out[..., 3] = np.rint(np.clip(linear[..., 3], 0.0, 1.0) * 255.0)
+def _decoded_colour(level: np.ndarray) -> np.ndarray:
+    """(h, w, 3) linear colour of an 8-bit (h, w, 4) level."""
+    return decode_table()[level[..., :3]]
+
+
+def _decoded_alpha(level: np.ndarray) -> np.ndarray:
+    """(h, w) alpha of an 8-bit (h, w, 4) level, in [0, 1]."""
+    return level[..., 3] / 255.0
+
+
+def _encoded(colour: np.ndarray, alpha: np.ndarray) -> np.ndarray:
+    """Return linear (h, w, 3) ``colour`` and (h, w) ``alpha`` as an 8-bit sRGB (h, w, 4) level."""
+    out = np.empty((*alpha.shape, 4), dtype=np.uint8)
+    encoded = linear_to_srgb(colour)
+    encoded *= 255.0
+    out[..., :3] = np.rint(encoded, out=encoded)
+    out[..., 3] = np.rint(np.clip(alpha, 0.0, 1.0) * 255.0)
     return out
 
 
