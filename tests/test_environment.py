@@ -416,3 +416,28 @@ def test_helpers_for_kernels_only_have_no_python_wrapper_and_refuse_python_calls
     assert "_texture_kernels.wrapped is compiled for other kernels" in result["messages"][1]
     assert result["kernel"] == [True, False]
     assert result["helper"] == [False, False]
+
+
+LITERALS = """
+import json
+from pixelpath._jit import njit
+
+def step(x, k, up):
+    return x + k if up else x - k
+
+helper = njit(from_python=False, cache=False)(step)
+
+def three_calls(x, k):
+    return helper(x, 0, True) + helper(x, k, x > 0.0) + helper(x, -1, False)
+
+kernel = njit(cache=False)(three_calls)
+print(json.dumps({"result": kernel(2.0, 3), "signatures": [str(s) for s in helper.signatures]}))
+"""
+
+
+def test_a_helper_called_with_literals_and_variables_is_compiled_once():
+    # Numba types a constant written at a call as a literal, a type of its own: the helper
+    # would be compiled three times here; pixelpath's kernels are typed for the base types.
+    result = run_python(LITERALS, **JIT_ON)
+    assert result["result"] == 2.0 + 5.0 + 3.0
+    assert result["signatures"] == ["(float64, int64, bool)"]

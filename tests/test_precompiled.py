@@ -244,7 +244,7 @@ def test_a_kernel_compiled_once_for_a_literal_and_once_for_a_variable_is_found(t
 
 def test_no_shipped_kernel_is_compiled_twice_for_a_literal_argument():
     # Such a twin cost the z-buffer's pass 1.2 s of its compile, and each build and cold
-    # first use: the calls pass typed values instead (np.intp(0), np.bool_(False)).
+    # first use: a kernel is typed for its callers' argument types (pixelpath._jit.Kernel).
     if not (_precompiled.SHIPPED / _precompiled.MANIFEST).is_file():
         pytest.skip("no kernels compiled at build time here (an editable install, or "
                     "PIXELPATH_PRECOMPILED=0 when it was built)")

@@ -22,6 +22,10 @@ The rules live here, once:
   CPython one for the helpers that only other kernels call (``njit(from_python=False)``):
   their Python call would jump to a null address, so it raises a TypeError instead. The
   render kernels of a build took about 9 % less CPU time to compile (``docs/performance.md``).
+* A kernel is compiled for the types of its callers' arguments, never for a constant's value
+  (:class:`Kernel`): Numba types a literal written at a call (``0``, ``-1``, ``True``) as a
+  type of its own, and compiled a helper called with a literal at one place and a variable at
+  another once for each; the z-buffer's pass, for one, compiled its batch shading twice.
 * Kernels that only work on the arrays they are given (``njit(refcount=False)``) are compiled
   without Numba's reference counting: its atomic updates of the arrays' counts, at every call
   and inlined helper, made the threads tracing one scene contend for the same cache lines.
@@ -58,7 +62,7 @@ from collections.abc import Callable
 from contextlib import contextmanager
 
 import numba
-from numba.core import config
+from numba.core import config, types
 from numba.core.compiler_lock import global_compiler_lock
 from numba.core.registry import CPUDispatcher
 
@@ -68,7 +72,24 @@ from pixelpath._precompiled import cache_root
 __all__ = ["cache_dir", "compile_for", "njit"]
 
 
-class KernelOnly(CPUDispatcher):
+class Kernel(CPUDispatcher):
+    """A kernel that other kernels call with the types of their arguments, never their values.
+
+    Numba types a constant written at a call (``0``, ``-1``, ``True``, a module's global) as a
+    literal, a type of its own, and compiles the callee for it: a helper called with a literal
+    at one place and a variable (or another literal) at another was compiled once per call.
+    Here the callee is typed for what the literal is a value of (``int64``, ``bool``).
+    """
+
+    def get_call_template(self, args, kws):
+        """Numba's call template for the arguments' types, literals taken as their base types."""
+        return super().get_call_template(
+            [types.unliteral(arg) for arg in args],
+            {name: types.unliteral(arg) for name, arg in kws.items()},
+        )
+
+
+class KernelOnly(Kernel):
     """A kernel compiled without the CPython wrapper: other kernels call it, Python may not."""
 
     def __call__(self, *args, **kwargs):
@@ -117,8 +138,7 @@ def njit(function: Callable | None = None, /, **options) -> Callable:
         dispatcher = numba.njit(**options)(kernel)
         if config.DISABLE_JIT:
             return dispatcher
-        if not from_python:
-            dispatcher.__class__ = KernelOnly
+        dispatcher.__class__ = Kernel if from_python else KernelOnly
         if cache:
             # The kernels compiled at build time go into the cache before Numba first looks
             # there, so that it loads them instead of compiling.

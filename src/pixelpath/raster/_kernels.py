@@ -284,8 +284,8 @@ def _shade_row(j, x0, y0, ids, keys, surfaces, out, batch):
     row = j - y0
     rgb = out.rgb[row]
     normal = out.normal[row]
-    count = np.intp(0)  # not a literal 0: that would compile a second _shade_batch
-    batch_object = np.intp(-1)  # not a literal either: one _shade_batch for both calls
+    count = 0
+    batch_object = -1
     line_triangle = -1
     line = (0.0,) * 14
     y = j + 0.5
@@ -472,9 +472,9 @@ def _row_surface_colors(j, x0, ids, info, setup, triangles, uv, vertex_colors, t
     lookups, lookup_columns, lookup_textures = (
         batch.lookups, batch.lookup_columns, batch.lookup_textures
     )
-    count = np.intp(0)  # not a literal 0: that would compile a second _apply_lookups
+    count = 0
     line_triangle = -1
-    obj = texture = a = b = c = np.intp(0)
+    obj = texture = a = b = c = 0
     painted = glowing = False
     r = g = bl = 0.0
     numerators = (0.0,) * 6
@@ -513,7 +513,7 @@ def _row_surface_colors(j, x0, ids, info, setup, triangles, uv, vertex_colors, t
                          x, i)
             count += 1
     if count > 0:
-        _apply_lookups(np.intp(0), count, tables, batch, out)
+        _apply_lookups(0, count, tables, batch, out)
     if glowing:
         _row_glow(j, x0, ids, info, setup, triangles, uv, tables, emission, batch)
 

@@ -26,9 +26,8 @@ from pixelpath.raster._setup_kernels import FRUSTUM_PLANES, ORTHO_KEY_AT_NDC_0, 
 
 # Columns of a screen segment: both ends' (x, y, depth key) in pixels.
 SEGMENT_FIELDS = 6
-# Where each end's (x, y, key) starts in a segment's row; not literals, for which Numba
-# compiled _to_screen once per value.
-START_END, STOP_END = np.intp(0), np.intp(3)
+# Where each end's (x, y, key) starts in a segment's row.
+START_END, STOP_END = 0, 3
 
 
 @njit

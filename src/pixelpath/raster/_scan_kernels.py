@@ -107,7 +107,7 @@ def _rasterize_band(setup, rows, offsets, items, band, band_first, band_stop, x0
         t = items[k]
         if masked[t]:
             _draw_masked(t, max(rows[t, 0], band_first), min(rows[t, 1], band_stop), x0, top,
-                         inv_depth, triangle_id, cutouts, np.bool_(True))
+                         inv_depth, triangle_id, cutouts, True)
             continue
         record = setup[t]
         pa, pb, pc = record[KEY_PLANE], record[KEY_PLANE + 1], record[KEY_PLANE + 2]
@@ -180,7 +180,7 @@ def _paint_band(setup, rows, offsets, items, order, band, band_rows, x0, y0, inv
         t = order[items[k]]
         if masked[t]:
             _draw_masked(t, max(rows[t, 0], band_first), min(rows[t, 1], band_stop), x0, y0,
-                         inv_depth, triangle_id, cutouts, np.bool_(False))
+                         inv_depth, triangle_id, cutouts, False)
             continue
         record = setup[t]
         pa, pb, pc = record[KEY_PLANE], record[KEY_PLANE + 1], record[KEY_PLANE + 2]

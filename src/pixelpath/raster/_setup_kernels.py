@@ -147,7 +147,7 @@ def clip_triangles(attributes, triangles, crossing):
     for t in crossing:
         for corner in range(3):
             _copy_row(attributes, triangles[t, corner], polygon, corner)
-        n = triangles.shape[1]  # 3, typed int64 rather than literal (one clip_stage build)
+        n = 3  # the triangle's corners
         src, dst = polygon, scratch
         for p in range(6):
             n = clip_stage(src, n, FRUSTUM_PLANES[p], dst, untraced)

@@ -210,8 +210,6 @@ def build_bvh(boxes, order, bounds, links):
         stop, level = pending[top, 2], pending[top, 3]
         depth = max(depth, level)
         if not pending[top, 4]:
-            # Here, not where the root and the halves are made: called there with constants,
-            # _node_boxes was compiled for their literal types too (0.35 s cold each).
             _node_boxes(boxes, start, stop, bounds, node, centre_boxes, top)
         count = stop - start
         middle = start

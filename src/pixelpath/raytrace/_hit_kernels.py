@@ -235,7 +235,7 @@ def ray_sphere_many(origins, directions, centers, radii, out):
             origins[r, 0], origins[r, 1], origins[r, 2], directions[r, 0], directions[r, 1],
             directions[r, 2], centers[r, 0], centers[r, 1], centers[r, 2], radii[r],
         )
-        out[r] = sphere_t(t0, t1, 0.0, math.inf, np.bool_(False))
+        out[r] = sphere_t(t0, t1, 0.0, math.inf, False)
 
 
 @njit

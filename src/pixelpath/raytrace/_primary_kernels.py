@@ -49,9 +49,9 @@ def _hash32(x):
     """Return a 32-bit integer hash of x (Wellons' lowbias32), in int64 arithmetic."""
     x &= 0xFFFFFFFF
     x ^= x >> 16
-    x = _mul32(x, np.int64(0x7FEB352D))
+    x = _mul32(x, 0x7FEB352D)
     x ^= x >> 15
-    x = _mul32(x, np.int64(0x846CA68B))
+    x = _mul32(x, 0x846CA68B)
     x ^= x >> 16
     return x
 
@@ -79,9 +79,7 @@ def sample_position(pixel, sample, samples):
     columns = samples // rows
     cx = sample % columns
     cy = sample // columns
-    jitter_x = _uniform(pixel, sample, np.intp(0))  # typed axes: one _uniform for both
-    jitter_y = _uniform(pixel, sample, np.intp(1))
-    return (cx + jitter_x) / columns, (cy + jitter_y) / rows
+    return (cx + _uniform(pixel, sample, 0)) / columns, (cy + _uniform(pixel, sample, 1)) / rows
 
 
 @njit(refcount=False, from_python=False)
@@ -253,7 +251,7 @@ def primary_shadows(first, stop, scene, settings, work):
             geometry[ray, GEOMETRY_OBJECT] = obj
             geometry[ray, GEOMETRY_ENTERING] = entering
     for light in range(lights.shape[0]):
-        queued = np.intp(0)  # not the literal 0, for which any_triangles4 was compiled again
+        queued = 0
         for ray in range(first, stop):
             if found_hit[ray, 1] == MISS:
                 continue
@@ -268,7 +266,7 @@ def primary_shadows(first, stop, scene, settings, work):
             # Blocked already, or the tree is out of its way (any_triangle's own root-box test,
             # with its limit): nothing for a packet to find.
             if blocker != MISS or not has_triangles or not enters_box(
-                bounds, np.intp(0), sx, sy, sz, lx, ly, lz, 0.0, box_limit(t_light)
+                bounds, 0, sx, sy, sz, lx, ly, lz, 0.0, box_limit(t_light)
             ):
                 result[ray, light, 0], result[ray, light, 1] = through, blocker
                 continue

@@ -47,7 +47,7 @@ from pixelpath.scene._texture_kernels import cut_away
 MISS = -1
 LANES = 4  # rays of a packet: one 256-bit vector of float64
 BLOCK = 16 * LANES  # rays handed to one call of the packet searches
-ROOT = np.intp(0)  # the root node: not the literal 0, which _enter_lanes was compiled for again
+ROOT = 0  # the root node
 
 
 class Cutouts(NamedTuple):
@@ -94,7 +94,7 @@ def closest_triangle(bounds, links, tris, source, skip, cull, ox, oy, oz, dx, dy
     columns = slab_columns(ix, iy, iz)
     kx, ky, kz, okx, oky, okz, sx, sy, sz = shear_setup(ox, oy, oz, dx, dy, dz)
     k = 0
-    k_t = box_entry(bounds, np.intp(0), ox, oy, oz, ix, iy, iz, columns, t_min, t_max)
+    k_t = box_entry(bounds, 0, ox, oy, oz, ix, iy, iz, columns, t_min, t_max)
     if k_t == math.inf:
         return best_t, best, best_w1, best_w2, nodes, tests
     top = 0
@@ -163,7 +163,7 @@ def any_triangle(bounds, links, tris, pass_through, ox, oy, oz, dx, dy, dz, t_mi
     columns = slab_columns(ix, iy, iz)
     kx, ky, kz, okx, oky, okz, sx, sy, sz = shear_setup(ox, oy, oz, dx, dy, dz)
     limit = box_limit(t_max)
-    if box_entry(bounds, np.intp(0), ox, oy, oz, ix, iy, iz, columns, t_min, limit) == math.inf:
+    if box_entry(bounds, 0, ox, oy, oz, ix, iy, iz, columns, t_min, limit) == math.inf:
         return let_through, MISS, nodes, tests
     k = 0
     top = 0
@@ -523,9 +523,8 @@ def intersect_many(bounds, links, tris, source, skip, cull, labels, origins, dir
     Runs of ``LANES`` consecutive rays are traced as a packet (:func:`closest_triangles4`,
     ``BLOCK`` rays a call): neighbouring pixels' rays, or any rays given in a coherent order,
     walk the tree once together, and rays that do not fit a packet are traced one by one.
-    ``skip`` and ``cull`` are the packet search's, passed in (not written here as a literal
-    ``False``, for which Numba would compile that search a second time, beside the tracer's),
-    and so is its scratch (``packet`` (BLOCK, 9), ``hit`` (BLOCK,), the stacks). Serial: the
+    ``skip`` and ``cull`` are the packet search's, passed in, and so is its scratch
+    (``packet`` (BLOCK, 9), ``hit`` (BLOCK,), the stacks). Serial: the
     caller runs disjoint ranges of rays from several threads, each with its own scratch.
 
     Returns whether any of the rays is unusable (a NaN or an infinity, or a zero direction),

@@ -232,8 +232,7 @@ def render_rows(rows, scene, settings, work, out, x0, y0, rgb, image_depth, obje
     primary_hit = work.primary_hit
     primary_shadow = work.primary_shadow
     primary_geometry = work.primary_geometry
-    # Not the literal False: the searches would be compiled a second time for it.
-    cull_none = np.bool_(False)
+    cull_none = False
     width = rgb.shape[1]
     scale = 1.0 / samples
     # A pixel none of whose eye rays was searched (outside scene.screen_bounds) shows the
@@ -259,15 +258,15 @@ def render_rows(rows, scene, settings, work, out, x0, y0, rgb, image_depth, obje
         counts[COUNT_PRIMARY] += unsearched
         counts[COUNT_MISSED] += unsearched
         for i in range(searched_first):
-            _store_pixel(out, i, missed_red, missed_green, missed_blue, math.inf, np.intp(MISS),
-                         0.0, 0.0, 0.0)
+            _store_pixel(out, i, missed_red, missed_green, missed_blue, math.inf, MISS, 0.0,
+                         0.0, 0.0)
         for i in range(searched_stop, width):
-            _store_pixel(out, i, missed_red, missed_green, missed_blue, math.inf, np.intp(MISS),
-                         0.0, 0.0, 0.0)
+            _store_pixel(out, i, missed_red, missed_green, missed_blue, math.inf, MISS, 0.0,
+                         0.0, 0.0)
         for i in range(searched_first, searched_stop):
             red = green = blue = 0.0
             nearest = math.inf
-            nearest_object = np.intp(MISS)
+            nearest_object = MISS
             nearest_normal = (0.0, 0.0, 0.0)
             for sample in range(samples):
                 ray = i * samples + sample  # its eye ray's place in the row's primary pass
@@ -305,8 +304,7 @@ def render_rows(rows, scene, settings, work, out, x0, y0, rgb, image_depth, obje
                             cull_none,
                         )
                         w1 = w2 = 0.0
-                        if has_triangles and enters_box(bounds, np.intp(0), ox, oy, oz, dx, dy,
-                                                        dz, 0.0, t):
+                        if has_triangles and enters_box(bounds, 0, ox, oy, oz, dx, dy, dz, 0.0, t):
                             if holes:
                                 t_tri, tri, b1, b2, nodes, tests = closest_triangle(
                                     bounds, links, tris, tri_source, tri_back, cull_none, ox, oy,

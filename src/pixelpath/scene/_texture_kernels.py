@@ -292,9 +292,15 @@ def sample_at(tables, texture, uv, a, b, c, w0, w1, w2, dudx, dvdx, dudy, dvdy):
 
     Filtered for the footprint that (dudx, dvdx) and (dudy, dvdy) span (:func:`texel_footprint`).
     """
-    u = w0 * uv[a, 0] + w1 * uv[b, 0] + w2 * uv[c, 0]
-    v = w0 * uv[a, 1] + w1 * uv[b, 1] + w2 * uv[c, 1]
+    u, v = texture_coordinates(uv, a, b, c, w0, w1, w2)
     return sample(tables, texture, u, v, texel_footprint(tables, texture, dudx, dvdx, dudy, dvdy))
+
+
+@njit(inline="always")
+def texture_coordinates(uv, a, b, c, w0, w1, w2):
+    """(u, v) interpolated at barycentric weights (w0, w1, w2) of vertices a, b, c."""
+    return (w0 * uv[a, 0] + w1 * uv[b, 0] + w2 * uv[c, 0],
+            w0 * uv[a, 1] + w1 * uv[b, 1] + w2 * uv[c, 1])
 
 
 @njit(inline="always")
@@ -310,8 +316,7 @@ def surface_alpha(tables, obj, uv, colors, a, b, c, w0, w1, w2):
         alpha *= w0 * colors[a, 3] + w1 * colors[b, 3] + w2 * colors[c, 3]
     texture = tables.objects[obj, TEXTURE]
     if texture >= 0:
-        u = w0 * uv[a, 0] + w1 * uv[b, 0] + w2 * uv[c, 0]
-        v = w0 * uv[a, 1] + w1 * uv[b, 1] + w2 * uv[c, 1]
+        u, v = texture_coordinates(uv, a, b, c, w0, w1, w2)
         alpha *= sample(tables, texture, u, v, 0.0)[3]
     return alpha
 

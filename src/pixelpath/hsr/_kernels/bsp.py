@@ -283,7 +283,7 @@ def build(vertices, triangles, planes, infinite_planes, relation, eps, stats):
     tasks = np.empty((64, 4), dtype=np.intp)  # node, start, stop, level
     depths = np.empty(64, dtype=np.intp)
     n_tasks = 0
-    nodes = np.intp(0)  # not the literal 0, for which Numba compiled _new_node once more
+    nodes = 0
     n_planes = relation.shape[0]
     if n > 0 or n_planes > 0:
         root, no_parent = nodes, nodes - 1

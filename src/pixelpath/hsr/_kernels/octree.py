@@ -123,10 +123,8 @@ def build_tree(bounds, candidates, root_lo, root_size, pad, leaf_size, max_depth
         work[k] = candidates[k]
     items = np.empty(max(count, 16), dtype=np.intp)
     n_items = 0
-    zero = np.intp(0)  # not literal 0s: the root's call then shares the children's build
-    _new_node(cells, links, zero, root_lo[0], root_lo[1], root_lo[2], root_size, zero, zero,
-              np.intp(count))
-    n_nodes = np.intp(1)  # not the literal 1, for which Numba compiled _new_node once more
+    _new_node(cells, links, 0, root_lo[0], root_lo[1], root_lo[2], root_size, 0, 0, count)
+    n_nodes = 1
     work_end = count
     counts = np.empty(8, dtype=np.intp)
     fill = np.empty(8, dtype=np.intp)

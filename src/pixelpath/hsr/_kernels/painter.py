@@ -259,7 +259,7 @@ def depth_sort(attrs, screen, count, triangles, planes, width, height, orthograp
         rest[slack + i] = i
     first, end = slack, slack + n
     stack = np.empty(16, dtype=np.intp)
-    top = np.intp(0)  # not the literal 0: Numba compiled its callees again for it
+    top = 0
     order = np.empty(n, dtype=np.intp)
     drawn = 0
     pieces = np.empty((3, 4), dtype=np.intp)
@@ -323,8 +323,7 @@ def depth_sort(attrs, screen, count, triangles, planes, width, height, orthograp
                 move = q
                 break
             else:
-                cycle = outcome == MOVE  # False here (a bool, not a literal: one compile)
-                cut, by = _plane_cut(p, q, cycle, stack, top, records, corners, attrs, eps, room)
+                cut, by = _plane_cut(p, q, False, stack, top, records, corners, attrs, eps, room)
                 counts[UNRESOLVED] += int(cut < 0)
                 counts[LIMITED] += int(cut == NO_ROOM)
         if move >= 0:

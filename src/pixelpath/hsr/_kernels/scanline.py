@@ -103,7 +103,7 @@ def _scan_band(setup, rows, band_items, first_row, stop_row, x0, y0, inv_depth, 
     for k in range(n):
         where[k] = -1
     stack = np.empty((width + 1, 2), dtype=np.intp)  # spans [first, stop) still to resolve
-    active = np.intp(0)  # not the literal 0: Numba compiled its callees again for it
+    active = 0
     masked = cutouts.masked
     tested = False  # does the band hold an alpha-tested triangle?
     for k in range(n):
@@ -273,7 +273,7 @@ def _walk(setup, band_items, ints, ael, ael_x, active, y, col_first, col_stop, d
     test's record among them): compiled without reference counting, which would update each
     array's count atomically at every call.
     """
-    inside = np.intp(0)  # not the literal 0: Numba compiled its callees again for it
+    inside = 0
     holes = 0  # alpha-tested triangles in the list
     current = col_first
     crossings = 0

@@ -130,8 +130,6 @@ def _decide_area(area, lo, hi, candidates, setup, boxes, x0, y0, inv_depth, tria
     test's record among them, had its count updated atomically at each call, per area, from
     both threads (Warnock's method was 30 % slower for it).
     """
-    # No literal -1, True or False reaches a call: Numba would compile the callee once more
-    # for each such value (it did, four times for _fill_area).
     count, only, front, front_value = 0, NONE, NONE, 0.0
     corner_x, corner_y = area[COL_FIRST] + 0.5, area[ROW_FIRST] + 0.5
     masked = cutouts.masked
