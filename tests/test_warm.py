@@ -2,12 +2,14 @@
 
 from __future__ import annotations
 
+import functools
 import importlib
 import json
 import os
 import subprocess
 import sys
 import textwrap
+from pathlib import Path
 
 import numba
 import pytest
@@ -16,6 +18,7 @@ from pixelpath import _precompiled, _warm
 from pixelpath.renderer import METHOD_NAMES, STYLES
 
 needs_jit = pytest.mark.skipif(numba.config.DISABLE_JIT, reason="needs Numba's JIT")
+DUCK = str(Path(__file__).parent / "data" / "models" / "Duck.glb")  # textured
 
 
 def test_every_method_groups_name_known_groups():
@@ -56,18 +59,35 @@ def test_every_module_with_compiled_kernels_is_counted_in_the_warmup_report():
 
 
 def test_groups_for_lists_each_group_once_in_table_order():
-    assert _warm.groups_for(["warnock", "zbuffer", "warnock"], ["phong"]) == (
-        "front", "depth-test", "back", "shade", "warnock")
+    assert _warm.groups_for(["warnock", "zbuffer", "warnock"], ["phong"], coloured=False) == (
+        "front", "depth-test", "rows", "back", "shade", "warnock")
     assert _warm.groups_for([]) == ()
 
 
 def test_groups_for_adds_vertex_shading_to_raster_methods_only():
-    assert _warm.groups_for(["zbuffer"], ["phong"]) == ("front", "depth-test", "back")
-    assert _warm.groups_for(["zbuffer"], ["flat", "phong"]) == (
-        "front", "vertex-shading", "depth-test", "back")
-    assert _warm.groups_for(["zbuffer"]) == (
-        "front", "vertex-shading", "depth-test", "back")  # every mode
-    assert "vertex-shading" not in _warm.groups_for(["raytrace", "wireframe"], ["flat"])
+    plain = functools.partial(_warm.groups_for, coloured=False)
+    assert plain(["zbuffer"], ["phong"]) == ("front", "depth-test", "rows", "back")
+    assert plain(["zbuffer"], ["flat", "phong"]) == (
+        "front", "vertex-shading", "depth-test", "rows", "back")
+    assert plain(["zbuffer"]) == (  # every mode
+        "front", "vertex-shading", "depth-test", "rows", "back")
+    assert "vertex-shading" not in plain(["raytrace", "wireframe"], ["flat"])
+
+
+def test_groups_for_takes_the_passes_for_the_surfaces_the_scenes_have():
+    # plain, coloured (the passes with colour lookups instead), or not known (both)
+    assert _warm.groups_for(["zbuffer"], ["phong"], coloured=True) == (
+        "front", "depth-test", "rows", "colours", "back-coloured")
+    assert _warm.groups_for(["painter"], ["phong"], coloured=True) == (
+        "front", "rows", "colours", "shade-coloured", "scan", "painter")
+    assert _warm.groups_for(["zbuffer", "octree"], ["phong"]) == (
+        "front", "depth-test", "rows", "colours", "back", "back-coloured", "shade",
+        "shade-coloured", "octree")
+    for methods in (["raytrace"], ["wireframe"], ["raytrace", "hidden-line"]):
+        assert (_warm.groups_for(methods) == _warm.groups_for(methods, coloured=True)
+                == _warm.groups_for(methods, coloured=False))
+    for groups in _warm.METHOD_GROUPS.values():  # swapped in only
+        assert not set(groups) & {"colours", *_warm.COLOURED.values()}
 
 
 def test_shares_balance_the_estimated_seconds(tmp_path, monkeypatch):
@@ -95,19 +115,21 @@ def test_a_group_that_follows_another_shares_its_process_after_it(tmp_path):
 
 
 def test_a_group_that_feeds_another_goes_first_in_its_process(tmp_path):
-    for feeder, fed in _warm.FEEDS.items():
-        groups = [fed, "front", "scan", feeder]
-        for processes in (1, 2, 8):
-            shares = _warm._share_out(groups, processes, tmp_path)
-            assert sorted(g for share in shares for g in share) == sorted(groups)
-            assert [share.index(feeder) for share in shares if feeder in share] == [0]
-        assert _warm._share_out(groups, 1, tmp_path) == [[feeder, fed, "front", "scan"]]
+    for feeder, feds in _warm.FEEDS.items():
+        for fed in feds:
+            groups = [fed, "front", "scan", feeder]
+            for processes in (1, 2, 8):
+                shares = _warm._share_out(groups, processes, tmp_path)
+                assert sorted(g for share in shares for g in share) == sorted(groups)
+                assert [share.index(feeder) for share in shares if feeder in share] == [0]
 
 
-def test_every_method_that_runs_a_fed_group_runs_its_feeder():
-    for groups in _warm.METHOD_GROUPS.values():
-        for feeder, fed in _warm.FEEDS.items():
-            assert (fed in groups) == (feeder in groups)
+def test_every_render_that_runs_a_fed_group_runs_its_feeder():
+    for method in _warm.METHOD_GROUPS:
+        for coloured in (False, True, None):
+            groups = _warm.groups_for([method], coloured=coloured)
+            for feeder, feds in _warm.FEEDS.items():
+                assert (feeder in groups) == any(fed in groups for fed in feds)
 
 
 def test_recorded_seconds_replace_the_estimate(tmp_path):
@@ -161,8 +183,9 @@ def test_the_stamp_follows_the_install_location_and_the_sources(tmp_path):
 
 
 # Compile every method's groups into an empty cache in worker processes, then render each
-# method and shading in a fresh process: nothing may compile there. This proves that the
-# groups' hand-made warm-up inputs have the very types the render path passes.
+# method and shading in a fresh process, a plain scene and a textured model (the passes with
+# colour lookups): nothing may compile there. This proves that the groups' hand-made warm-up
+# inputs have the very types the render path passes. Methods come after the model's path.
 _RENDER_EVERY_METHOD = textwrap.dedent(
     """
     import dataclasses, json, sys
@@ -179,15 +202,15 @@ _RENDER_EVERY_METHOD = textwrap.dedent(
     event.register("numba:compile", Count())
     import pixelpath as pp
     from pixelpath.scene import bundled_scenes, load_scene
-    scene = load_scene(bundled_scenes()["showcase"])
-    scene = dataclasses.replace(scene, camera=scene.camera.with_size(64, 40))
-    for method in sys.argv[1:]:
-        if method in ("wireframe", "hidden-line"):
-            pp.render(scene, style=method)
-            continue
-        for shading in ("flat", "gouraud", "phong"):
-            if (method, shading) != ("raytrace", "gouraud"):  # a ray tracer has no Gouraud
-                pp.render(scene, method=method, shading=shading)
+    for scene in (load_scene(bundled_scenes()["showcase"]), load_scene(sys.argv[1])):
+        scene = dataclasses.replace(scene, camera=scene.camera.with_size(64, 40))
+        for method in sys.argv[2:]:
+            if method in ("wireframe", "hidden-line"):
+                pp.render(scene, style=method)
+                continue
+            for shading in ("flat", "gouraud", "phong"):
+                if (method, shading) != ("raytrace", "gouraud"):  # a ray tracer has no Gouraud
+                    pp.render(scene, method=method, shading=shading)
     print(json.dumps(compiled))
     """
 )
@@ -220,7 +243,8 @@ def test_after_compiling_the_groups_a_render_compiles_nothing(tmp_path):
     cold_before, compiled, cold_after = json.loads(result.stdout)
     groups = list(_warm.groups_for(methods))
     assert cold_before == groups and compiled == sorted(groups) and cold_after == []
-    result = subprocess.run([sys.executable, "-c", _RENDER_EVERY_METHOD, *methods], env=env,
+    result = subprocess.run([sys.executable, "-c", _RENDER_EVERY_METHOD, DUCK, *methods],
+                            env=env,
                             check=True, capture_output=True, text=True)
     assert json.loads(result.stdout) == []
 
@@ -237,10 +261,52 @@ def test_with_the_kernels_compiled_at_build_time_a_first_render_compiles_nothing
     env.pop("NUMBA_CACHE_DIR", None)
     env.pop("PIXELPATH_PRECOMPILED", None)
     methods = sorted(_warm.METHOD_GROUPS)
-    result = subprocess.run([sys.executable, "-c", _RENDER_EVERY_METHOD, *methods], env=env,
+    result = subprocess.run([sys.executable, "-c", _RENDER_EVERY_METHOD, DUCK, *methods],
+                            env=env,
                             check=True, capture_output=True, text=True)
     assert json.loads(result.stdout) == []
     assert (tmp_path / "numba" / "precompiled").is_dir()  # copied from the package, not compiled
+
+
+@needs_jit
+@pytest.mark.slow
+def test_a_plain_scene_is_rendered_without_compiling_the_colour_lookups(tmp_path):
+    # A cold z-buffer render of a scene without textures or vertex colours: its groups
+    # compiled into an empty cache (in two processes), the render compiles nothing more, and
+    # no process compiled the colour lookups, which the passes given no colour tables prune.
+    env = {**os.environ, "PIXELPATH_CACHE_DIR": str(tmp_path), "PIXELPATH_PRECOMPILED": "0"}
+    env.pop("NUMBA_CACHE_DIR", None)
+    groups = _warm.groups_for(["zbuffer"], ["phong"], coloured=False)
+    assert groups == ("front", "depth-test", "rows", "back")
+    warm = ("from pixelpath import _precompiled, _warm; import sys; "
+            "_warm.compile_groups(sys.argv[1:], _precompiled.markers(), 2)")
+    subprocess.run([sys.executable, "-c", warm, *groups], env=env, check=True)
+    render = textwrap.dedent(
+        """
+        import json
+        from numba.core import event
+        compiled = []
+
+        class Count(event.Listener):
+            def on_start(self, e):
+                compiled.append(e.data["dispatcher"].py_func.__qualname__)
+
+            def on_end(self, e):
+                pass
+
+        event.register("numba:compile", Count())
+        import pixelpath as pp
+        from pixelpath.scene import bundled_scenes, load_scene
+        pp.render(load_scene(bundled_scenes()["showcase"]), "zbuffer", "phong")
+        print(json.dumps(compiled))
+        """
+    )
+    result = subprocess.run([sys.executable, "-c", render], env=env, check=True,
+                            capture_output=True, text=True)
+    assert json.loads(result.stdout) == []
+    cached = [path.name for path in tmp_path.rglob("*.nbi")]
+    assert any("_shade_row" in name for name in cached)  # where Numba keeps its index files
+    assert not [name for name in cached if "_row_surface_colors" in name]
 
 
 _COMPILE_GROUPS = textwrap.dedent(
@@ -270,19 +336,22 @@ _COMPILE_GROUPS = textwrap.dedent(
 @needs_jit
 @pytest.mark.slow
 def test_a_fed_group_loads_what_its_feeder_compiled_and_compiles_the_rest_once(tmp_path):
-    # Each in a process of its own into one empty cache, the feeder first (the fed group after
-    # the group it follows, as a cold start runs it): the fed group must not compile the
-    # feeder's kernel again, which it would if either warm-up passed other types, nor any
-    # kernel twice for the same types. (Small helpers both call, compiled by each before the
-    # other is done, may compile in both.)
-    env = {**os.environ, "PIXELPATH_CACHE_DIR": str(tmp_path), "PIXELPATH_PRECOMPILED": "0"}
-    env.pop("NUMBA_CACHE_DIR", None)
-    for feeder, fed in _warm.FEEDS.items():
+    # Each in a process of its own into an empty cache (one per feeder), the feeder first (each
+    # group it feeds after the group that one follows, as a cold start runs it): a fed group
+    # must not compile the feeder's kernel again, which it would if either warm-up passed
+    # other types, nor any kernel twice for the same types. (Small helpers both call, compiled
+    # by each before the other is done, may compile in both.)
+    for feeder, feds in _warm.FEEDS.items():
+        cache = tmp_path / feeder
+        env = {**os.environ, "PIXELPATH_CACHE_DIR": str(cache), "PIXELPATH_PRECOMPILED": "0"}
+        env.pop("NUMBA_CACHE_DIR", None)
         by_group = {}
-        for group, groups in ((feeder, [feeder]), (fed, [_warm.FOLLOWS.get(fed, fed), fed])):
+        for group, groups in ((feeder, [feeder]),
+                              *((fed, [_warm.FOLLOWS.get(fed, fed), fed]) for fed in feds)):
             result = subprocess.run([sys.executable, "-c", _COMPILE_GROUPS, *dict.fromkeys(groups)],
                                     env=env, check=True, capture_output=True, text=True)
             by_group[group] = json.loads(result.stdout)
         feeders_kernel, _ = by_group[feeder][-1]  # the warm-up's own call: the last to end
-        assert feeders_kernel not in [name for name, _ in by_group[fed]]
-        assert len(by_group[fed]) == len({tuple(kernel) for kernel in by_group[fed]})
+        for fed in feds:
+            assert feeders_kernel not in [name for name, _ in by_group[fed]]
+            assert len(by_group[fed]) == len({tuple(kernel) for kernel in by_group[fed]})

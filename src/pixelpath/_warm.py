@@ -34,6 +34,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 __all__ = [
+    "COLOURED",
     "COMPILED_WITH",
     "FEEDS",
     "FOLLOWS",
@@ -65,9 +66,19 @@ GROUPS: dict[str, tuple[str, float]] = {
     "vertex-shading": ("pixelpath.raster._kernels:warm_vertex_shading", 0.2),
     # The fused pass's depth test, which "back" loads from the cache (FEEDS).
     "depth-test": ("pixelpath.raster._kernels:warm_depth_test", 4.2),
-    "back": ("pixelpath.raster._kernels:warm_back", 10.0),
-    # After "back" (every method that needs it needs "back" too): it reuses that one's kernels.
-    "shade": ("pixelpath.raster._kernels:warm_shade", 1.9),
+    # The shading passes, "back" (the z-buffer's fused pass) and "shade" (the other methods'),
+    # each for plain surfaces and, "-coloured", with the colour lookups of textures and vertex
+    # colours (COLOURED), which "colours" compiles (FEEDS); all call the shading of a row,
+    # "rows" (FOLLOWS). Until 2026-11-28 "back" (10.0 s) and "shade" (1.9 s) held them all;
+    # the estimates are what the groups took when they split, on a machine that compiled the
+    # old "back" in 7.1 s, scaled by 10.0 / 7.1 (rows 3.3 s there, colours 2.1, back 1.1,
+    # back-coloured 1.2, shade 1.3, shade-coloured 1.1).
+    "rows": ("pixelpath.raster._kernels:warm_rows", 4.7),
+    "colours": ("pixelpath.raster._kernels:warm_colours", 2.9),
+    "back": ("pixelpath.raster._kernels:warm_back", 1.6),
+    "back-coloured": ("pixelpath.raster._kernels:warm_back_coloured", 1.7),
+    "shade": ("pixelpath.raster._kernels:warm_shade", 1.8),
+    "shade-coloured": ("pixelpath.raster._kernels:warm_shade_coloured", 1.6),
     "scan": ("pixelpath.raster._kernels:warm_scan", 2.4),
     "scanline": ("pixelpath.hsr._kernels.scanline:warmup", 6.8),
     "warnock": ("pixelpath.hsr._kernels.warnock:warmup", 3.7),
@@ -90,13 +101,14 @@ GROUPS: dict[str, tuple[str, float]] = {
 }
 
 # The groups a render with each hidden-surface method calls, and those a drawing style adds.
+# Those of the shading passes are the passes for plain surfaces (groups_for swaps in COLOURED).
 METHOD_GROUPS: dict[str, tuple[str, ...]] = {
-    "zbuffer": ("front", "depth-test", "back"),
-    "scanline": ("front", "depth-test", "back", "shade", "scanline"),
-    "warnock": ("front", "depth-test", "back", "shade", "warnock"),
-    "painter": ("front", "depth-test", "back", "shade", "scan", "painter"),
-    "bsp": ("front", "depth-test", "back", "shade", "scan", "bsp"),
-    "octree": ("front", "depth-test", "back", "shade", "octree"),
+    "zbuffer": ("front", "depth-test", "rows", "back"),
+    "scanline": ("front", "rows", "shade", "scanline"),
+    "warnock": ("front", "rows", "shade", "warnock"),
+    "painter": ("front", "rows", "shade", "scan", "painter"),
+    "bsp": ("front", "rows", "shade", "scan", "bsp"),
+    "octree": ("front", "rows", "shade", "octree"),
     "raytrace": ("lighting", "raytrace-bvh", "raytrace-shadows", "raytrace"),
     "wireframe": ("lines",),
     "hidden-line": ("lines",),
@@ -112,10 +124,21 @@ SHADING_GROUPS: dict[str, tuple[str, ...]] = {
 
 # Groups that call another group's kernels, and are only needed with it: when both are cold
 # they compile in one process, the caller after the callee, whose kernels it then reuses
-# instead of compiling them again (the z-buffer's pass and the others' shading pass both shade
-# rows of pixels with the same kernels; the tracer builds and searches the BVH with its
-# kernels).
-FOLLOWS: dict[str, str] = {"shade": "back", "raytrace": "raytrace-bvh"}
+# instead of compiling them again (the shading passes all shade rows of pixels with the same
+# kernels; the tracer builds and searches the BVH with its kernels).
+FOLLOWS: dict[str, str] = {
+    "back": "rows",
+    "back-coloured": "rows",
+    "shade": "rows",
+    "shade-coloured": "rows",
+    "raytrace": "raytrace-bvh",
+}
+
+# Each shading pass's group for plain surfaces, and its version with the colour lookups,
+# which a render of a scene with coloured surfaces (textures or vertex colours) needs
+# instead. A plain scene's render, most of them, compiles no colour lookup
+# (pixelpath.raster._kernels.colour_tables).
+COLOURED: dict[str, str] = {"back": "back-coloured", "shade": "shade-coloured"}
 
 # Groups that compile part of another group's kernels, for that one to load from the disk
 # cache: each goes first in its process, and the other group compiles the rest of its
@@ -125,7 +148,12 @@ FOLLOWS: dict[str, str] = {"shade": "back", "raytrace": "raytrace-bvh"}
 # rays' search (5 s) and then their shadow rays' (7 s). Split so, a cold z-buffer render took
 # 12 s instead of 15, a cold ray-traced one 21-24 s instead of 31-34 (docs/performance.md).
 # Should the other process be late, the kernels are compiled twice, as they were unsplit.
-FEEDS: dict[str, str] = {"depth-test": "back", "raytrace-shadows": "raytrace"}
+# The passes with colour lookups take them from "colours" so.
+FEEDS: dict[str, tuple[str, ...]] = {
+    "depth-test": ("back", "back-coloured"),
+    "colours": ("back-coloured", "shade-coloured"),
+    "raytrace-shadows": ("raytrace",),
+}
 
 # Kernel modules without a warm-up of their own, after the module whose warm-ups compile their
 # kernels: the report of that module counts theirs too (a file split by concern keeps one
@@ -229,23 +257,33 @@ def run_warmups(markers: Path | None) -> list[WarmupReport]:
     return reports
 
 
-def groups_for(methods: Iterable[str], shadings: Iterable[str] | None = None) -> tuple[str, ...]:
+def groups_for(
+    methods: Iterable[str], shadings: Iterable[str] | None = None, *,
+    coloured: bool | None = None,
+) -> tuple[str, ...]:
     """Return the groups renders with ``methods`` (or drawing styles) need, each once, in order.
 
-    ``shadings`` are the shading modes the renders use (default: every mode).
+    ``shadings`` are the shading modes the renders use (default: every mode); ``coloured``
+    says whether the scenes rendered have coloured surfaces (textures or vertex colours):
+    True, False, or None when that is not known, for both kinds (:data:`COLOURED`).
 
     Examples
     --------
     >>> from pixelpath._warm import groups_for
-    >>> groups_for(["zbuffer", "scanline"], shadings=["phong"])
-    ('front', 'depth-test', 'back', 'shade', 'scanline')
-    >>> groups_for(["zbuffer"], shadings=["gouraud"])
-    ('front', 'vertex-shading', 'depth-test', 'back')
+    >>> groups_for(["zbuffer", "scanline"], shadings=["phong"], coloured=False)
+    ('front', 'depth-test', 'rows', 'back', 'shade', 'scanline')
+    >>> groups_for(["zbuffer"], shadings=["gouraud"], coloured=True)
+    ('front', 'vertex-shading', 'depth-test', 'rows', 'colours', 'back-coloured')
     """
     needed = {group for method in methods for group in METHOD_GROUPS.get(method, ())}
     if "front" in needed:
         modes = SHADING_GROUPS if shadings is None else shadings
         needed.update(group for mode in modes for group in SHADING_GROUPS.get(mode, ()))
+    passes = {group for group in COLOURED if group in needed}
+    if passes and coloured is not False:
+        needed.update({"colours", *(COLOURED[group] for group in passes)})
+    if coloured:
+        needed -= passes
     return tuple(group for group in GROUPS if group in needed)
 
 
@@ -369,7 +407,7 @@ def _share_out(groups: Sequence[str], processes: int, folder: Path | None) -> li
     """Split ``groups`` into at most ``processes`` shares of about equal compile time.
 
     A group that :data:`FOLLOWS` another one of ``groups`` goes into that one's share, after it;
-    a group that :data:`FEEDS` another goes first in its share.
+    a group that :data:`FEEDS` others goes first in its share.
     """
     units: dict[str, list[str]] = {}
     for group in groups:

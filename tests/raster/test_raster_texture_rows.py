@@ -59,3 +59,31 @@ def test_a_rows_lookups_equal_the_lookups_one_by_one(lookups, emission):
     _kernels._apply_lookups(np.intp(first), np.intp(first + width), TABLES, batch, colours)
 
     assert colours.tobytes() == expected.tobytes()
+
+
+def test_plain_scenes_are_shaded_without_colour_tables_to_the_same_bytes(monkeypatch):
+    # colour_tables gives the shading passes None for a scene without textures or vertex
+    # colours (their version without the colour lookups) and the tables otherwise. For a
+    # plain scene, the passes with the lookups (forced here) draw the very same bytes.
+    import dataclasses
+
+    import pixelpath as pp
+    from pixelpath.contract import RenderOptions, View
+    from pixelpath.hsr import pipeline
+    from pixelpath.scene import bundled_scenes, load_scene
+
+    plain = load_scene(bundled_scenes()["showcase"])
+    plain = dataclasses.replace(plain, camera=plain.camera.with_size(80, 50))
+    textured = dataclasses.replace(plain, objects=[Mesh(QUAD, [[0, 1, 2, 3]], Material(
+        texture=Texture(PICTURES[0])), uv=QUAD_UV)])
+    for scene, coloured in ((plain, False), (textured, True)):
+        view = View.whole(scene.camera)
+        surfaces = pipeline.surfaces(pipeline.prepare(scene, view, RenderOptions()), scene, view)
+        tables = _kernels.colour_tables(surfaces)
+        assert (tables is surfaces.tables) if coloured else tables is None
+    pictures = {method: pp.render(plain, method) for method in ("zbuffer", "painter")}
+    monkeypatch.setattr(_kernels, "colour_tables", lambda surfaces: surfaces.tables)
+    for method, picture in pictures.items():
+        forced = pp.render(plain, method)
+        for name in ("rgb", "depth", "object_id", "normal"):
+            assert np.array_equal(getattr(forced, name), getattr(picture, name)), (method, name)

@@ -22,6 +22,7 @@ from pixelpath.scene.texture import (
     Texture,
     _decoded,
     _half,
+    coloured_surfaces,
     linear_to_srgb,
     srgb_to_linear,
     surface_tables,
@@ -462,6 +463,30 @@ def test_surface_tables_pack_emission_textures_where_they_show():
                              Mesh(QUAD, [[0, 1, 2, 3]], dark, uv=QUAD_UV)])
     assert tables.objects.tolist() == [[0, 0, 0], [-1, 0, 1], [-1, 0, -1], [-1, 0, -1]]
     assert tables.levels.tolist() == [[0, 4, 4], [16, 2, 2], [20, 1, 1], [21, 2, 2], [25, 1, 1]]
+
+
+@given(st.lists(st.tuples(st.booleans(), st.booleans(), st.sampled_from(["none", "texture",
+                                                                          "glow", "dark glow"])),
+                min_size=1, max_size=4))
+def test_coloured_surfaces_are_the_objects_surface_tables_colour(choices):
+    """Meshes with uv or not, vertex colours or not, a texture, an emission texture that
+    shows or one on a material that emits nothing; and a sphere, which has neither."""
+    from pixelpath.scene import Sphere
+
+    picture = Texture(np.ones((2, 2, 3)))
+    materials = {"none": Material(), "texture": Material(texture=picture),
+                 "glow": Material(emission=(1, 0, 0), emission_texture=picture),
+                 "dark glow": Material(emission_texture=picture)}
+    objects = [Sphere((0, 0, 0), 1.0, materials["texture"])]
+    for with_uv, with_colors, kind in choices:
+        objects.append(Mesh(QUAD, [[0, 1, 2, 3]], materials[kind],
+                            uv=QUAD_UV if with_uv else None,
+                            colors=[[1, 0, 0]] * 4 if with_colors else None))
+    for obj in objects:
+        row = surface_tables([obj]).objects[0]
+        looked_up = row[tk.TEXTURE] >= 0 or row[tk.HAS_COLORS] != 0 or row[tk.GLOW] >= 0
+        assert coloured_surfaces([obj]) == looked_up
+    assert coloured_surfaces(objects) == any(coloured_surfaces([obj]) for obj in objects)
 
 
 def test_packed_texels_are_the_levels_and_shared_without_a_copy():

@@ -47,19 +47,26 @@ def error_console() -> Console:
 
 
 def compile_kernels(
-    methods: Iterable[str], shadings: Iterable[str] | None = None, *, quiet: bool = False
+    methods: Iterable[str],
+    shadings: Iterable[str] | None = None,
+    *,
+    coloured: bool | None = None,
+    quiet: bool = False,
 ) -> None:
     """Before a first run, compile the kernels that renders with ``methods`` need, on every core.
 
-    ``shadings`` are the shading modes those renders use (default: every mode). Nothing happens
-    when the kernels are in the disk cache already. While they compile, a line on standard
-    error says so (only on a terminal, and not when ``quiet``).
+    ``shadings`` are the shading modes those renders use (default: every mode); ``coloured``
+    says whether the scenes they render have textures or vertex colours
+    (:func:`pixelpath.scene.texture.coloured_surfaces`), None when that is not known (the
+    kernels for both kinds). Nothing happens when the kernels are in the disk cache already.
+    While they compile, a line on standard error says so (only on a terminal, and not when
+    ``quiet``).
     """
     from pixelpath._precompiled import markers
     from pixelpath._warm import cold_groups, compile_groups, estimate_seconds, groups_for
 
     folder = markers()
-    cold = cold_groups(groups_for(methods, shadings), folder)
+    cold = cold_groups(groups_for(methods, shadings, coloured=coloured), folder)
     if not cold:
         return
     err = error_console()

@@ -53,6 +53,7 @@ def run(args: argparse.Namespace) -> int:
     """Render each bundled scene, then the ray-traced and the methods pictures; list the files."""
     from pixelpath.cli.render import load_scene_sized, render_to_file
     from pixelpath.scene import bundled_scenes
+    from pixelpath.scene.texture import coloured_surfaces
 
     scenes = bundled_scenes()
     if not scenes:
@@ -66,10 +67,11 @@ def run(args: argparse.Namespace) -> int:
         method="zbuffer", ssaa=args.ssaa, no_cull=False, blinn=False, gamma=None, quiet=args.quiet
     )
     start = time.perf_counter()
-    compile_kernels([options.method], shadings, quiet=args.quiet)
+    loaded = {name: load_scene_sized(str(path), args.size) for name, path in scenes.items()}
+    compile_kernels([options.method], shadings, quiet=args.quiet, coloured=any(
+        coloured_surfaces(scene.objects) for scene in loaded.values()))
     count = 0
-    for name, path in scenes.items():
-        scene = load_scene_sized(str(path), args.size)
+    for name, scene in loaded.items():
         for shading in shadings:
             options.shading = shading
             output = folder / (f"{name}-{shading}.png" if len(shadings) > 1 else f"{name}.png")
@@ -80,8 +82,7 @@ def run(args: argparse.Namespace) -> int:
             )
             count += 1
     if not args.quick:
-        showcase = load_scene_sized(str(scenes["showcase"]), args.size)
-        count += _showcase_extras(showcase, folder, options)
+        count += _showcase_extras(loaded["showcase"], folder, options)
     console().print(f"{count} images in {time.perf_counter() - start:.1f} s")
     return 0
 
@@ -92,8 +93,10 @@ def _showcase_extras(scene: Any, folder: Path, options: argparse.Namespace) -> i
     from pixelpath.figures._canvas import save
     from pixelpath.figures.methods import methods_side_by_side
     from pixelpath.renderer import METHOD_NAMES
+    from pixelpath.scene.texture import coloured_surfaces
 
-    compile_kernels(METHOD_NAMES, ["phong"], quiet=options.quiet)  # both pictures: Phong
+    compile_kernels(METHOD_NAMES, ["phong"], quiet=options.quiet,  # both pictures: Phong
+                    coloured=coloured_surfaces(scene.objects))
     traced = argparse.Namespace(
         **{**vars(options), "method": "raytrace", "shading": "phong", "ssaa": 1},
         samples=4, max_depth=5,

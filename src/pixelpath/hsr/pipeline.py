@@ -461,11 +461,13 @@ def shade(
 
     out = output_buffers(view)
     kernel_surfaces = surfaces(prepared, scene, view)
+    colour_tables = _kernels.colour_tables(kernel_surfaces)
     _, order = bands(view)
     runs = slices(view)
     def shade_run(run: np.ndarray) -> None:
         _kernels.shade_bands(
-            run, _scan_kernels.BAND_ROWS, view.x0, view.y0, *visibility, kernel_surfaces, out
+            run, _scan_kernels.BAND_ROWS, view.x0, view.y0, *visibility, kernel_surfaces,
+            colour_tables, out,
         )
 
     for start, stop in runs:

@@ -69,6 +69,7 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     offsets, items = pipeline.binned(prepared, view)
     out = pipeline.output_buffers(view)
     surfaces = pipeline.surfaces(prepared, scene, view)
+    colour_tables = _kernels.colour_tables(surfaces)
     cutouts = pipeline.cutouts(prepared)
     _, order = pipeline.bands(view)
     runs = pipeline.slices(view)
@@ -76,7 +77,7 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
         buffers = visibility or pipeline.band_buffers(view.width)
         _kernels.render_bands(
             run, prepared.setup, prepared.rows, offsets, items, _scan_kernels.BAND_ROWS, view.x0,
-            view.y0, *buffers, cutouts, surfaces, out,
+            view.y0, *buffers, cutouts, surfaces, colour_tables, out,
         )
 
     for start, stop in runs:

@@ -152,6 +152,30 @@ class Surfaces(NamedTuple):
     far: float
 
 
+def colour_tables(surfaces: Surfaces):
+    """Return the shading pass's ``colour_tables``: ``surfaces.tables``, or None where unused.
+
+    None when no object has a coloured surface (``surfaces.uv`` and ``surfaces.vertex_colors``
+    have no rows), where the pass makes no colour lookup. Numba compiles the passes
+    separately for None and prunes the lookups (:func:`_row_surface_colors`) from that
+    version: the plain scenes most renders draw compile none of them, 2 of the 7 s the
+    z-buffer's pass took to compile with them (``docs/performance.md``; the groups of each
+    version in :mod:`pixelpath._warm`).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from pixelpath.raster._kernels import Surfaces, colour_tables
+    >>> plain = Surfaces(*[None] * 8, np.empty((0, 2)), np.empty((0, 4)), "tables",
+    ...                  *[None] * 12)
+    >>> colour_tables(plain) is None, colour_tables(plain._replace(uv=np.zeros((3, 2))))
+    (True, 'tables')
+    """
+    if surfaces.uv.shape[0] or surfaces.vertex_colors.shape[0]:
+        return surfaces.tables
+    return None
+
+
 class Buffers(NamedTuple):
     """The output buffers of a frame (or of a region of one)."""
 
@@ -224,13 +248,14 @@ def _new_batch(width):
 
 @njit
 def render_bands(bands, setup, rows, offsets, items, band_rows, x0, y0, inv_depth, triangle_id,
-                 cutouts, surfaces, out):
+                 cutouts, surfaces, colour_tables, out):
     """Rasterize the listed bands of rows with the depth test, then shade them (the z-buffer).
 
     One pass per band: its depth and triangle buffers are still in cache when it is shaded.
     ``inv_depth`` and ``triangle_id`` are the region's visibility buffers (h, w), left filled
     for whatever reads them afterwards, or one band's (``band_rows``, w), which every band
     reuses: those stay in cache, and a frame's 12 bytes a pixel of them never reach memory.
+    ``colour_tables`` is :func:`colour_tables` of ``surfaces``.
     Serial, and called on runs of the band list from several threads at once (it releases
     the GIL): a ``parallel=True`` loop cost seconds more to compile on a first run.
     """
@@ -245,24 +270,28 @@ def render_bands(bands, setup, rows, offsets, items, band_rows, x0, y0, inv_dept
         )
         batch = _new_batch(inv_depth.shape[1])
         for j in range(first, stop):
+            if colour_tables is not None:  # a branch Numba prunes, with the lookups, for None
+                _row_surface_colors(j, x0, triangle_id[j - top], surfaces, batch)
             _shade_row(j, x0, y0, triangle_id[j - top], inv_depth[j - top], surfaces, out, batch)
 
 
 @njit
-def shade_bands(bands, band_rows, x0, y0, inv_depth, triangle_id, surfaces, out):
+def shade_bands(bands, band_rows, x0, y0, inv_depth, triangle_id, surfaces, colour_tables, out):
     """Shade the listed bands from visibility buffers a hidden-surface method filled.
 
     ``inv_depth`` (h, w) holds 1/w of the visible surface (0 where nothing is drawn) and
     ``triangle_id`` (h, w) its triangle (-1 there), for the region whose top-left pixel is
     (x0, y0). Writes clamped RGB (h, w, 3) (``surfaces.background`` where nothing was drawn),
     the view-axis depth (h, w) (``inf`` there) and the object id (h, w) (-1 there) into
-    ``out``.
+    ``out``. ``colour_tables`` is :func:`colour_tables` of ``surfaces``.
     """
     height = inv_depth.shape[0]
     for k in range(bands.shape[0]):
         batch = _new_batch(inv_depth.shape[1])
         first, stop = _band_rows(bands[k], band_rows, y0, height)
         for j in range(first, stop):
+            if colour_tables is not None:  # as in render_bands
+                _row_surface_colors(j, x0, triangle_id[j - y0], surfaces, batch)
             _shade_row(j, x0, y0, triangle_id[j - y0], inv_depth[j - y0], surfaces, out, batch)
 
 
@@ -279,6 +308,7 @@ def _shade_row(j, x0, y0, ids, keys, surfaces, out, batch):
     the end of the row. A coloured surface (texture or vertex colours) has its colour looked
     up at every pixel, whatever the shading mode: flat and Gouraud shading are about where the
     light is computed, and its ambient and diffuse parts are then tinted by the colour there.
+    Those colours are looked up first, into ``batch.row_colors`` (:func:`_row_surface_colors`).
     """
     s = surfaces
     row = j - y0
@@ -293,10 +323,6 @@ def _shade_row(j, x0, y0, ids, keys, surfaces, out, batch):
               s.orthographic, s.near, s.far)
     half = s.colors.shape[1] // 2  # Gouraud: the columns of the light from the front
     glow = s.emission.shape[0] > 0  # some object emits light
-    if s.uv.shape[0] > 0 or s.vertex_colors.shape[0] > 0:
-        _row_surface_colors(j, x0, ids, s.info, s.setup, s.triangles, s.uv, s.vertex_colors,
-                            s.tables, s.materials, s.emission, s.coloured, batch.row_colors,
-                            batch)
     for i in range(ids.shape[0]):
         t = ids[i]
         if t < 0:
@@ -449,9 +475,11 @@ def texture_at(line, x):
 
 
 @njit(refcount=False, from_python=False)
-def _row_surface_colors(j, x0, ids, info, setup, triangles, uv, vertex_colors, tables,
-                        materials, emission, coloured, out, batch):
-    """Write the surface colour (r, g, b) of row j's pixels that show a coloured object.
+def _row_surface_colors(j, x0, ids, surfaces, batch):
+    """Write into ``batch.row_colors`` the surface colour (r, g, b) of row j's coloured pixels.
+
+    ``ids`` are the row's triangles (-1 where none). The shading pass (:func:`_shade_row`)
+    then reads the colours of the pixels of coloured objects there.
 
     One call per row, compiled without reference counting: the lookups' arrays are handed
     on per pixel without the atomic count updates a counted kernel makes at each call.
@@ -468,6 +496,12 @@ def _row_surface_colors(j, x0, ids, info, setup, triangles, uv, vertex_colors, t
     whose emission texture scales its ``emission`` then gets its emitted light
     (:func:`_row_glow`).
     """
+    s = surfaces
+    info, setup, triangles, uv, tables = s.info, s.setup, s.triangles, s.uv, s.tables
+    vertex_colors, materials, emission, coloured = (
+        s.vertex_colors, s.materials, s.emission, s.coloured
+    )
+    out = batch.row_colors
     y = j + 0.5
     lookups, lookup_columns, lookup_textures = (
         batch.lookups, batch.lookup_columns, batch.lookup_textures
@@ -812,21 +846,49 @@ def _tiny_shading_pass():
     return bands, setup, rows, offsets, items, inv_depth, triangle_id, surfaces, out
 
 
-def warm_back() -> None:
-    """Compile the z-buffer's fused pass: depth test and shading, band by band.
+def warm_rows() -> None:
+    """Compile the shading of a row, which every raster method's shading pass calls.
 
-    Its row shading first, then the pass: by the time the pass needs its depth test, the
-    group ``depth-test``, compiled at once in another process (``pixelpath._warm.FEEDS``),
-    has put that in the disk cache, and this process loads it instead of compiling it too.
+    With the types the passes hand it: a row of each visibility buffer, int64 rows.
     """
+    _, _, _, _, _, inv_depth, triangle_id, surfaces, out = _tiny_shading_pass()
+    compile_for(_shade_row, np.intp(0), 0, 0, triangle_id[0], inv_depth[0], surfaces, out,
+                _new_batch(inv_depth.shape[1]))
+
+
+def warm_colours() -> None:
+    """Compile the look-up of a row's surface colours, the passes' for coloured surfaces."""
+    _, _, _, _, _, inv_depth, triangle_id, surfaces, _ = _tiny_shading_pass()
+    compile_for(_row_surface_colors, np.intp(0), 0, triangle_id[0], surfaces,
+                _new_batch(inv_depth.shape[1]))
+
+
+def warm_back() -> None:
+    """Compile the z-buffer's fused pass for plain surfaces: depth test and shading, by bands.
+
+    After ``rows`` (``pixelpath._warm.FOLLOWS``), whose row shading it calls. By the time the
+    pass needs its depth test, the group ``depth-test``, compiled at once in another process
+    (``pixelpath._warm.FEEDS``), has put that in the disk cache, and this process loads it
+    instead of compiling it too.
+    """
+    _warm_fused_pass(coloured=False)
+
+
+def warm_back_coloured() -> None:
+    """Compile the z-buffer's fused pass with the colour lookups of coloured surfaces.
+
+    As ``back``; the lookups come from the group ``colours``, which feeds this one.
+    """
+    _warm_fused_pass(coloured=True)
+
+
+def _warm_fused_pass(coloured: bool) -> None:
     bands, setup, rows, offsets, items, inv_depth, triangle_id, surfaces, out = (
         _tiny_shading_pass()
     )
-    # The types the pass hands its row shading: a row of each visibility buffer, int64 rows.
-    compile_for(_shade_row, np.intp(0), 0, 0, triangle_id[0], inv_depth[0], surfaces, out,
-                _new_batch(inv_depth.shape[1]))
     render_bands(bands, setup, rows, offsets, items, BAND_ROWS, 0, 0, inv_depth, triangle_id,
-                 tiny_cutouts(setup, surfaces.triangles), surfaces, out)
+                 tiny_cutouts(setup, surfaces.triangles), surfaces,
+                 surfaces.tables if coloured else None, out)
 
 
 def warm_depth_test() -> None:
@@ -842,12 +904,25 @@ def warm_depth_test() -> None:
 def warm_shade() -> None:
     """Compile the shading pass the other methods run on the visibility they decided.
 
-    And the count of texture lookups every raster method's explain report makes.
+    For plain surfaces, after ``rows`` as ``back``; and the count of texture lookups every
+    raster method's explain report makes.
     """
-    bands, _, _, _, _, inv_depth, triangle_id, surfaces, out = _tiny_shading_pass()
-    shade_bands(bands, BAND_ROWS, 0, 0, inv_depth, triangle_id, surfaces, out)
+    _, _, _, _, _, inv_depth, triangle_id, surfaces, _ = _warm_shading_pass(coloured=False)
     lookups = np.empty(triangle_id.shape, dtype=np.int32)
     texture_lookups(0, 0, triangle_id, surfaces, lookups, lookups.copy(), np.empty(inv_depth.shape))
+
+
+def warm_shade_coloured() -> None:
+    """Compile the other methods' shading pass with the colour lookups of coloured surfaces."""
+    _warm_shading_pass(coloured=True)
+
+
+def _warm_shading_pass(coloured: bool) -> tuple:
+    inputs = _tiny_shading_pass()
+    bands, _, _, _, _, inv_depth, triangle_id, surfaces, out = inputs
+    shade_bands(bands, BAND_ROWS, 0, 0, inv_depth, triangle_id, surfaces,
+                surfaces.tables if coloured else None, out)
+    return inputs
 
 
 def warm_scan() -> None:

@@ -530,6 +530,37 @@ def surface_tables(objects: Any):
     )
 
 
+def coloured_surfaces(objects: Any) -> bool:
+    """Whether any of the scene objects has a surface colour the kernels look up point by point.
+
+    Those objects are the ones :func:`surface_tables` gives a texture, an emission texture or
+    vertex colours: meshes with vertex colours, and meshes with texture coordinates whose
+    material has a texture, or an emission texture and light to emit (primitives have
+    neither). A render of objects without any compiles and runs its shading pass without
+    colour lookups (:func:`pixelpath.raster._kernels.colour_tables`).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from pixelpath.scene import Material, Mesh, Sphere
+    >>> quad = Mesh([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], [[0, 1, 2, 3]],
+    ...             Material(texture=np.ones((4, 4, 3))), uv=[[0, 0], [1, 0], [1, 1], [0, 1]])
+    >>> ball = Sphere((0, 0, 0), 1.0)
+    >>> coloured_surfaces([ball]), coloured_surfaces([ball, quad])
+    (False, True)
+    """
+    return any(_coloured(obj) for obj in objects)
+
+
+def _coloured(obj: Any) -> bool:
+    if getattr(obj, "colors", None) is not None:
+        return True
+    material = obj.material
+    return getattr(obj, "uv", None) is not None and (
+        material.texture is not None or (material.emits and material.emission_texture is not None)
+    )
+
+
 def _cutoff(material: Any, texture: Texture | None, colors: np.ndarray | None) -> float:
     """Return the cutoff the kernels test an object's alpha against: 0 where it cannot cut."""
     cutoff = material.alpha_cutoff
