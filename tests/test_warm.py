@@ -144,6 +144,19 @@ def test_unknown_groups_are_refused():
         _warm.compile_groups(["front", "nonsense"], None)
 
 
+def test_this_process_compiles_the_share_estimated_longest(tmp_path, monkeypatch):
+    # workers start a Python and import Numba first: they take the shorter shares
+    for group, seconds in {"front": 2.5, "scan": 4.0, "lighting": 2.0}.items():
+        monkeypatch.setitem(_warm.GROUPS, group, (_warm.GROUPS[group][0], seconds))
+    here, started = [], []
+    monkeypatch.setattr(_warm, "_compile_here", lambda share: here.append(list(share)) or {
+        g: 0.0 for g in share})
+    monkeypatch.setattr(_warm, "_start_worker", lambda share: started.append(list(share)))
+    monkeypatch.setattr(_warm, "_finish_worker", lambda share, worker: dict.fromkeys(share, 0.0))
+    _warm.compile_groups(["front", "scan", "lighting"], tmp_path, processes=2)
+    assert here == [["front", "lighting"]] and started == [["scan"]]  # 4.5 s, 4 s
+
+
 def test_a_failed_worker_leaves_its_share_to_this_process(monkeypatch):
     ran = []
     monkeypatch.setattr(_warm, "_compile_here", lambda share: ran.extend(share) or {

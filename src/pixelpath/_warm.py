@@ -443,9 +443,10 @@ def compile_groups(
 ) -> dict[str, float]:
     """Compile ``groups`` into the disk cache, on up to ``processes`` processes at once.
 
-    This process compiles one share itself; the others go to worker processes started with
-    the same Python. A worker that fails leaves its groups to this process. Each compiled
-    group's marker is written afterwards.
+    This process compiles one share itself, the one estimated longest: the others go to
+    worker processes started with the same Python, which import pixelpath and Numba before
+    they compile (most of a second). A worker that fails leaves its groups to this process.
+    Each compiled group's marker is written afterwards.
 
     Parameters
     ----------
@@ -477,6 +478,7 @@ def compile_groups(
     shares = _share_out(list(groups), processes or _cores(), markers)
     if not shares:
         return {}
+    shares.sort(key=lambda share: -sum(recorded_seconds(g, markers) for g in share))
     workers = [_start_worker(share) for share in shares[1:]]
     seconds = _compile_here(shares[0])
     for share, worker in zip(shares[1:], workers, strict=True):
