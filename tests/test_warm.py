@@ -59,13 +59,13 @@ def test_every_module_with_compiled_kernels_is_counted_in_the_warmup_report():
 
 
 def test_groups_for_lists_each_group_once_in_table_order():
-    assert _warm.groups_for(["warnock", "zbuffer", "warnock"], ["phong"], coloured=False) == (
+    assert _warm.groups_for(["warnock", "zbuffer", "warnock"], ["phong"], lookups=False) == (
         "front", "depth-test", "rows", "back", "shade", "warnock")
     assert _warm.groups_for([]) == ()
 
 
 def test_groups_for_adds_vertex_shading_to_raster_methods_only():
-    plain = functools.partial(_warm.groups_for, coloured=False)
+    plain = functools.partial(_warm.groups_for, lookups=False)
     assert plain(["zbuffer"], ["phong"]) == ("front", "depth-test", "rows", "back")
     assert plain(["zbuffer"], ["flat", "phong"]) == (
         "front", "vertex-shading", "depth-test", "rows", "back")
@@ -75,19 +75,19 @@ def test_groups_for_adds_vertex_shading_to_raster_methods_only():
 
 
 def test_groups_for_takes_the_passes_for_the_surfaces_the_scenes_have():
-    # plain, coloured (the passes with colour lookups instead), or not known (both)
-    assert _warm.groups_for(["zbuffer"], ["phong"], coloured=True) == (
-        "front", "depth-test", "rows", "colours", "back-coloured")
-    assert _warm.groups_for(["painter"], ["phong"], coloured=True) == (
-        "front", "rows", "colours", "shade-coloured", "scan", "painter")
+    # plain, looked up point by point (the passes with the lookups instead), or not known
+    assert _warm.groups_for(["zbuffer"], ["phong"], lookups=True) == (
+        "front", "depth-test-lookups", "rows", "colours", "back-lookups")
+    assert _warm.groups_for(["painter"], ["phong"], lookups=True) == (
+        "front", "rows", "colours", "shade-lookups", "scan", "painter")
     assert _warm.groups_for(["zbuffer", "octree"], ["phong"]) == (
-        "front", "depth-test", "rows", "colours", "back", "back-coloured", "shade",
-        "shade-coloured", "octree")
+        "front", "depth-test", "depth-test-lookups", "rows", "colours", "back", "back-lookups",
+        "shade", "shade-lookups", "octree")
     for methods in (["raytrace"], ["wireframe"], ["raytrace", "hidden-line"]):
-        assert (_warm.groups_for(methods) == _warm.groups_for(methods, coloured=True)
-                == _warm.groups_for(methods, coloured=False))
+        assert (_warm.groups_for(methods) == _warm.groups_for(methods, lookups=True)
+                == _warm.groups_for(methods, lookups=False))
     for groups in _warm.METHOD_GROUPS.values():  # swapped in only
-        assert not set(groups) & {"colours", *_warm.COLOURED.values()}
+        assert not set(groups) & {"colours", *_warm.LOOKUPS.values()}
 
 
 def test_shares_balance_the_estimated_seconds(tmp_path, monkeypatch):
@@ -126,8 +126,8 @@ def test_a_group_that_feeds_another_goes_first_in_its_process(tmp_path):
 
 def test_every_render_that_runs_a_fed_group_runs_its_feeder():
     for method in _warm.METHOD_GROUPS:
-        for coloured in (False, True, None):
-            groups = _warm.groups_for([method], coloured=coloured)
+        for lookups in (False, True, None):
+            groups = _warm.groups_for([method], lookups=lookups)
             for feeder, feds in _warm.FEEDS.items():
                 assert (feeder in groups) == any(fed in groups for fed in feds)
 
@@ -283,13 +283,14 @@ def test_with_the_kernels_compiled_at_build_time_a_first_render_compiles_nothing
 
 @needs_jit
 @pytest.mark.slow
-def test_a_plain_scene_is_rendered_without_compiling_the_colour_lookups(tmp_path):
-    # A cold z-buffer render of a scene without textures or vertex colours: its groups
-    # compiled into an empty cache (in two processes), the render compiles nothing more, and
-    # no process compiled the colour lookups, which the passes given no colour tables prune.
+def test_a_plain_scene_is_rendered_without_compiling_the_lookups(tmp_path):
+    # A cold z-buffer render of a scene without textures, vertex colours or alpha tests: its
+    # groups compiled into an empty cache (in two processes), the render compiles nothing
+    # more, and no process compiled the colour lookups, the alpha test or the texture
+    # sampling, which the passes given no cutouts or colour tables prune.
     env = {**os.environ, "PIXELPATH_CACHE_DIR": str(tmp_path), "PIXELPATH_PRECOMPILED": "0"}
     env.pop("NUMBA_CACHE_DIR", None)
-    groups = _warm.groups_for(["zbuffer"], ["phong"], coloured=False)
+    groups = _warm.groups_for(["zbuffer"], ["phong"], lookups=False)
     assert groups == ("front", "depth-test", "rows", "back")
     warm = ("from pixelpath import _precompiled, _warm; import sys; "
             "_warm.compile_groups(sys.argv[1:], _precompiled.markers(), 2)")
@@ -319,7 +320,8 @@ def test_a_plain_scene_is_rendered_without_compiling_the_colour_lookups(tmp_path
     assert json.loads(result.stdout) == []
     cached = [path.name for path in tmp_path.rglob("*.nbi")]
     assert any("_shade_row" in name for name in cached)  # where Numba keeps its index files
-    assert not [name for name in cached if "_row_surface_colors" in name]
+    for kernel in ("_row_surface_colors", "_draw_masked", "_texture_kernels.sample-"):
+        assert not [name for name in cached if kernel in name]
 
 
 _COMPILE_GROUPS = textwrap.dedent(

@@ -34,11 +34,11 @@ from dataclasses import dataclass
 from pathlib import Path
 
 __all__ = [
-    "COLOURED",
     "COMPILED_WITH",
     "FEEDS",
     "FOLLOWS",
     "GROUPS",
+    "LOOKUPS",
     "METHOD_GROUPS",
     "SHADING_GROUPS",
     "WarmupReport",
@@ -64,21 +64,23 @@ __all__ = [
 GROUPS: dict[str, tuple[str, float]] = {
     "front": ("pixelpath.raster._kernels:warm_front", 3.0),
     "vertex-shading": ("pixelpath.raster._kernels:warm_vertex_shading", 0.2),
-    # The fused pass's depth test, which "back" loads from the cache (FEEDS).
-    "depth-test": ("pixelpath.raster._kernels:warm_depth_test", 4.2),
-    # The shading passes, "back" (the z-buffer's fused pass) and "shade" (the other methods'),
-    # each for plain surfaces and, "-coloured", with the colour lookups of textures and vertex
-    # colours (COLOURED), which "colours" compiles (FEEDS); all call the shading of a row,
-    # "rows" (FOLLOWS). Until 2026-11-28 "back" (10.0 s) and "shade" (1.9 s) held them all;
-    # the estimates are what the groups took when they split, on a machine that compiled the
-    # old "back" in 7.1 s, scaled by 10.0 / 7.1 (rows 3.3 s there, colours 2.1, back 1.1,
-    # back-coloured 1.2, shade 1.3, shade-coloured 1.1).
-    "rows": ("pixelpath.raster._kernels:warm_rows", 4.7),
-    "colours": ("pixelpath.raster._kernels:warm_colours", 2.9),
-    "back": ("pixelpath.raster._kernels:warm_back", 1.6),
-    "back-coloured": ("pixelpath.raster._kernels:warm_back_coloured", 1.7),
-    "shade": ("pixelpath.raster._kernels:warm_shade", 1.8),
-    "shade-coloured": ("pixelpath.raster._kernels:warm_shade_coloured", 1.6),
+    # The z-buffer's depth test ("depth-test"), its fused pass ("back") and the other methods'
+    # shading pass ("shade"), each for plain scenes and, "-lookups", with the alpha test and
+    # the colour lookups of textures and vertex colours (LOOKUPS), which "colours" compiles;
+    # the passes call the shading of a row, "rows" (FOLLOWS), and load the depth test and the
+    # colour lookups from the cache (FEEDS). Until 2026-11-28 "depth-test" (4.2 s), "back"
+    # (10.0 s) and "shade" (1.9 s) held them all; the estimates are what the groups took when
+    # they split, on a machine that compiled those in 2.9, 7.1 and 1.4 s, scaled by 10 / 7.1
+    # (depth-test 1.1 s there, depth-test-lookups 2.6, rows 3.3-4.0, colours 2.1-2.4, back 1.1,
+    # back-lookups 1.2-1.6, shade 1.3-1.5, shade-lookups 1.1).
+    "depth-test": ("pixelpath.raster._kernels:warm_depth_test", 1.5),
+    "depth-test-lookups": ("pixelpath.raster._kernels:warm_depth_test_lookups", 3.7),
+    "rows": ("pixelpath.raster._kernels:warm_rows", 5.2),
+    "colours": ("pixelpath.raster._kernels:warm_colours", 3.2),
+    "back": ("pixelpath.raster._kernels:warm_back", 1.5),
+    "back-lookups": ("pixelpath.raster._kernels:warm_back_lookups", 2.0),
+    "shade": ("pixelpath.raster._kernels:warm_shade", 2.0),
+    "shade-lookups": ("pixelpath.raster._kernels:warm_shade_lookups", 1.5),
     "scan": ("pixelpath.raster._kernels:warm_scan", 2.4),
     "scanline": ("pixelpath.hsr._kernels.scanline:warmup", 6.8),
     "warnock": ("pixelpath.hsr._kernels.warnock:warmup", 3.7),
@@ -101,7 +103,7 @@ GROUPS: dict[str, tuple[str, float]] = {
 }
 
 # The groups a render with each hidden-surface method calls, and those a drawing style adds.
-# Those of the shading passes are the passes for plain surfaces (groups_for swaps in COLOURED).
+# Those of the shading passes are the passes for plain scenes (groups_for swaps in LOOKUPS).
 METHOD_GROUPS: dict[str, tuple[str, ...]] = {
     "zbuffer": ("front", "depth-test", "rows", "back"),
     "scanline": ("front", "rows", "shade", "scanline"),
@@ -128,17 +130,21 @@ SHADING_GROUPS: dict[str, tuple[str, ...]] = {
 # kernels; the tracer builds and searches the BVH with its kernels).
 FOLLOWS: dict[str, str] = {
     "back": "rows",
-    "back-coloured": "rows",
+    "back-lookups": "rows",
     "shade": "rows",
-    "shade-coloured": "rows",
+    "shade-lookups": "rows",
     "raytrace": "raytrace-bvh",
 }
 
-# Each shading pass's group for plain surfaces, and its version with the colour lookups,
-# which a render of a scene with coloured surfaces (textures or vertex colours) needs
-# instead. A plain scene's render, most of them, compiles no colour lookup
-# (pixelpath.raster._kernels.colour_tables).
-COLOURED: dict[str, str] = {"back": "back-coloured", "shade": "shade-coloured"}
+# Each pass's group for plain scenes, and its version with the alpha test and the colour
+# lookups, which a render of a scene with textures, vertex colours or alpha-tested materials
+# needs instead. A plain scene's render, most of them, compiles none of those lookups
+# (pixelpath.raster._kernels.lookups, pixelpath.scene.texture.needs_lookups).
+LOOKUPS: dict[str, str] = {
+    "depth-test": "depth-test-lookups",
+    "back": "back-lookups",
+    "shade": "shade-lookups",
+}
 
 # Groups that compile part of another group's kernels, for that one to load from the disk
 # cache: each goes first in its process, and the other group compiles the rest of its
@@ -148,10 +154,11 @@ COLOURED: dict[str, str] = {"back": "back-coloured", "shade": "shade-coloured"}
 # rays' search (5 s) and then their shadow rays' (7 s). Split so, a cold z-buffer render took
 # 12 s instead of 15, a cold ray-traced one 21-24 s instead of 31-34 (docs/performance.md).
 # Should the other process be late, the kernels are compiled twice, as they were unsplit.
-# The passes with colour lookups take them from "colours" so.
+# The passes with lookups take them from "colours" and "depth-test-lookups" so.
 FEEDS: dict[str, tuple[str, ...]] = {
-    "depth-test": ("back", "back-coloured"),
-    "colours": ("back-coloured", "shade-coloured"),
+    "depth-test": ("back",),
+    "depth-test-lookups": ("back-lookups",),
+    "colours": ("back-lookups", "shade-lookups"),
     "raytrace-shadows": ("raytrace",),
 }
 
@@ -259,30 +266,31 @@ def run_warmups(markers: Path | None) -> list[WarmupReport]:
 
 def groups_for(
     methods: Iterable[str], shadings: Iterable[str] | None = None, *,
-    coloured: bool | None = None,
+    lookups: bool | None = None,
 ) -> tuple[str, ...]:
     """Return the groups renders with ``methods`` (or drawing styles) need, each once, in order.
 
-    ``shadings`` are the shading modes the renders use (default: every mode); ``coloured``
-    says whether the scenes rendered have coloured surfaces (textures or vertex colours):
-    True, False, or None when that is not known, for both kinds (:data:`COLOURED`).
+    ``shadings`` are the shading modes the renders use (default: every mode); ``lookups``
+    says whether the scenes rendered have surfaces looked up point by point (textures,
+    vertex colours or alpha tests, :func:`pixelpath.scene.texture.needs_lookups`): True,
+    False, or None when that is not known, for both kinds (:data:`LOOKUPS`).
 
     Examples
     --------
     >>> from pixelpath._warm import groups_for
-    >>> groups_for(["zbuffer", "scanline"], shadings=["phong"], coloured=False)
+    >>> groups_for(["zbuffer", "scanline"], shadings=["phong"], lookups=False)
     ('front', 'depth-test', 'rows', 'back', 'shade', 'scanline')
-    >>> groups_for(["zbuffer"], shadings=["gouraud"], coloured=True)
-    ('front', 'vertex-shading', 'depth-test', 'rows', 'colours', 'back-coloured')
+    >>> groups_for(["zbuffer"], shadings=["gouraud"], lookups=True)
+    ('front', 'vertex-shading', 'depth-test-lookups', 'rows', 'colours', 'back-lookups')
     """
     needed = {group for method in methods for group in METHOD_GROUPS.get(method, ())}
     if "front" in needed:
         modes = SHADING_GROUPS if shadings is None else shadings
         needed.update(group for mode in modes for group in SHADING_GROUPS.get(mode, ()))
-    passes = {group for group in COLOURED if group in needed}
-    if passes and coloured is not False:
-        needed.update({"colours", *(COLOURED[group] for group in passes)})
-    if coloured:
+    passes = {group for group in LOOKUPS if group in needed}
+    if passes and lookups is not False:
+        needed.update({"colours", *(LOOKUPS[group] for group in passes)})
+    if lookups:
         needed -= passes
     return tuple(group for group in GROUPS if group in needed)
 

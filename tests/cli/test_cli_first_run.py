@@ -42,10 +42,10 @@ def test_the_notice_shows_only_on_a_terminal_and_the_kernels_compile_either_way(
     expected = "compiling kernels for the first run, about 12 s; later runs are instant\n"
     assert stream.getvalue() == (expected if shown else "")
     # not told whether the scenes are plain: the passes for both kinds of surfaces
-    assert compiled == [["front", "rows", "colours", "shade", "shade-coloured", "warnock"]]
+    assert compiled == [["front", "rows", "colours", "shade", "shade-lookups", "warnock"]]
 
 
-def test_a_render_compiles_the_colour_lookups_only_for_a_scene_that_has_them(
+def test_a_render_compiles_the_lookups_only_for_a_scene_that_has_them(
     compiled, tmp_path
 ):
     from pathlib import Path
@@ -53,12 +53,13 @@ def test_a_render_compiles_the_colour_lookups_only_for_a_scene_that_has_them(
     from pixelpath.cli import main
 
     duck = Path(__file__).parents[1] / "data" / "models" / "Duck.glb"
-    for scene, coloured in (("showcase", False), (str(duck), True)):
+    for scene, lookups in (("showcase", False), (str(duck), True)):
         compiled.clear()
         assert main(["render", scene, "-o", str(tmp_path / "x.png"), "--size", "16x10",
                      "-q"]) == 0
-        passes = ["colours", "back-coloured"] if coloured else ["back"]
-        assert compiled == [["front", "depth-test", "rows", *passes]]
+        passes = (["depth-test-lookups", "rows", "colours", "back-lookups"] if lookups
+                  else ["depth-test", "rows", "back"])
+        assert compiled == [["front", *passes]]
 
 
 def test_a_warm_cache_means_no_notice_and_no_compiling(compiled, monkeypatch):

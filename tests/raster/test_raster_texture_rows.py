@@ -61,10 +61,11 @@ def test_a_rows_lookups_equal_the_lookups_one_by_one(lookups, emission):
     assert colours.tobytes() == expected.tobytes()
 
 
-def test_plain_scenes_are_shaded_without_colour_tables_to_the_same_bytes(monkeypatch):
-    # colour_tables gives the shading passes None for a scene without textures or vertex
-    # colours (their version without the colour lookups) and the tables otherwise. For a
-    # plain scene, the passes with the lookups (forced here) draw the very same bytes.
+def test_plain_scenes_are_drawn_without_lookups_to_the_same_bytes(monkeypatch):
+    # lookups gives the passes None for a scene without textures, vertex colours or alpha
+    # tests (their versions without the alpha test and colour lookups) and the cutouts and
+    # tables otherwise. For a plain scene, the passes with them (forced here) draw the very
+    # same bytes.
     import dataclasses
 
     import pixelpath as pp
@@ -74,15 +75,20 @@ def test_plain_scenes_are_shaded_without_colour_tables_to_the_same_bytes(monkeyp
 
     plain = load_scene(bundled_scenes()["showcase"])
     plain = dataclasses.replace(plain, camera=plain.camera.with_size(80, 50))
-    textured = dataclasses.replace(plain, objects=[Mesh(QUAD, [[0, 1, 2, 3]], Material(
-        texture=Texture(PICTURES[0])), uv=QUAD_UV)])
-    for scene, coloured in ((plain, False), (textured, True)):
+    quad = Mesh(QUAD, [[0, 1, 2, 3]], Material(texture=Texture(PICTURES[0])), uv=QUAD_UV)
+    cut = Mesh(QUAD, [[0, 1, 2, 3]], Material(alpha=0.3, alpha_cutoff=0.5))
+    for objects, looked_up in ((plain.objects, False), ([quad], True), ([cut], True)):
+        scene = dataclasses.replace(plain, objects=objects)
         view = View.whole(scene.camera)
-        surfaces = pipeline.surfaces(pipeline.prepare(scene, view, RenderOptions()), scene, view)
-        tables = _kernels.colour_tables(surfaces)
-        assert (tables is surfaces.tables) if coloured else tables is None
+        prepared = pipeline.prepare(scene, view, RenderOptions())
+        surfaces = pipeline.surfaces(prepared, scene, view)
+        cutouts, tables = _kernels.lookups(surfaces, pipeline.cutouts(prepared))
+        if looked_up:
+            assert tables is surfaces.tables and cutouts is not None
+        else:
+            assert cutouts is None and tables is None
     pictures = {method: pp.render(plain, method) for method in ("zbuffer", "painter")}
-    monkeypatch.setattr(_kernels, "colour_tables", lambda surfaces: surfaces.tables)
+    monkeypatch.setattr(_kernels, "lookups", lambda surfaces, cutouts: (cutouts, surfaces.tables))
     for method, picture in pictures.items():
         forced = pp.render(plain, method)
         for name in ("rgb", "depth", "object_id", "normal"):

@@ -22,8 +22,8 @@ from pixelpath.scene.texture import (
     Texture,
     _decoded,
     _half,
-    coloured_surfaces,
     linear_to_srgb,
+    needs_lookups,
     srgb_to_linear,
     surface_tables,
 )
@@ -465,28 +465,36 @@ def test_surface_tables_pack_emission_textures_where_they_show():
     assert tables.levels.tolist() == [[0, 4, 4], [16, 2, 2], [20, 1, 1], [21, 2, 2], [25, 1, 1]]
 
 
-@given(st.lists(st.tuples(st.booleans(), st.booleans(), st.sampled_from(["none", "texture",
-                                                                          "glow", "dark glow"])),
+@given(st.lists(st.tuples(st.booleans(), st.booleans(),
+                          st.sampled_from(["none", "texture", "glow", "dark glow", "cut",
+                                           "uncut", "cut texture"])),
                 min_size=1, max_size=4))
-def test_coloured_surfaces_are_the_objects_surface_tables_colour(choices):
-    """Meshes with uv or not, vertex colours or not, a texture, an emission texture that
-    shows or one on a material that emits nothing; and a sphere, which has neither."""
+def test_lookups_are_needed_for_the_objects_surface_tables_look_up(choices):
+    """Meshes with uv or not, vertex colours or not; a texture, an emission texture that
+    shows or one on a material that emits nothing, an alpha test that can cut or cannot; and
+    a sphere, which has no uv or colours."""
     from pixelpath.scene import Sphere
 
     picture = Texture(np.ones((2, 2, 3)))
+    holes = Texture(np.dstack([np.ones((2, 2, 3)), [[1.0, 0.0], [1.0, 1.0]]]))
     materials = {"none": Material(), "texture": Material(texture=picture),
                  "glow": Material(emission=(1, 0, 0), emission_texture=picture),
-                 "dark glow": Material(emission_texture=picture)}
+                 "dark glow": Material(emission_texture=picture),
+                 "cut": Material(alpha=0.3, alpha_cutoff=0.5),
+                 "uncut": Material(alpha=0.8, alpha_cutoff=0.5),
+                 "cut texture": Material(texture=holes, alpha_cutoff=0.5)}
     objects = [Sphere((0, 0, 0), 1.0, materials["texture"])]
     for with_uv, with_colors, kind in choices:
         objects.append(Mesh(QUAD, [[0, 1, 2, 3]], materials[kind],
                             uv=QUAD_UV if with_uv else None,
                             colors=[[1, 0, 0]] * 4 if with_colors else None))
     for obj in objects:
-        row = surface_tables([obj]).objects[0]
-        looked_up = row[tk.TEXTURE] >= 0 or row[tk.HAS_COLORS] != 0 or row[tk.GLOW] >= 0
-        assert coloured_surfaces([obj]) == looked_up
-    assert coloured_surfaces(objects) == any(coloured_surfaces([obj]) for obj in objects)
+        tables = surface_tables([obj])
+        row = tables.objects[0]
+        looked_up = (row[tk.TEXTURE] >= 0 or row[tk.HAS_COLORS] != 0 or row[tk.GLOW] >= 0
+                     or tables.alpha[0, tk.CUTOFF] > 0.0)
+        assert needs_lookups([obj]) == looked_up
+    assert needs_lookups(objects) == any(needs_lookups([obj]) for obj in objects)
 
 
 def test_packed_texels_are_the_levels_and_shared_without_a_copy():

@@ -50,14 +50,14 @@ def compile_kernels(
     methods: Iterable[str],
     shadings: Iterable[str] | None = None,
     *,
-    coloured: bool | None = None,
+    lookups: bool | None = None,
     quiet: bool = False,
 ) -> None:
     """Before a first run, compile the kernels that renders with ``methods`` need, on every core.
 
-    ``shadings`` are the shading modes those renders use (default: every mode); ``coloured``
-    says whether the scenes they render have textures or vertex colours
-    (:func:`pixelpath.scene.texture.coloured_surfaces`), None when that is not known (the
+    ``shadings`` are the shading modes those renders use (default: every mode); ``lookups``
+    says whether the scenes they render have textures, vertex colours or alpha tests
+    (:func:`pixelpath.scene.texture.needs_lookups`), None when that is not known (the
     kernels for both kinds). Nothing happens when the kernels are in the disk cache already.
     While they compile, a line on standard error says so (only on a terminal, and not when
     ``quiet``).
@@ -66,7 +66,7 @@ def compile_kernels(
     from pixelpath._warm import cold_groups, compile_groups, estimate_seconds, groups_for
 
     folder = markers()
-    cold = cold_groups(groups_for(methods, shadings, coloured=coloured), folder)
+    cold = cold_groups(groups_for(methods, shadings, lookups=lookups), folder)
     if not cold:
         return
     err = error_console()

@@ -53,7 +53,7 @@ def run(args: argparse.Namespace) -> int:
     """Render each bundled scene, then the ray-traced and the methods pictures; list the files."""
     from pixelpath.cli.render import load_scene_sized, render_to_file
     from pixelpath.scene import bundled_scenes
-    from pixelpath.scene.texture import coloured_surfaces
+    from pixelpath.scene.texture import needs_lookups
 
     scenes = bundled_scenes()
     if not scenes:
@@ -68,8 +68,8 @@ def run(args: argparse.Namespace) -> int:
     )
     start = time.perf_counter()
     loaded = {name: load_scene_sized(str(path), args.size) for name, path in scenes.items()}
-    compile_kernels([options.method], shadings, quiet=args.quiet, coloured=any(
-        coloured_surfaces(scene.objects) for scene in loaded.values()))
+    compile_kernels([options.method], shadings, quiet=args.quiet, lookups=any(
+        needs_lookups(scene.objects) for scene in loaded.values()))
     count = 0
     for name, scene in loaded.items():
         for shading in shadings:
@@ -93,10 +93,10 @@ def _showcase_extras(scene: Any, folder: Path, options: argparse.Namespace) -> i
     from pixelpath.figures._canvas import save
     from pixelpath.figures.methods import methods_side_by_side
     from pixelpath.renderer import METHOD_NAMES
-    from pixelpath.scene.texture import coloured_surfaces
+    from pixelpath.scene.texture import needs_lookups
 
     compile_kernels(METHOD_NAMES, ["phong"], quiet=options.quiet,  # both pictures: Phong
-                    coloured=coloured_surfaces(scene.objects))
+                    lookups=needs_lookups(scene.objects))
     traced = argparse.Namespace(
         **{**vars(options), "method": "raytrace", "shading": "phong", "ssaa": 1},
         samples=4, max_depth=5,

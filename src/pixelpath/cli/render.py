@@ -238,14 +238,14 @@ def render_to_file(
     it took.
     """
     from pixelpath.renderer import render, render_steps
-    from pixelpath.scene.texture import coloured_surfaces
+    from pixelpath.scene.texture import needs_lookups
 
     if not output.parent.is_dir():
         raise CommandError(f"output directory does not exist: {output.parent}")
     steps = render_steps(args.method)
     compile_kernels(
         [args.method, getattr(args, "style", "filled")], [args.shading],
-        coloured=coloured_surfaces(scene.objects), quiet=args.quiet,
+        lookups=needs_lookups(scene.objects), quiet=args.quiet,
     )
     start = time.perf_counter()
     explain = getattr(args, "explain", False) or wants_figures(args)

@@ -461,7 +461,7 @@ def shade(
 
     out = output_buffers(view)
     kernel_surfaces = surfaces(prepared, scene, view)
-    colour_tables = _kernels.colour_tables(kernel_surfaces)
+    _, colour_tables = _kernels.lookups(kernel_surfaces, cutouts(prepared))
     _, order = bands(view)
     runs = slices(view)
     def shade_run(run: np.ndarray) -> None:

@@ -69,8 +69,7 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     offsets, items = pipeline.binned(prepared, view)
     out = pipeline.output_buffers(view)
     surfaces = pipeline.surfaces(prepared, scene, view)
-    colour_tables = _kernels.colour_tables(surfaces)
-    cutouts = pipeline.cutouts(prepared)
+    cutouts, colour_tables = _kernels.lookups(surfaces, pipeline.cutouts(prepared))
     _, order = pipeline.bands(view)
     runs = pipeline.slices(view)
     def render_run(run: np.ndarray) -> None:

@@ -37,7 +37,9 @@ method asks :func:`cut_away_at` about each sample of an alpha-tested triangle (`
 before it lets the sample hide what lies behind, so the sample behind shows through, and the
 shading pass never sees the cut one. The question is asked per triangle first
 (``Cutouts.masked``): the loops over the samples of other triangles are the ones they were
-without alpha tests.
+without alpha tests. A scene without alpha tests, textures or vertex colours hands the
+z-buffer's pass no cutouts and the passes no colour tables (:func:`lookups`), and those
+versions of the kernels are compiled without the tests and lookups.
 """
 
 from __future__ import annotations
@@ -51,6 +53,7 @@ from pixelpath._jit import compile_for, njit
 from pixelpath.lighting._kernels import shade_planar, shade_point
 from pixelpath.raster._scan_kernels import (
     BAND_ROWS,
+    Cutouts,
     _band_rows,
     _rasterize_band,
     bin_triangles,
@@ -152,28 +155,35 @@ class Surfaces(NamedTuple):
     far: float
 
 
-def colour_tables(surfaces: Surfaces):
-    """Return the shading pass's ``colour_tables``: ``surfaces.tables``, or None where unused.
+def lookups(surfaces: Surfaces, cutouts: Cutouts) -> tuple[Cutouts | None, object]:
+    """Return the shading passes' ``(cutouts, colour_tables)``: both None for a plain scene.
 
-    None when no object has a coloured surface (``surfaces.uv`` and ``surfaces.vertex_colors``
-    have no rows), where the pass makes no colour lookup. Numba compiles the passes
-    separately for None and prunes the lookups (:func:`_row_surface_colors`) from that
-    version: the plain scenes most renders draw compile none of them, 2 of the 7 s the
-    z-buffer's pass took to compile with them (``docs/performance.md``; the groups of each
-    version in :mod:`pixelpath._warm`).
+    A scene is plain when no object has a coloured surface (``surfaces.uv`` and
+    ``surfaces.vertex_colors`` have no rows) and no triangle is alpha-tested (no
+    ``cutouts.masked``); otherwise they are ``cutouts`` and ``surfaces.tables``. Numba
+    compiles the passes separately for None and prunes the alpha test and the colour lookups
+    (:func:`_row_surface_colors`) from that version: the plain scenes most renders draw
+    compile none of them, 3.6 of the 10 s the z-buffer's depth test and pass took to compile
+    with them (``docs/performance.md``; the groups of each version in :mod:`pixelpath._warm`).
 
     Examples
     --------
     >>> import numpy as np
-    >>> from pixelpath.raster._kernels import Surfaces, colour_tables
+    >>> from pixelpath.raster._kernels import Surfaces, lookups
+    >>> from pixelpath.raster._scan_kernels import Cutouts
     >>> plain = Surfaces(*[None] * 8, np.empty((0, 2)), np.empty((0, 4)), "tables",
     ...                  *[None] * 12)
-    >>> colour_tables(plain) is None, colour_tables(plain._replace(uv=np.zeros((3, 2))))
-    (True, 'tables')
+    >>> opaque = Cutouts(np.zeros(4, dtype=bool), *[None] * 6)
+    >>> lookups(plain, opaque)
+    (None, None)
+    >>> lookups(plain._replace(uv=np.zeros((3, 2))), opaque)[1]
+    'tables'
+    >>> lookups(plain, opaque._replace(masked=np.ones(4, dtype=bool)))[1]
+    'tables'
     """
-    if surfaces.uv.shape[0] or surfaces.vertex_colors.shape[0]:
-        return surfaces.tables
-    return None
+    if surfaces.uv.shape[0] or surfaces.vertex_colors.shape[0] or cutouts.masked.any():
+        return cutouts, surfaces.tables
+    return None, None
 
 
 class Buffers(NamedTuple):
@@ -255,7 +265,7 @@ def render_bands(bands, setup, rows, offsets, items, band_rows, x0, y0, inv_dept
     ``inv_depth`` and ``triangle_id`` are the region's visibility buffers (h, w), left filled
     for whatever reads them afterwards, or one band's (``band_rows``, w), which every band
     reuses: those stay in cache, and a frame's 12 bytes a pixel of them never reach memory.
-    ``colour_tables`` is :func:`colour_tables` of ``surfaces``.
+    ``cutouts`` and ``colour_tables`` are :func:`lookups`'.
     Serial, and called on runs of the band list from several threads at once (it releases
     the GIL): a ``parallel=True`` loop cost seconds more to compile on a first run.
     """
@@ -283,7 +293,7 @@ def shade_bands(bands, band_rows, x0, y0, inv_depth, triangle_id, surfaces, colo
     ``triangle_id`` (h, w) its triangle (-1 there), for the region whose top-left pixel is
     (x0, y0). Writes clamped RGB (h, w, 3) (``surfaces.background`` where nothing was drawn),
     the view-axis depth (h, w) (``inf`` there) and the object id (h, w) (-1 there) into
-    ``out``. ``colour_tables`` is :func:`colour_tables` of ``surfaces``.
+    ``out``. ``colour_tables`` is :func:`lookups`'.
     """
     height = inv_depth.shape[0]
     for k in range(bands.shape[0]):
@@ -864,64 +874,75 @@ def warm_colours() -> None:
 
 
 def warm_back() -> None:
-    """Compile the z-buffer's fused pass for plain surfaces: depth test and shading, by bands.
+    """Compile the z-buffer's fused pass for plain scenes: depth test and shading, by bands.
 
     After ``rows`` (``pixelpath._warm.FOLLOWS``), whose row shading it calls. By the time the
     pass needs its depth test, the group ``depth-test``, compiled at once in another process
     (``pixelpath._warm.FEEDS``), has put that in the disk cache, and this process loads it
     instead of compiling it too.
     """
-    _warm_fused_pass(coloured=False)
+    _warm_fused_pass(with_lookups=False)
 
 
-def warm_back_coloured() -> None:
-    """Compile the z-buffer's fused pass with the colour lookups of coloured surfaces.
+def warm_back_lookups() -> None:
+    """Compile the z-buffer's fused pass with the alpha test and the colour lookups.
 
-    As ``back``; the lookups come from the group ``colours``, which feeds this one.
+    As ``back``; the lookups come from the group ``colours``, the depth test from
+    ``depth-test-lookups``.
     """
-    _warm_fused_pass(coloured=True)
+    _warm_fused_pass(with_lookups=True)
 
 
-def _warm_fused_pass(coloured: bool) -> None:
+def _warm_fused_pass(with_lookups: bool) -> None:
     bands, setup, rows, offsets, items, inv_depth, triangle_id, surfaces, out = (
         _tiny_shading_pass()
     )
+    cutouts = tiny_cutouts(setup, surfaces.triangles) if with_lookups else None
     render_bands(bands, setup, rows, offsets, items, BAND_ROWS, 0, 0, inv_depth, triangle_id,
-                 tiny_cutouts(setup, surfaces.triangles), surfaces,
-                 surfaces.tables if coloured else None, out)
+                 cutouts, surfaces, surfaces.tables if with_lookups else None, out)
 
 
 def warm_depth_test() -> None:
-    """Compile the z-buffer's depth test of a band, with the types its fused pass passes."""
+    """Compile the z-buffer's depth test of a band for plain scenes, as its fused pass calls it."""
+    _warm_depth_test(with_lookups=False)
+
+
+def warm_depth_test_lookups() -> None:
+    """Compile the z-buffer's depth test of a band with the alpha test."""
+    _warm_depth_test(with_lookups=True)
+
+
+def _warm_depth_test(with_lookups: bool) -> None:
     bands, setup, rows, offsets, items, inv_depth, triangle_id, surfaces, _ = (
         _tiny_shading_pass()
     )
     first, stop = _band_rows(bands[0], BAND_ROWS, 0, inv_depth.shape[0])
     compile_for(_rasterize_band, setup, rows, offsets, items, bands[0], first, stop, 0, first,
-                inv_depth, triangle_id, tiny_cutouts(setup, surfaces.triangles))
+                inv_depth, triangle_id,
+                tiny_cutouts(setup, surfaces.triangles) if with_lookups else None)
 
 
 def warm_shade() -> None:
     """Compile the shading pass the other methods run on the visibility they decided.
 
-    For plain surfaces, after ``rows`` as ``back``; and the count of texture lookups every
+    For plain scenes, after ``rows`` as ``back``; and the count of texture lookups every
     raster method's explain report makes.
     """
-    _, _, _, _, _, inv_depth, triangle_id, surfaces, _ = _warm_shading_pass(coloured=False)
-    lookups = np.empty(triangle_id.shape, dtype=np.int32)
-    texture_lookups(0, 0, triangle_id, surfaces, lookups, lookups.copy(), np.empty(inv_depth.shape))
+    _, _, _, _, _, inv_depth, triangle_id, surfaces, _ = _warm_shading_pass(with_lookups=False)
+    counts = np.empty(triangle_id.shape, dtype=np.int32)
+    texture_lookups(0, 0, triangle_id, surfaces, counts, counts.copy(), np.empty(inv_depth.shape))
 
 
-def warm_shade_coloured() -> None:
-    """Compile the other methods' shading pass with the colour lookups of coloured surfaces."""
-    _warm_shading_pass(coloured=True)
+def warm_shade_lookups() -> None:
+    """Compile the other methods' shading pass with the colour lookups."""
+    _warm_shading_pass(with_lookups=True)
 
 
-def _warm_shading_pass(coloured: bool) -> tuple:
+def _warm_shading_pass(with_lookups: bool) -> tuple:
     inputs = _tiny_shading_pass()
     bands, _, _, _, _, inv_depth, triangle_id, surfaces, out = inputs
     shade_bands(bands, BAND_ROWS, 0, 0, inv_depth, triangle_id, surfaces,
-                surfaces.tables if coloured else None, out)
+                surfaces.tables if with_lookups else None, out)
     return inputs
 
 

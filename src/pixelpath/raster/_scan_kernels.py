@@ -98,17 +98,18 @@ def _rasterize_band(setup, rows, offsets, items, band, band_first, band_stop, x0
     [top, top + h): the whole region's (``top`` its first row), or the band's alone (``top``
     is ``band_first``). Pixel centres are computed in image coordinates, so a region gets
     exactly the pixels of the whole image. Alpha-tested triangles (``cutouts.masked``) go
-    through :func:`_draw_masked`.
+    through :func:`_draw_masked`; ``cutouts`` None (a scene without them) leaves the alpha
+    test out of the compiled code.
     """
     width = inv_depth.shape[1]
     _clear_band(band_first, band_stop, top, inv_depth, triangle_id)
-    masked = cutouts.masked
     for k in range(offsets[band], offsets[band + 1]):
         t = items[k]
-        if masked[t]:
-            _draw_masked(t, max(rows[t, 0], band_first), min(rows[t, 1], band_stop), x0, top,
-                         inv_depth, triangle_id, cutouts, True)
-            continue
+        if cutouts is not None:  # a branch Numba prunes, with the alpha test, for None
+            if cutouts.masked[t]:
+                _draw_masked(t, max(rows[t, 0], band_first), min(rows[t, 1], band_stop), x0,
+                             top, inv_depth, triangle_id, cutouts, True)
+                continue
         record = setup[t]
         pa, pb, pc = record[KEY_PLANE], record[KEY_PLANE + 1], record[KEY_PLANE + 2]
         for j in range(max(rows[t, 0], band_first), min(rows[t, 1], band_stop)):

@@ -530,14 +530,15 @@ def surface_tables(objects: Any):
     )
 
 
-def coloured_surfaces(objects: Any) -> bool:
-    """Whether any of the scene objects has a surface colour the kernels look up point by point.
+def needs_lookups(objects: Any) -> bool:
+    """Whether the kernels look any of the scene objects' surfaces up point by point.
 
-    Those objects are the ones :func:`surface_tables` gives a texture, an emission texture or
-    vertex colours: meshes with vertex colours, and meshes with texture coordinates whose
-    material has a texture, or an emission texture and light to emit (primitives have
-    neither). A render of objects without any compiles and runs its shading pass without
-    colour lookups (:func:`pixelpath.raster._kernels.colour_tables`).
+    Those objects are the ones :func:`surface_tables` gives a texture, an emission texture,
+    vertex colours or an alpha test: meshes with vertex colours, meshes with texture
+    coordinates whose material has a texture, or an emission texture and light to emit, and
+    objects whose alpha can fall below their material's ``alpha_cutoff`` (primitives have
+    no texture coordinates or vertex colours). A render of objects without any compiles and
+    runs its passes without those lookups (:func:`pixelpath.raster._kernels.lookups`).
 
     Examples
     --------
@@ -546,19 +547,19 @@ def coloured_surfaces(objects: Any) -> bool:
     >>> quad = Mesh([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], [[0, 1, 2, 3]],
     ...             Material(texture=np.ones((4, 4, 3))), uv=[[0, 0], [1, 0], [1, 1], [0, 1]])
     >>> ball = Sphere((0, 0, 0), 1.0)
-    >>> coloured_surfaces([ball]), coloured_surfaces([ball, quad])
+    >>> needs_lookups([ball]), needs_lookups([ball, quad])
     (False, True)
     """
-    return any(_coloured(obj) for obj in objects)
+    return any(_looked_up(obj) for obj in objects)
 
 
-def _coloured(obj: Any) -> bool:
-    if getattr(obj, "colors", None) is not None:
-        return True
-    material = obj.material
-    return getattr(obj, "uv", None) is not None and (
-        material.texture is not None or (material.emits and material.emission_texture is not None)
-    )
+def _looked_up(obj: Any) -> bool:
+    material, uv = obj.material, getattr(obj, "uv", None)
+    colors = getattr(obj, "colors", None)
+    texture = material.texture if uv is not None else None
+    glows = uv is not None and material.emits and material.emission_texture is not None
+    return (colors is not None or texture is not None or glows
+            or _cutoff(material, texture, colors) > 0.0)
 
 
 def _cutoff(material: Any, texture: Texture | None, colors: np.ndarray | None) -> float:
