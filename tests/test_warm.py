@@ -195,13 +195,10 @@ def test_the_stamp_follows_the_install_location_and_the_sources(tmp_path):
     assert _stamp_of_copy(tmp_path) not in (here, elsewhere)
 
 
-# Compile every method's groups into an empty cache in worker processes, then render each
-# method and shading in a fresh process, a plain scene and a textured model (the passes with
-# colour lookups): nothing may compile there. This proves that the groups' hand-made warm-up
-# inputs have the very types the render path passes. Methods come after the model's path.
-_RENDER_EVERY_METHOD = textwrap.dedent(
+# The start of the scripts below: lists every function Numba starts to compile afterwards.
+_COUNT_COMPILES = textwrap.dedent(
     """
-    import dataclasses, json, sys
+    import json, sys
     from numba.core import event
     compiled = []
 
@@ -213,6 +210,16 @@ _RENDER_EVERY_METHOD = textwrap.dedent(
             pass
 
     event.register("numba:compile", Count())
+    """
+)
+
+# Compile every method's groups into an empty cache in worker processes, then render each
+# method and shading in a fresh process, a plain scene and a textured model (the passes with
+# colour lookups): nothing may compile there. This proves that the groups' hand-made warm-up
+# inputs have the very types the render path passes. Methods come after the model's path.
+_RENDER_EVERY_METHOD = _COUNT_COMPILES + textwrap.dedent(
+    """
+    import dataclasses
     import pixelpath as pp
     from pixelpath.scene import bundled_scenes, load_scene
     for scene in (load_scene(bundled_scenes()["showcase"]), load_scene(sys.argv[1])):
@@ -295,20 +302,8 @@ def test_a_plain_scene_is_rendered_without_compiling_the_lookups(tmp_path):
     warm = ("from pixelpath import _precompiled, _warm; import sys; "
             "_warm.compile_groups(sys.argv[1:], _precompiled.markers(), 2)")
     subprocess.run([sys.executable, "-c", warm, *groups], env=env, check=True)
-    render = textwrap.dedent(
+    render = _COUNT_COMPILES + textwrap.dedent(
         """
-        import json
-        from numba.core import event
-        compiled = []
-
-        class Count(event.Listener):
-            def on_start(self, e):
-                compiled.append(e.data["dispatcher"].py_func.__qualname__)
-
-            def on_end(self, e):
-                pass
-
-        event.register("numba:compile", Count())
         import pixelpath as pp
         from pixelpath.scene import bundled_scenes, load_scene
         pp.render(load_scene(bundled_scenes()["showcase"]), "zbuffer", "phong")
