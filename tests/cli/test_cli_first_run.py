@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import contextlib
 import io
 
 import pytest
@@ -60,6 +61,36 @@ def test_a_render_compiles_the_lookups_only_for_a_scene_that_has_them(
         passes = (["depth-test-lookups", "rows", "colours", "back-lookups"] if lookups
                   else ["depth-test", "rows", "back"])
         assert compiled == [["front", *passes]]
+
+
+def test_frames_compile_their_groups_first_unless_a_cluster_elsewhere_renders_them(
+    compiled, tmp_path, monkeypatch
+):
+    from pixelpath.cli import _frames, main
+
+    pattern = str(tmp_path / "f_{frame}.png")
+    assert main(["render", "showcase", "--frames", "0:2", "-o", pattern, "--size", "16x10",
+                 "-q"]) == 0
+    assert compiled == [["front", "depth-test", "rows", "back"]]
+    compiled.clear()
+    # no scheduler here: the cluster (and the render) stand in, to see what compiles first
+    monkeypatch.setattr(_frames, "cluster_for", lambda *args: contextlib.nullcontext())
+    monkeypatch.setattr("pixelpath.frames.run_plan", lambda plan, client, advance: None)
+    assert main(["render", "showcase", "--frames", "0:2", "-o", pattern, "--size", "16x10",
+                 "-q", "--scheduler", "tcp://127.0.0.1:1"]) == 0
+    assert compiled == []
+
+
+def test_a_function_saying_whether_a_scene_needs_lookups_is_called_only_on_a_first_run(
+    compiled, monkeypatch
+):
+    asked = []
+    compile_kernels(["zbuffer"], ["phong"], lookups=lambda: asked.append(1) or True)
+    assert asked == [1] and compiled == [["front", "depth-test-lookups", "rows", "colours",
+                                          "back-lookups"]]
+    monkeypatch.setattr(_warm, "cold_groups", lambda groups, markers: [])
+    compile_kernels(["zbuffer"], ["phong"], lookups=lambda: asked.append(2) or True)
+    assert asked == [1]
 
 
 def test_a_warm_cache_means_no_notice_and_no_compiling(compiled, monkeypatch):

@@ -50,22 +50,26 @@ def compile_kernels(
     methods: Iterable[str],
     shadings: Iterable[str] | None = None,
     *,
-    lookups: bool | None = None,
+    lookups: bool | Callable[[], bool] | None = None,
     quiet: bool = False,
 ) -> None:
     """Before a first run, compile the kernels that renders with ``methods`` need, on every core.
 
     ``shadings`` are the shading modes those renders use (default: every mode); ``lookups``
     says whether the scenes they render have textures, vertex colours or alpha tests
-    (:func:`pixelpath.scene.texture.needs_lookups`), None when that is not known (the
-    kernels for both kinds). Nothing happens when the kernels are in the disk cache already.
-    While they compile, a line on standard error says so (only on a terminal, and not when
-    ``quiet``).
+    (:func:`pixelpath.scene.texture.needs_lookups`), or is a function that says so, called
+    only when some kernels are to compile; None when that is not known (the kernels for both
+    kinds). Nothing happens when the kernels are in the disk cache already. While they
+    compile, a line on standard error says so (only on a terminal, and not when ``quiet``).
     """
     from pixelpath._precompiled import markers
     from pixelpath._warm import cold_groups, compile_groups, estimate_seconds, groups_for
 
     folder = markers()
+    if not cold_groups(groups_for(methods, shadings), folder):  # both kinds in the cache
+        return
+    if callable(lookups):
+        lookups = lookups()
     cold = cold_groups(groups_for(methods, shadings, lookups=lookups), folder)
     if not cold:
         return

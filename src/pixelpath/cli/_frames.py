@@ -13,7 +13,13 @@ import time
 from collections.abc import Iterator
 from typing import Any
 
-from pixelpath.cli._common import CommandError, console, error_console, progress
+from pixelpath.cli._common import (
+    CommandError,
+    compile_kernels,
+    console,
+    error_console,
+    progress,
+)
 from pixelpath.frames.plan import available_cores
 
 DASK_MISSING = "needs dask: pip install 'pixelpath[dask]'"
@@ -99,9 +105,14 @@ def wants_frames(args: argparse.Namespace) -> bool:
 
 
 def run_frames(args: argparse.Namespace, scene: Any) -> int:
-    """Render the requested frames (or tiles) and write them; return the exit status."""
+    """Render the requested frames (or tiles) and write them; return the exit status.
+
+    On a first run the kernels compile first, on every core, into the kernel cache that this
+    process and a local cluster's workers read (not for a cluster elsewhere, ``--scheduler``).
+    """
     from pixelpath.frames import parse_frames, parse_tiles, plan_frames, run_plan
     from pixelpath.frames.plan import FRAMES_PNG_LEVEL
+    from pixelpath.scene.texture import needs_lookups
 
     if args.explain:
         raise CommandError("--explain describes one image; leave out the frame options")
@@ -111,6 +122,9 @@ def run_frames(args: argparse.Namespace, scene: Any) -> int:
         raise CommandError(f"--workers must be at least 1, got {args.workers}")
     frames = [0] if args.frames is None else parse_frames(args.frames)
     tiles = (1, 1) if args.tiles is None else parse_tiles(args.tiles)
+    if args.scheduler is None:  # before planning, whose check renders a pixel
+        compile_kernels([args.method, args.style], [args.shading], quiet=args.quiet,
+                        lookups=needs_lookups(scene.objects))
     plan = plan_frames(
         scene,
         frames,

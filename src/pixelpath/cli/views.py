@@ -116,6 +116,7 @@ def register(subparsers: Any) -> None:
 def run(args: argparse.Namespace) -> int:
     """Plan the dataset, render its views (here or on a cluster), write transforms.json."""
     from pixelpath.frames.views import plan_views, run_views
+    from pixelpath.scene import load_scene
     from pixelpath.scene.texture import needs_lookups
 
     if args.workers is not None and args.scheduler is not None:
@@ -124,6 +125,9 @@ def run(args: argparse.Namespace) -> int:
         raise CommandError(f"--workers must be at least 1, got {args.workers}")
     start = time.perf_counter()
     source = scene_path(args.model)
+    # before planning, whose check renders a pixel: the model is read for this on a first run
+    compile_kernels([args.method], [args.shading], quiet=args.quiet,
+                    lookups=lambda: needs_lookups(load_scene(source).objects))
     plan = plan_views(
         source,
         args.views,
@@ -143,8 +147,6 @@ def run(args: argparse.Namespace) -> int:
         overwrite=args.overwrite,
         options=render_options(args),
     )
-    compile_kernels([args.method], [args.shading], quiet=args.quiet,
-                    lookups=needs_lookups(plan.job.scene.objects))
     count = len(plan.todo)
     with cluster_for(args, count, plan.job.options, start) as client:
         rendering = time.perf_counter()
