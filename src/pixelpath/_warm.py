@@ -139,7 +139,7 @@ FOLLOWS: dict[str, str] = {
 # Each pass's group for plain scenes, and its version with the alpha test and the colour
 # lookups, which a render of a scene with textures, vertex colours or alpha-tested materials
 # needs instead. A plain scene's render, most of them, compiles none of those lookups
-# (pixelpath.raster._kernels.lookups, pixelpath.scene.texture.needs_lookups).
+# (pixelpath.raster._kernels.looks_up, pixelpath.scene.texture.needs_lookups).
 LOOKUPS: dict[str, str] = {
     "depth-test": "depth-test-lookups",
     "back": "back-lookups",

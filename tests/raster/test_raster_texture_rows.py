@@ -62,10 +62,10 @@ def test_a_rows_lookups_equal_the_lookups_one_by_one(lookups, emission):
 
 
 def test_plain_scenes_are_drawn_without_lookups_to_the_same_bytes(monkeypatch):
-    # lookups gives the passes None for a scene without textures, vertex colours or alpha
-    # tests (their versions without the alpha test and colour lookups) and the cutouts and
-    # tables otherwise. For a plain scene, the passes with them (forced here) draw the very
-    # same bytes.
+    # A scene without textures, vertex colours or alpha tests does not look its surfaces up:
+    # the passes get None (their versions without the alpha test and colour lookups), and
+    # the cutouts and tables otherwise. For a plain scene, the passes with them (forced here)
+    # draw the very same bytes.
     import dataclasses
 
     import pixelpath as pp
@@ -81,14 +81,9 @@ def test_plain_scenes_are_drawn_without_lookups_to_the_same_bytes(monkeypatch):
         scene = dataclasses.replace(plain, objects=objects)
         view = View.whole(scene.camera)
         prepared = pipeline.prepare(scene, view, RenderOptions())
-        surfaces = pipeline.surfaces(prepared, scene, view)
-        cutouts, tables = _kernels.lookups(surfaces, pipeline.cutouts(prepared))
-        if looked_up:
-            assert tables is surfaces.tables and cutouts is not None
-        else:
-            assert cutouts is None and tables is None
+        assert _kernels.looks_up(pipeline.surfaces(prepared, scene, view)) is looked_up
     pictures = {method: pp.render(plain, method) for method in ("zbuffer", "painter")}
-    monkeypatch.setattr(_kernels, "lookups", lambda surfaces, cutouts: (cutouts, surfaces.tables))
+    monkeypatch.setattr(_kernels, "looks_up", lambda surfaces: True)
     for method, picture in pictures.items():
         forced = pp.render(plain, method)
         for name in ("rgb", "depth", "object_id", "normal"):

@@ -66,9 +66,9 @@ def compile_kernels(
     from pixelpath._warm import cold_groups, compile_groups, estimate_seconds, groups_for
 
     folder = markers()
-    if not cold_groups(groups_for(methods, shadings), folder):  # both kinds in the cache
-        return
     if callable(lookups):
+        if not cold_groups(groups_for(methods, shadings), folder):  # both kinds cached
+            return
         lookups = lookups()
     cold = cold_groups(groups_for(methods, shadings, lookups=lookups), folder)
     if not cold:

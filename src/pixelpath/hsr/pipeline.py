@@ -461,7 +461,7 @@ def shade(
 
     out = output_buffers(view)
     kernel_surfaces = surfaces(prepared, scene, view)
-    _, colour_tables = _kernels.lookups(kernel_surfaces, cutouts(prepared))
+    colour_tables = kernel_surfaces.tables if _kernels.looks_up(kernel_surfaces) else None
     _, order = bands(view)
     runs = slices(view)
     def shade_run(run: np.ndarray) -> None:

@@ -69,7 +69,9 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
     offsets, items = pipeline.binned(prepared, view)
     out = pipeline.output_buffers(view)
     surfaces = pipeline.surfaces(prepared, scene, view)
-    cutouts, colour_tables = _kernels.lookups(surfaces, pipeline.cutouts(prepared))
+    cutouts = colour_tables = None  # a plain scene: the passes compiled without lookups
+    if _kernels.looks_up(surfaces):
+        cutouts, colour_tables = pipeline.cutouts(prepared), surfaces.tables
     _, order = pipeline.bands(view)
     runs = pipeline.slices(view)
     def render_run(run: np.ndarray) -> None:

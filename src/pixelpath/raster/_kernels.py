@@ -38,7 +38,7 @@ before it lets the sample hide what lies behind, so the sample behind shows thro
 shading pass never sees the cut one. The question is asked per triangle first
 (``Cutouts.masked``): the loops over the samples of other triangles are the ones they were
 without alpha tests. A scene without alpha tests, textures or vertex colours hands the
-z-buffer's pass no cutouts and the passes no colour tables (:func:`lookups`), and those
+z-buffer's pass no cutouts and the passes no colour tables (:func:`looks_up`), and those
 versions of the kernels are compiled without the tests and lookups.
 """
 
@@ -53,7 +53,6 @@ from pixelpath._jit import compile_for, njit
 from pixelpath.lighting._kernels import shade_planar, shade_point
 from pixelpath.raster._scan_kernels import (
     BAND_ROWS,
-    Cutouts,
     _band_rows,
     _rasterize_band,
     bin_triangles,
@@ -77,6 +76,7 @@ from pixelpath.raster._setup_kernels import (
     setup_triangles,
 )
 from pixelpath.scene._texture_kernels import (
+    CUTOFF,
     GLOW,
     HAS_COLORS,
     NEAREST,
@@ -155,35 +155,29 @@ class Surfaces(NamedTuple):
     far: float
 
 
-def lookups(surfaces: Surfaces, cutouts: Cutouts) -> tuple[Cutouts | None, object]:
-    """Return the shading passes' ``(cutouts, colour_tables)``: both None for a plain scene.
+def looks_up(surfaces: Surfaces) -> bool:
+    """Whether the passes look the scene's surfaces up point by point.
 
-    A scene is plain when no object has a coloured surface (``surfaces.uv`` and
-    ``surfaces.vertex_colors`` have no rows) and no triangle is alpha-tested (no
-    ``cutouts.masked``); otherwise they are ``cutouts`` and ``surfaces.tables``. Numba
-    compiles the passes separately for None and prunes the alpha test and the colour lookups
-    (:func:`_row_surface_colors`) from that version: the plain scenes most renders draw
+    True when an object has a coloured surface (``surfaces.uv`` or ``surfaces.vertex_colors``
+    has rows) or an alpha test (a cutoff in ``surfaces.tables.alpha``). Otherwise the scene is
+    plain, and the passes are handed no cutouts and no colour tables (None): Numba compiles
+    them separately for None and prunes the alpha test and the colour lookups
+    (:func:`_row_surface_colors`) from that version, so the plain scenes most renders draw
     compile none of them, 3.6 of the 10 s the z-buffer's depth test and pass took to compile
     with them (``docs/performance.md``; the groups of each version in :mod:`pixelpath._warm`).
 
     Examples
     --------
     >>> import numpy as np
-    >>> from pixelpath.raster._kernels import Surfaces, lookups
-    >>> from pixelpath.raster._scan_kernels import Cutouts
-    >>> plain = Surfaces(*[None] * 8, np.empty((0, 2)), np.empty((0, 4)), "tables",
+    >>> from pixelpath.raster._kernels import Surfaces, looks_up
+    >>> from pixelpath.scene.texture import surface_tables
+    >>> plain = Surfaces(*[None] * 8, np.empty((0, 2)), np.empty((0, 4)), surface_tables([]),
     ...                  *[None] * 12)
-    >>> opaque = Cutouts(np.zeros(4, dtype=bool), *[None] * 6)
-    >>> lookups(plain, opaque)
-    (None, None)
-    >>> lookups(plain._replace(uv=np.zeros((3, 2))), opaque)[1]
-    'tables'
-    >>> lookups(plain, opaque._replace(masked=np.ones(4, dtype=bool)))[1]
-    'tables'
+    >>> looks_up(plain), looks_up(plain._replace(uv=np.zeros((3, 2))))
+    (False, True)
     """
-    if surfaces.uv.shape[0] or surfaces.vertex_colors.shape[0] or cutouts.masked.any():
-        return cutouts, surfaces.tables
-    return None, None
+    return bool(surfaces.uv.shape[0] or surfaces.vertex_colors.shape[0]
+                or np.any(surfaces.tables.alpha[:, CUTOFF] > 0.0))
 
 
 class Buffers(NamedTuple):
@@ -265,7 +259,7 @@ def render_bands(bands, setup, rows, offsets, items, band_rows, x0, y0, inv_dept
     ``inv_depth`` and ``triangle_id`` are the region's visibility buffers (h, w), left filled
     for whatever reads them afterwards, or one band's (``band_rows``, w), which every band
     reuses: those stay in cache, and a frame's 12 bytes a pixel of them never reach memory.
-    ``cutouts`` and ``colour_tables`` are :func:`lookups`'.
+    ``cutouts`` and ``colour_tables`` are None for a plain scene (:func:`looks_up`).
     Serial, and called on runs of the band list from several threads at once (it releases
     the GIL): a ``parallel=True`` loop cost seconds more to compile on a first run.
     """
@@ -293,7 +287,8 @@ def shade_bands(bands, band_rows, x0, y0, inv_depth, triangle_id, surfaces, colo
     ``triangle_id`` (h, w) its triangle (-1 there), for the region whose top-left pixel is
     (x0, y0). Writes clamped RGB (h, w, 3) (``surfaces.background`` where nothing was drawn),
     the view-axis depth (h, w) (``inf`` there) and the object id (h, w) (-1 there) into
-    ``out``. ``colour_tables`` is :func:`lookups`'.
+    ``out``. ``colour_tables`` is ``surfaces.tables``, or None for a plain scene
+    (:func:`looks_up`).
     """
     height = inv_depth.shape[0]
     for k in range(bands.shape[0]):

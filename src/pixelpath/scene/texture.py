@@ -538,7 +538,7 @@ def needs_lookups(objects: Any) -> bool:
     coordinates whose material has a texture, or an emission texture and light to emit, and
     objects whose alpha can fall below their material's ``alpha_cutoff`` (primitives have
     no texture coordinates or vertex colours). A render of objects without any compiles and
-    runs its passes without those lookups (:func:`pixelpath.raster._kernels.lookups`).
+    runs its passes without those lookups (:func:`pixelpath.raster._kernels.looks_up`).
 
     Examples
     --------
