@@ -59,10 +59,11 @@ from pixelpath._warm import (
 
 __all__ = ["BUILT_GROUPS", "MANIFEST", "build", "cache_root", "enabled", "markers", "seed"]
 
-# Every group a render calls, whatever its method, shading or drawing style, and the 8-bit
-# encoding of the saved picture (1.4 s to compile); the clipping and colour kernels (about a
-# minute of compiling between them, over every dtype they accept) compile on first use.
-BUILT_GROUPS = (*groups_for(METHOD_GROUPS), "images")
+# Every group a render calls, whatever its method, shading or drawing style, the searches of
+# batches of rays (raytrace.intersect) and the 8-bit encoding of the saved picture (1.4 s to
+# compile); the clipping and colour kernels (about a minute of compiling between them, over
+# every dtype they accept) compile on first use.
+BUILT_GROUPS = (*groups_for(METHOD_GROUPS), "raytrace-queries", "images")
 MANIFEST = "manifest.json"
 SHIPPED = Path(__file__).resolve().parent / "_precompiled"
 

@@ -89,13 +89,20 @@ GROUPS: dict[str, tuple[str, float]] = {
     "lighting": ("pixelpath.lighting._kernels:warmup", 0.2),
     "clip": ("pixelpath.clip._kernels:warmup", 13.0),
     "color": ("pixelpath.color._kernels:warmup", 12.0),
-    "raytrace-bvh": ("pixelpath.raytrace._bvh_kernels:warmup", 7.2),
-    # The tracer's warm-up packs a one-pixel scene with the renderer's own code (BVH build,
-    # back-face test), so it also compiles those kernels if no other process did: it follows
-    # "raytrace-bvh" (FOLLOWS). The eye rays' shadow search, which "raytrace" loads from the
-    # cache, is a group of its own (FEEDS).
-    "raytrace-shadows": ("pixelpath.raytrace._whitted_kernels:warm_shadow_rays", 10.4),
-    "raytrace": ("pixelpath.raytrace._whitted_kernels:warmup", 11.4),
+    # The BVH build, which the tracer calls, and the searches and ray tests of batches of rays
+    # (raytrace.intersect, raytrace.geometry), which it does not: 2.2 and 3.8 s of the 6.0 s
+    # the two took as one group on 2026-11-28, which every cold ray-traced render paid. The
+    # searches take the eye rays' packet search from "raytrace-eye" (FOLLOWS). The tracer's
+    # groups' estimates: what they took in the build step on 2026-11-28 on a 2-core AMD
+    # machine, times 1.3, what the other groups took there against their estimates.
+    "raytrace-bvh": ("pixelpath.raytrace._bvh_kernels:warmup", 2.1),
+    "raytrace-queries": ("pixelpath.raytrace._bvh_kernels:warm_queries", 1.6),
+    # The tracer's row kernel ("raytrace") calls the search of its eye rays ("raytrace-eye",
+    # which another process compiles, FEEDS) and then their shadow search ("raytrace-shadows",
+    # which its own process compiles first, FOLLOWS), and loads both from the cache.
+    "raytrace-eye": ("pixelpath.raytrace._whitted_kernels:warm_eye_rays", 6.8),
+    "raytrace-shadows": ("pixelpath.raytrace._whitted_kernels:warm_shadow_rays", 6.1),
+    "raytrace": ("pixelpath.raytrace._whitted_kernels:warmup", 6.5),
     "octree": ("pixelpath.hsr._kernels.octree:warmup", 6.4),
     "lines": ("pixelpath.raster._line_kernels:warmup", 1.6),
     # 8-bit encoding of float32 pictures (to_uint8); built with the render groups (BUILT_GROUPS).
@@ -111,7 +118,7 @@ METHOD_GROUPS: dict[str, tuple[str, ...]] = {
     "painter": ("front", "rows", "shade", "scan", "painter"),
     "bsp": ("front", "rows", "shade", "scan", "bsp"),
     "octree": ("front", "rows", "shade", "octree"),
-    "raytrace": ("lighting", "raytrace-bvh", "raytrace-shadows", "raytrace"),
+    "raytrace": ("lighting", "raytrace-bvh", "raytrace-eye", "raytrace-shadows", "raytrace"),
     "wireframe": ("lines",),
     "hidden-line": ("lines",),
 }
@@ -127,13 +134,15 @@ SHADING_GROUPS: dict[str, tuple[str, ...]] = {
 # Groups that call another group's kernels, and are only needed with it: when both are cold
 # they compile in one process, the caller after the callee, whose kernels it then reuses
 # instead of compiling them again (the shading passes all shade rows of pixels with the same
-# kernels; the tracer builds and searches the BVH with its kernels).
+# kernels; the tracer's row kernel loads its shadow search, compiled before it, and the
+# searches of batches of rays the eye rays' packet search).
 FOLLOWS: dict[str, str] = {
     "back": "rows",
     "back-lookups": "rows",
     "shade": "rows",
     "shade-lookups": "rows",
-    "raytrace": "raytrace-bvh",
+    "raytrace": "raytrace-shadows",
+    "raytrace-queries": "raytrace-eye",
 }
 
 # Each pass's group for plain scenes, and its version with the alpha test and the colour
@@ -150,16 +159,17 @@ LOOKUPS: dict[str, str] = {
 # cache: each goes first in its process, and the other group compiles the rest of its
 # kernels first, so that two processes share the work of one kernel that calls both parts.
 # The z-buffer's fused pass ("back", 13 s alone) calls its depth test (4 s) and its row
-# shading (7 s); the tracer's row kernel ("raytrace", 20 s after "raytrace-bvh") its eye
-# rays' search (5 s) and then their shadow rays' (7 s). Split so, a cold z-buffer render took
-# 12 s instead of 15, a cold ray-traced one 21-24 s instead of 31-34 (docs/performance.md).
-# Should the other process be late, the kernels are compiled twice, as they were unsplit.
-# The passes with lookups take them from "colours" and "depth-test-lookups" so.
+# shading (7 s); the tracer's row kernel ("raytrace") its eye rays' search (4.3 s), reached
+# at once, and then their shadow search (5.7 s), which its process compiles before it
+# (FOLLOWS) while the other compiles the eye rays'. Split so, a cold z-buffer render took 12 s
+# instead of 15 (docs/performance.md). Should the other process be late, the kernels are
+# compiled twice, as they were unsplit. The passes with lookups take them from "colours" and
+# "depth-test-lookups" so.
 FEEDS: dict[str, tuple[str, ...]] = {
     "depth-test": ("back",),
     "depth-test-lookups": ("back-lookups",),
     "colours": ("back-lookups", "shade-lookups"),
-    "raytrace-shadows": ("raytrace",),
+    "raytrace-eye": ("raytrace",),
 }
 
 # Kernel modules without a warm-up of their own, after the module whose warm-ups compile their

@@ -8,8 +8,9 @@ a leaf holds ``count > 0`` triangles from position ``first`` of the leaf order; 
 (count 0) has children ``first`` and ``first + 1``.
 
 The searches of the tree are :mod:`pixelpath.raytrace._traversal_kernels`'. :func:`warmup`
-compiles the build, the searches and the ray tests of :mod:`pixelpath.raytrace._hit_kernels`
-(the kernel group ``raytrace-bvh``).
+compiles the build (the kernel group ``raytrace-bvh``), :func:`warm_queries` the searches of
+batches of rays and the ray tests of :mod:`pixelpath.raytrace._hit_kernels`
+(``raytrace-queries``).
 """
 
 from __future__ import annotations
@@ -291,24 +292,37 @@ def triangle_boxes(tris, boxes):
 
 
 def warmup() -> None:
-    """Compile the BVH build, both traversals and the public batch kernels on one triangle."""
+    """Compile the BVH build on one triangle (the kernel group ``raytrace-bvh``).
+
+    The tracer calls only these of the module's kernels; the searches and ray tests that
+    :mod:`pixelpath.raytrace.bvh` and :mod:`pixelpath.raytrace.geometry` call on batches of
+    rays are :func:`warm_queries`' (``raytrace-queries``).
+    """
     tris = np.array([[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0]])
     boxes = np.empty((1, 6))
     triangle_boxes(tris, boxes)
-    order = np.empty(1, dtype=np.intp)
-    bounds = np.empty((2, 6))
-    links = np.empty((2, 2), dtype=np.intp)
-    _, depth = build_bvh(boxes, order, bounds, links)
+    build_bvh(boxes, np.empty(1, dtype=np.intp), np.empty((2, 6)), np.empty((2, 2), dtype=np.intp))
+
+
+def warm_queries() -> None:
+    """Compile the batch searches and ray tests on one triangle, a tree of one leaf.
+
+    The tree is written out by hand (the root a leaf of the triangle), so that nothing of
+    :func:`warmup`'s group compiles here.
+    """
+    tris = np.array([[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0]])
+    bounds = np.array([[0.0, 0.0, 0.0, 1.0, 1.0, 0.0]])
+    links = np.array([[0, 1]], dtype=np.intp)
+    levels = 2  # the tree's depth, 1, and one more, as the searches' stacks are sized
     source = np.zeros(1, dtype=np.intp)
     rays = np.array([[0.2, 0.2, 1.0]])
     down = np.array([[0.0, 0.0, -1.0]])
-    levels = depth + 1
     intersect_many(bounds, links, tris, source, np.zeros(0, dtype=np.bool_), False, source, rays,
                    down, np.intp(0), np.intp(1), np.empty((LANES, 9)),
                    np.empty(LANES, dtype=np.intp), np.empty(levels, dtype=np.intp),
                    np.empty(levels), np.empty((levels, LANES)), np.empty(1),
                    np.empty(1, dtype=np.intp))
-    stack = np.empty(depth + 1, dtype=np.intp)
+    stack = np.empty(levels, dtype=np.intp)
     any_triangle(bounds, links, tris, np.zeros(1), 0.2, 0.2, 1.0, 0.0, 0.0, -1.0, 0.0, 2.0, stack)
     t = np.empty(1)
     ray_sphere_many(rays, down, np.zeros((1, 3)), np.ones(1), t)

@@ -485,26 +485,38 @@ def trace_pixel(x: int, y: int, scene, settings, work) -> np.ndarray:
 
 
 def warmup() -> None:
-    """Compile the tracer on a one-pixel scene holding a sphere, a plane and a triangle.
+    """Compile the tracer on a one-pixel scene holding a sphere and a plane.
 
-    Its eye rays' shadow search comes from the disk cache when the group
-    ``raytrace-shadows`` compiled it first in another process (``pixelpath._warm.FEEDS``):
-    the row kernel reaches it after the eye rays' own search.
-    """
-    from pixelpath.raytrace.tracer import warmup_scene
-
-    scene, settings, bvh_depth = warmup_scene()
-    trace_pixel(0, 0, scene, settings, new_work(scene, settings, bvh_depth, 0, 1))
-
-
-def warm_shadow_rays() -> None:
-    """Compile the shadow search of a row's eye-ray hits (``primary_shadows``) alone.
-
-    With the types :func:`render_rows` passes it, on a scene packed without triangles, so
-    that nothing of the BVH's group compiles here.
+    The scene has no triangles, so that packing it builds no tree: the arrays have the
+    types a scene of meshes gives them, and no kernel of the BVH's group is compiled here.
+    The row kernel finds its eye rays' search and their shadow search in the disk cache
+    when the groups ``raytrace-eye`` and ``raytrace-shadows`` compiled them first
+    (``pixelpath._warm.FEEDS``, ``FOLLOWS``).
     """
     from pixelpath.raytrace.tracer import warmup_scene
 
     scene, settings, bvh_depth = warmup_scene(triangles=False)
-    compile_for(primary_shadows, np.intp(0), np.intp(0), scene, settings,
+    trace_pixel(0, 0, scene, settings, new_work(scene, settings, bvh_depth, 0, 1))
+
+
+def _compile_row_step(kernel, *leading) -> None:
+    """Compile ``kernel`` alone for the types :func:`render_rows` passes it.
+
+    ``kernel`` takes ``leading`` (integers), then the scene, its settings and the scratch
+    space, here those of a one-pixel scene packed without triangles.
+    """
+    from pixelpath.raytrace.tracer import warmup_scene
+
+    scene, settings, bvh_depth = warmup_scene(triangles=False)
+    compile_for(kernel, *(np.intp(value) for value in leading), scene, settings,
                 new_work(scene, settings, bvh_depth, 0, 1))
+
+
+def warm_eye_rays() -> None:
+    """Compile the search of a row's eye rays (``primary_hits``) alone."""
+    _compile_row_step(primary_hits, 0, 0, 1)
+
+
+def warm_shadow_rays() -> None:
+    """Compile the shadow search of a row's eye-ray hits (``primary_shadows``) alone."""
+    _compile_row_step(primary_shadows, 0, 0)
