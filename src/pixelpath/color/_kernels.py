@@ -47,17 +47,17 @@ CMYK_TO_RGB = 6
 CHUNK = 8192
 
 
-@njit(inline="always")
+@njit(refcount=False, forceinline=True, from_python=False)
 def larger(a, b):
     return a if a > b else b
 
 
-@njit(inline="always")
+@njit(refcount=False, forceinline=True, from_python=False)
 def smaller(a, b):
     return a if a < b else b
 
 
-@njit(inline="always")
+@njit(refcount=False, forceinline=True, from_python=False)
 def numbers(scale):
     """0, 1, 2, 4, 6, 1/6, 1/60 and 60 in the precision of ``scale`` (float32 or float64).
 
@@ -72,7 +72,7 @@ def numbers(scale):
     return one - one, one, two, four, six, one / six, one / sixty, sixty
 
 
-@njit(inline="always")
+@njit(refcount=False, forceinline=True, from_python=False)
 def not_finite(residue):
     """Tell whether ``residue``, a sum of terms x − x, is NaN (some x is NaN or ±inf).
 
@@ -82,7 +82,7 @@ def not_finite(residue):
     return residue != residue
 
 
-@njit(inline="always")
+@njit(refcount=False, forceinline=True, from_python=False)
 def load3(src, i, scale):
     """Return pixel ``i``'s three components, scaled, and whether one of them is not finite."""
     a = src[3 * i] * scale
@@ -139,7 +139,7 @@ def rgb_to_hsx_span(src, dst, scale, lightness):
     return bad
 
 
-@njit(inline="always")
+@njit(refcount=False, forceinline=True, from_python=False)
 def clamp(x, zero, one):
     return smaller(larger(x, zero), one)
 
