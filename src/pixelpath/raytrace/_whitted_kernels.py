@@ -487,15 +487,14 @@ def trace_pixel(x: int, y: int, scene, settings, work) -> np.ndarray:
 def warmup() -> None:
     """Compile the tracer on a one-pixel scene holding a sphere and a plane.
 
-    The scene has no triangles, so that packing it builds no tree: the arrays have the
-    types a scene of meshes gives them, and no kernel of the BVH's group is compiled here.
-    The row kernel finds its eye rays' search and their shadow search in the disk cache
-    when the groups ``raytrace-eye`` and ``raytrace-shadows`` compiled them first
-    (``pixelpath._warm.FEEDS``, ``FOLLOWS``).
+    The scene has no triangles (:func:`~pixelpath.raytrace.tracer.warmup_scene`), so no
+    kernel of the BVH's group is compiled here. The row kernel finds its eye rays' search and
+    their shadow search in the disk cache when the groups ``raytrace-eye`` and
+    ``raytrace-shadows`` compiled them first (``pixelpath._warm.FEEDS``, ``FOLLOWS``).
     """
     from pixelpath.raytrace.tracer import warmup_scene
 
-    scene, settings, bvh_depth = warmup_scene(triangles=False)
+    scene, settings, bvh_depth = warmup_scene()
     trace_pixel(0, 0, scene, settings, new_work(scene, settings, bvh_depth, 0, 1))
 
 
@@ -503,11 +502,11 @@ def _compile_row_step(kernel, *leading) -> None:
     """Compile ``kernel`` alone for the types :func:`render_rows` passes it.
 
     ``kernel`` takes ``leading`` (integers), then the scene, its settings and the scratch
-    space, here those of a one-pixel scene packed without triangles.
+    space, here those of the tracer's one-pixel warm-up scene.
     """
     from pixelpath.raytrace.tracer import warmup_scene
 
-    scene, settings, bvh_depth = warmup_scene(triangles=False)
+    scene, settings, bvh_depth = warmup_scene()
     compile_for(kernel, *(np.intp(value) for value in leading), scene, settings,
                 new_work(scene, settings, bvh_depth, 0, 1))
 

@@ -581,18 +581,16 @@ def _thread_work(world, settings, bvh_depth: int, width: int) -> tuple:
     return _SCRATCH.work, _SCRATCH.out
 
 
-def warmup_scene(triangles: bool = True):
-    """Return a one-pixel scene with every kind of object and light, packed for the kernels.
+def warmup_scene():
+    """Return a one-pixel scene of a glass sphere, a plane and two lights, packed for the kernels.
 
-    Without ``triangles`` (no box) the packing builds no tree: the arrays have the same types,
-    and no kernel of the BVH's group is compiled to make them.
+    It has no triangles, so the packing builds no tree: the arrays have the types a scene of
+    meshes gives them, and no kernel of the BVH's group is compiled to make them.
     """
     from pixelpath.scene import DirectionalLight, Material, PointLight
 
     glass = Material(reflectivity=0.1, transparency=0.8, ior=1.5)
     objects = [Sphere((0, 0, 0), 1, glass), Plane((0, -1, 0), (0, 1, 0))]
-    if triangles:
-        objects.append(Box((2, 0, 0), (3, 1, 1)))
     scene = Scene(
         Camera(eye=(0, 1, 5), target=(0, 0, 0), width=1, height=1),
         objects,
