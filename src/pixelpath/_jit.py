@@ -44,10 +44,12 @@ The rules live here, once:
   compiles for the first time inside such a helper, which LLVM then inlines too.
   ``inline="always"`` stays for helpers with one call site, for small ones whose conversion
   saved no compile time (the ray tracer's ``_unit`` and ``_offset``), and where a benchmark
-  showed LLVM's inlined code slower (the BVH build's helpers). The clipping and colour
-  kernels' helpers are compiled so too (their groups compiled in 8.1 and 6.7 s instead of
-  9.7 and 8.1, the front end's in 4.3 instead of 4.8, at the same speed); the other
-  kernels' helpers stay inlined by Numba: converting them saved little or no compile time
+  showed LLVM's inlined code slower (the BVH build's helpers). The clipping, colour and
+  lighting kernels' helpers and the raster shading pass's are compiled so too (the clipping
+  and colour groups compiled in 8.1 and 6.7 s instead of 9.7 and 8.1, the front end's in
+  4.3 instead of 4.8, the shading pass's in 5.2-5.4 instead of 5.7, at the same speed); the
+  other kernels' helpers (set-up, scan, texture lookups, the hidden-surface methods) stay
+  inlined by Numba: converting them saved little or no compile time
   (``docs/performance.md``).
 * A kernel that only loops over bands (or rows, or areas) and calls one big kernel for each
   is not a kernel of its own: Numba links each callee's compiled code into its caller, and
