@@ -4,9 +4,10 @@
 nothing and writes its answer into ``out``, so it can sit inside another kernel's per-pixel
 loop. ``shade_planar`` computes the same over a batch of points held planar (x, y, z in rows),
 light by light in loops that LLVM vectorizes; the rasterizer's per-pixel Phong shading uses it.
-Both are built from the same inline pieces (``unit_to_eye``, ``light_direction``,
-``light_cosines``, ``power``/``power_planar``), so the formula is written once and the two
-agree bit for bit. Packed layouts (built by :mod:`pixelpath.lighting.packing`):
+Both are built from the same pieces (``unit_to_eye``, ``light_direction``, ``light_cosines``,
+``power``/``power_planar``), each compiled once and inlined into its callers by LLVM, so the
+formula is written once and the two agree bit for bit. Packed layouts (built by
+:mod:`pixelpath.lighting.packing`):
 
 * ``material`` (8,) float64: ``[r, g, b, ka, kd, ks, shininess, 0]`` (``Material.packed()``);
 * ``lights`` (L, 7) float64: ``[kind, x, y, z, r*I, g*I, b*I]`` with kind 0 = point light at
