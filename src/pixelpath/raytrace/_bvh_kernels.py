@@ -291,6 +291,10 @@ def triangle_boxes(tris, boxes):
             boxes[i, 3 + axis] = max(a, max(b, c))
 
 
+# The warm-ups' scene: one triangle, its corners as a (1, 9) row.
+_ONE_TRIANGLE = np.array([[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0]])
+
+
 def warmup() -> None:
     """Compile the BVH build on one triangle (the kernel group ``raytrace-bvh``).
 
@@ -298,9 +302,8 @@ def warmup() -> None:
     :mod:`pixelpath.raytrace.bvh` and :mod:`pixelpath.raytrace.geometry` call on batches of
     rays are :func:`warm_queries`' (``raytrace-queries``).
     """
-    tris = np.array([[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0]])
     boxes = np.empty((1, 6))
-    triangle_boxes(tris, boxes)
+    triangle_boxes(_ONE_TRIANGLE, boxes)
     build_bvh(boxes, np.empty(1, dtype=np.intp), np.empty((2, 6)), np.empty((2, 2), dtype=np.intp))
 
 
@@ -310,8 +313,8 @@ def warm_queries() -> None:
     The tree is written out by hand (the root a leaf of the triangle), so that nothing of
     :func:`warmup`'s group compiles here.
     """
-    tris = np.array([[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0]])
-    bounds = np.array([[0.0, 0.0, 0.0, 1.0, 1.0, 0.0]])
+    tris = _ONE_TRIANGLE
+    bounds = np.array([[0.0, 0.0, 0.0, 1.0, 1.0, 0.0]])  # its box: min xyz, max xyz
     links = np.array([[0, 1]], dtype=np.intp)
     levels = 2  # the tree's depth, 1, and one more, as the searches' stacks are sized
     source = np.zeros(1, dtype=np.intp)

@@ -487,9 +487,9 @@ def surface_tables(objects: Any):
     object_rows = []
     alpha_rows = []
 
-    def sampler(texture: Texture | None, material: Any, uv: Any) -> int:
+    def sampler(texture: Texture | None, material: Any) -> int:
         """Return the row of ``texture`` read with ``material``'s filter and wrap (-1: none)."""
-        if texture is None or uv is None:
+        if texture is None:
             return -1
         if id(texture) not in level_ranges:
             texels, levels = texture._packed
@@ -509,13 +509,10 @@ def surface_tables(objects: Any):
 
     for obj in objects:
         material = obj.material
-        uv = getattr(obj, "uv", None)
-        index = sampler(material.texture, material, uv)
-        glow = sampler(material.emission_texture if material.emits else None, material, uv)
-        colors = getattr(obj, "colors", None)
-        object_rows.append([index, colors is not None, glow])
-        alpha_rows.append([material.alpha, _cutoff(
-            material, material.texture if index >= 0 else None, colors)])
+        texture, glow, colors = _shown(obj)
+        object_rows.append([sampler(texture, material), colors is not None,
+                            sampler(glow, material)])
+        alpha_rows.append([material.alpha, _cutoff(material, texture, colors)])
     if len(pixels) == 1:
         texels = pixels[0]  # the texture's own packed levels: no copy
     else:
@@ -553,13 +550,23 @@ def needs_lookups(objects: Any) -> bool:
     return any(_looked_up(obj) for obj in objects)
 
 
-def _looked_up(obj: Any) -> bool:
+def _shown(obj: Any) -> tuple[Texture | None, Texture | None, np.ndarray | None]:
+    """Return the texture, emission texture and vertex colours the kernels read for ``obj``.
+
+    A texture shows only with texture coordinates (``uv``), an emission texture only where
+    the material emits: None where nothing is read.
+    """
     material, uv = obj.material, getattr(obj, "uv", None)
     colors = getattr(obj, "colors", None)
-    texture = material.texture if uv is not None else None
-    glows = uv is not None and material.emits and material.emission_texture is not None
-    return (colors is not None or texture is not None or glows
-            or _cutoff(material, texture, colors) > 0.0)
+    if uv is None:
+        return None, None, colors
+    return material.texture, material.emission_texture if material.emits else None, colors
+
+
+def _looked_up(obj: Any) -> bool:
+    texture, glow, colors = _shown(obj)
+    return (texture is not None or glow is not None or colors is not None
+            or _cutoff(obj.material, texture, colors) > 0.0)
 
 
 def _cutoff(material: Any, texture: Texture | None, colors: np.ndarray | None) -> float:
