@@ -63,7 +63,9 @@ def test_unit_rows_have_unit_length_and_keep_unit_rows_as_they_are(points):
     points = points[np.linalg.norm(points, axis=1) > 1e-100]
     unit = unit_rows(points)
     np.testing.assert_allclose(np.linalg.norm(unit, axis=1), 1.0, rtol=1e-12)
-    np.testing.assert_array_equal(unit_rows(unit), unit)
+    again = unit_rows(unit)
+    np.testing.assert_array_equal(again, unit)
+    assert not np.shares_memory(again, unit)  # a copy, which callers may freeze or write
 
 
 @given(st.lists(rows, min_size=1, max_size=40))

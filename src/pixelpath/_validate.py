@@ -127,7 +127,9 @@ def unit_rows(vectors: np.ndarray, lengths: np.ndarray | None = None) -> np.ndar
         return np.array([x / length, y / length, z / length])
     lengths = (row_lengths(vectors) if lengths is None else lengths)[..., 0]
     keep = (np.abs(lengths - 1.0) <= _UNIT_SLACK) | (lengths == 0.0)
-    divisor = np.where(keep, 1.0, lengths)  # x / 1.0 is x, bit for bit
+    if keep.all():  # the usual case for normals read from a file: x / 1.0 is x, bit for bit
+        return vectors.copy()
+    divisor = np.where(keep, 1.0, lengths)
     # column by column: dividing (n, 3) by (n, 1) runs NumPy's inner loop three elements long
     unit = np.empty(vectors.shape)
     for axis in range(3):
@@ -179,8 +181,8 @@ def row_lengths(vectors: np.ndarray) -> np.ndarray:
     if vectors.ndim == 1:  # one vector: the same arithmetic in Python floats
         x, y, z = vectors.tolist()
         return np.array([math.sqrt((x * x + y * y) + z * z)])
-    x, y, z = vectors[..., 0], vectors[..., 1], vectors[..., 2]
-    return np.sqrt((x * x + y * y) + z * z)[..., None]
+    squares = vectors * vectors  # one pass over the array rather than three strided ones
+    return np.sqrt((squares[..., 0] + squares[..., 1]) + squares[..., 2])[..., None]
 
 
 def vector_length(vector: np.ndarray) -> float:
