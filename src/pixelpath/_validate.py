@@ -123,12 +123,12 @@ def unit_rows(vectors: np.ndarray, lengths: np.ndarray | None = None) -> np.ndar
         x, y, z = vectors.tolist()
         length = math.sqrt((x * x + y * y) + z * z)
         if abs(length - 1.0) <= _UNIT_SLACK or length == 0.0:
-            return vectors.copy()
+            return vectors.astype(np.float64)  # a float64 copy, as the division below makes
         return np.array([x / length, y / length, z / length])
     lengths = (row_lengths(vectors) if lengths is None else lengths)[..., 0]
     keep = (np.abs(lengths - 1.0) <= _UNIT_SLACK) | (lengths == 0.0)
     if keep.all():  # the usual case for normals read from a file: x / 1.0 is x, bit for bit
-        return vectors.copy()
+        return vectors.astype(np.float64)  # a float64 copy, as the division below makes
     divisor = np.where(keep, 1.0, lengths)
     # column by column: dividing (n, 3) by (n, 1) runs NumPy's inner loop three elements long
     unit = np.empty(vectors.shape)
