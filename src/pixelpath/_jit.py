@@ -37,10 +37,10 @@ The rules live here, once:
 * Where LLVM would leave such a helper a call, and the call costs speed (the triangle and
   sphere tests in the traversal loops, the texture lookups in the shading pass), the helper
   is still compiled once, as a function of its own, and marked for LLVM to inline into every
-  caller (``njit(refcount=False, forceinline=True)``, Numba's ``forceinline``: LLVM's
-  ``alwaysinline``). Copied by Numba instead (``inline="always"``), it was typed again at
-  each call site: the triangle test six times in the ray tracer's kernels, the bilinear
-  lookup twice in every shading pass. Numba hands ``forceinline`` on to the callees it
+  caller (:func:`inlined`: ``njit(refcount=False, forceinline=True)``, Numba's
+  ``forceinline``: LLVM's ``alwaysinline``). Copied by Numba instead (``inline="always"``),
+  it was typed again at each call site: the triangle test six times in the ray tracer's
+  kernels, the bilinear lookup twice in every shading pass. Numba hands ``forceinline`` on to the callees it
   compiles for the first time inside such a helper, which LLVM then inlines too.
   ``inline="always"`` stays for helpers with one call site, for small ones whose conversion
   saved no compile time (the ray tracer's ``_unit`` and ``_offset``), and where a benchmark
@@ -73,7 +73,7 @@ from numba.core.registry import CPUDispatcher
 from pixelpath._cache import cache_dir, enable_cache
 from pixelpath._precompiled import cache_root
 
-__all__ = ["cache_dir", "compile_for", "njit"]
+__all__ = ["cache_dir", "compile_for", "inlined", "njit"]
 
 
 class Kernel(CPUDispatcher):
@@ -153,6 +153,29 @@ def njit(function: Callable | None = None, /, **options) -> Callable:
         return dispatcher
 
     return compile_kernel if function is None else compile_kernel(function)
+
+
+def inlined(function: Callable | None = None, /, **options) -> Callable:
+    """Compile a helper of kernels once, for LLVM to inline into every kernel that calls it.
+
+    :func:`njit` with ``refcount=False`` (the helper allocates nothing), ``forceinline=True``
+    and ``from_python=False`` (only kernels call it), the module's rule for small helpers in
+    hot loops; ``options`` override them (``from_python=True`` for one Python calls too).
+
+    Examples
+    --------
+    >>> from pixelpath._jit import inlined, njit
+    >>> @inlined(cache=False)
+    ... def square(x):
+    ...     return x * x
+    >>> @njit(cache=False)
+    ... def fourth_power(x):
+    ...     return square(square(x))
+    >>> fourth_power(3)
+    81
+    """
+    defaults = {"refcount": False, "forceinline": True, "from_python": False}
+    return njit(function, **{**defaults, **options})
 
 
 def compile_for(kernel: Callable, *arguments) -> None:

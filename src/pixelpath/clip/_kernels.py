@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from pixelpath._jit import njit
+from pixelpath._jit import inlined, njit
 
 LEFT, RIGHT, BOTTOM, TOP, EDGE, PLANE = 0, 1, 2, 3, 4, 5
 
@@ -43,7 +43,7 @@ WHOLLY_OUTSIDE, WHOLLY_INSIDE, STRADDLES = -1, 1, 0
 ON_EDGE_RTOL = 1e-9
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def inside(row, x, y):
     kind = row[0]
     if kind == LEFT:
@@ -57,14 +57,14 @@ def inside(row, x, y):
     return (row[3] - row[1]) * (y - row[2]) - (row[4] - row[2]) * (x - row[1]) >= 0.0
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def _between(value, a, b):
     # Rounding can push an interpolated coordinate an ulp past the segment's end; keeping it
     # between the ends keeps earlier boundaries satisfied, so clipping again changes nothing.
     return min(max(value, min(a, b)), max(a, b))
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def intersection(row, x1, y1, x2, y2):
     """Where the edge S=(x1, y1) -> E=(x2, y2) crosses the boundary (notes, section 6)."""
     kind = row[0]
@@ -82,20 +82,20 @@ def intersection(row, x1, y1, x2, y2):
     return _between(x1 + t * (x2 - x1), x1, x2), _between(y1 + t * (y2 - y1), y1, y2)
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def plane_value(row, v):
     """Signed value of a ``PLANE`` boundary at vertex row ``v``; inside when >= 0."""
     return row[1] * v[0] + row[2] * v[1] + row[3] * v[2] + row[4] * v[3]
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def vertex_inside(row, v):
     if row[0] == PLANE:
         return plane_value(row, v) >= 0.0
     return inside(row, v[0], v[1])
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def _same_rows(a, i, b, j):
     for c in range(a.shape[1]):
         if a[i, c] != b[j, c]:
@@ -103,7 +103,7 @@ def _same_rows(a, i, b, j):
     return True
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def _crossing(row, s, e, out):
     """Write where edge S -> E crosses the boundary into the row ``out``."""
     if row[0] == PLANE:
@@ -212,7 +212,7 @@ def _run_stages(xy, table, a, b):
     return n, a, b
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def _box_side(row, box):
     """Where a bounding box lies for a rectangle boundary (``STRADDLES`` for slanted edges)."""
     if row[0] == EDGE:
@@ -223,7 +223,7 @@ def _box_side(row, box):
     return STRADDLES if lo_in or hi_in else WHOLLY_OUTSIDE
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def _shortcut(xy, table):
     """``WHOLLY_OUTSIDE`` (nothing left), ``WHOLLY_INSIDE`` (unchanged) or ``STRADDLES``."""
     box = _bounds(xy)
@@ -236,7 +236,7 @@ def _shortcut(xy, table):
     return WHOLLY_INSIDE if unchanged else STRADDLES
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def _bounds(xy):
     """Bounding box of ``xy`` and whether a vertex repeats its predecessor (cyclically)."""
     n = xy.shape[0]
@@ -287,7 +287,7 @@ def _scan_bridges(poly, m, table, out):
     return count
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def _boundary_coordinate(row, x, y):
     """Return (position along the boundary, whether (x, y) lies on its line)."""
     kind = row[0]
@@ -303,7 +303,7 @@ def _boundary_coordinate(row, x, y):
     return t, abs(side) <= ON_EDGE_RTOL * scale * np.sqrt(length2)
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def _edge_on_boundary(poly, m, i, row):
     j = (i + 1) % m
     t0, on0 = _boundary_coordinate(row, poly[i, 0], poly[i, 1])
@@ -311,7 +311,7 @@ def _edge_on_boundary(poly, m, i, row):
     return t0, t1, on0 and on1 and t0 != t1
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def _boundary_point(row, t, point):
     kind = row[0]
     if kind == LEFT or kind == RIGHT:

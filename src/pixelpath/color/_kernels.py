@@ -33,7 +33,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from pixelpath._jit import njit
+from pixelpath._jit import inlined, njit
 
 AFFINE = 0
 RGB_TO_HSV = 1
@@ -47,17 +47,17 @@ CMYK_TO_RGB = 6
 CHUNK = 8192
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def larger(a, b):
     return a if a > b else b
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def smaller(a, b):
     return a if a < b else b
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def numbers(scale):
     """0, 1, 2, 4, 6, 1/6, 1/60 and 60 in the precision of ``scale`` (float32 or float64).
 
@@ -72,7 +72,7 @@ def numbers(scale):
     return one - one, one, two, four, six, one / six, one / sixty, sixty
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def not_finite(residue):
     """Tell whether ``residue``, a sum of terms x − x, is NaN (some x is NaN or ±inf).
 
@@ -82,7 +82,7 @@ def not_finite(residue):
     return residue != residue
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def load3(src, i, scale):
     """Return pixel ``i``'s three components, scaled, and whether one of them is not finite."""
     a = src[3 * i] * scale
@@ -139,7 +139,7 @@ def rgb_to_hsx_span(src, dst, scale, lightness):
     return bad
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def clamp(x, zero, one):
     return smaller(larger(x, zero), one)
 

@@ -21,13 +21,13 @@ import math
 
 import numpy as np
 
-from pixelpath._jit import njit
+from pixelpath._jit import inlined, njit
 
 POINT_LIGHT = 0.0
 DIRECTIONAL_LIGHT = 1.0
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def unit_to_eye(px, py, pz, ex, ey, ez, ew):
     """Return V, the unit vector from point p to the eye (zero when the eye is on p).
 
@@ -45,7 +45,7 @@ def unit_to_eye(px, py, pz, ex, ey, ez, ew):
     return vx * inv, vy * inv, vz * inv
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def light_direction(lights, k, px, py, pz):
     """Return L, the unit vector from point p towards light k (zero for a point light on p)."""
     if lights[k, 0] == POINT_LIGHT:
@@ -58,7 +58,7 @@ def light_direction(lights, k, px, py, pz):
     return -lights[k, 1], -lights[k, 2], -lights[k, 3]
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def light_cosines(nx, ny, nz, lx, ly, lz, vx, vy, vz, blinn):
     """Return (max(0, N.L), the model's cosine R.V or N.H), the cosine 0 where N.L <= 0.
 
@@ -166,7 +166,7 @@ def shade_planar(count, points, normals, albedo, eye, material, lights, ambient,
             blue[i] += specular_b * spec[i]
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def power_planar(base, count, exponent, out):
     """Write :func:`power` of the first ``count`` bases into out, 0 where a base is <= 0.
 
@@ -191,7 +191,7 @@ def power_planar(base, count, exponent, out):
                 base[i] *= base[i]
 
 
-@njit(refcount=False, forceinline=True)
+@inlined(from_python=True)
 def power(base, exponent):
     """Return ``base ** exponent``, by repeated squaring when the exponent is a whole number.
 

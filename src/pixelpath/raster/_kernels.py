@@ -49,7 +49,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from pixelpath._jit import compile_for, njit
+from pixelpath._jit import compile_for, inlined, njit
 from pixelpath.lighting._kernels import shade_planar, shade_point
 from pixelpath.raster._scan_kernels import (
     BAND_ROWS,
@@ -218,13 +218,13 @@ def shade_points(first, stop, points, normals, flip, owner, materials, lights, a
         )
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def _mix(values, a, b, c, w0, w1, w2, column):
     """Weighted sum of one column of per-vertex values over a triangle's vertices a, b, c."""
     return w0 * values[a, column] + w1 * values[b, column] + w2 * values[c, column]
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def _clamp01(value):
     return min(max(value, 0.0), 1.0)
 
@@ -389,7 +389,7 @@ def _shade_row(j, x0, y0, ids, keys, surfaces, out, batch):
         _shade_batch(count, batch, batch_object, s, rgb, normal)
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def _emitted(surfaces, row_glow, obj, i, channel):
     """Light object ``obj`` emits at pixel i of a row: its emission, or as its texture scales it."""
     if surfaces.tables.objects[obj, GLOW] >= 0:
@@ -397,7 +397,7 @@ def _emitted(surfaces, row_glow, obj, i, channel):
     return surfaces.emission[obj, channel]
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def _store_normal(normal, i, normals, a, b, c, b0, b1, b2, flipped):
     """Write the unit interpolated vertex normal (turned to the viewer) at pixel i of a row."""
     nx = _mix(normals, a, b, c, b0, b1, b2, 0)
@@ -411,7 +411,7 @@ def _store_normal(normal, i, normals, a, b, c, b0, b1, b2, flipped):
 
 
 # Compiled once and inlined by LLVM into its three callers (see pixelpath._jit).
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def _line_weights(setup, t, y):
     """Return the perspective weights' numerators ``t_k = s_k / w_k`` of triangle t on row y.
 
@@ -428,7 +428,7 @@ def _line_weights(setup, t, y):
     )
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def _weights_at(numerators, x):
     """Perspective-correct weights (b0, b1, b2) at pixel centre x of a :func:`_line_weights`."""
     t0 = numerators[0] * x + numerators[3]
@@ -439,7 +439,7 @@ def _weights_at(numerators, x):
 
 
 # Compiled once and inlined by LLVM into its callers (see pixelpath._jit).
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def texture_line(setup, t, y, uv, a, b, c):
     """Texture coordinates of set-up triangle t (vertices a, b, c) along scan line y.
 
@@ -463,7 +463,7 @@ def texture_line(setup, t, y, uv, a, b, c):
     )
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def texture_at(line, x):
     """Return (u, v, du/dx, dv/dx, du/dy, dv/dy) at pixel centre x of a :func:`texture_line`.
 
@@ -592,7 +592,7 @@ def _row_glow(j, x0, ids, info, setup, triangles, uv, tables, emission, batch):
     _apply_lookups(width, count, tables, batch, batch.row_glow)
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def _list_lookup(lookups, columns, textures, q, tables, texture, line, x, i):
     """List, as lookup q of a row, ``texture`` read at pixel i (centre x) of a triangle's line.
 
@@ -651,7 +651,7 @@ def _apply_lookups(first, stop, tables, batch, out):
         _tint(out, batch.lookup_columns[q], color)
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def _tint(out, i, color):
     """Multiply pixel i's surface colour in ``out`` by a texture lookup's (r, g, b, a)."""
     out[i, 0] *= color[0]
@@ -688,7 +688,7 @@ def texture_lookups(x0, y0, triangle_id, surfaces, texture, level, blend):
             level[row, i], blend[row, i] = mip_level_squared(s.tables, k, squared)
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def _scanline_surface(setup, t, y, triangles, positions, normals, sign):
     """Surface point and normal of set-up triangle t along scan line y, as functions of x.
 

@@ -32,7 +32,7 @@ import math
 
 import numpy as np
 
-from pixelpath._jit import njit
+from pixelpath._jit import inlined, njit
 
 EPS = float(np.finfo(np.float64).eps)
 # An origin whose |o − C|² − r² is within this fraction of |o − C|² + r² lies on the sphere.
@@ -42,7 +42,7 @@ BOX_SLACK = 2.0 * (3.0 * EPS / (1.0 - 3.0 * EPS))
 
 
 # Inlined by LLVM into its three callers (see pixelpath._jit), which left it a call otherwise.
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def sphere_roots(ox, oy, oz, dx, dy, dz, cx, cy, cz, radius):
     """Return the roots t0 <= t1 of the ray-sphere quadratic, (inf, inf) when it misses."""
     fx = ox - cx
@@ -134,7 +134,7 @@ def shear_setup(ox, oy, oz, dx, dy, dz):
 
 # Inlined by LLVM into its six callers (see pixelpath._jit): left a call, the traversal loops
 # took 10-14 % longer to cast the same rays.
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def triangle_t(tris, i, kx, ky, kz, okx, oky, okz, sx, sy, sz):
     """Return (t, w1, w2) of the ray with triangle i of tris (T, 9); t = inf on a miss.
 

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import math
 
-from pixelpath._jit import njit
+from pixelpath._jit import inlined, njit
 from pixelpath.raytrace._hit_kernels import plane_t, refract_direction, sphere_roots, sphere_t
 from pixelpath.raytrace._records import PLANE, SPHERE, TRANSPARENCY
 from pixelpath.raytrace._traversal_kernels import MISS
@@ -27,7 +27,7 @@ from pixelpath.scene._texture_kernels import GLOW, sample_at, surface_color
 # ray-traced frame took 7-14 % longer.
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def hit_geometry(spheres, sphere_object, planes, plane_object, tris, tri_normals, tri_flat,
                  tri_object, flat, ox, oy, oz, dx, dy, dz, t, kind, index, w1, w2):
     """Return what a ray's hit is: (object, point, geometric normal, shading normal, entering).
@@ -54,7 +54,7 @@ def hit_geometry(spheres, sphere_object, planes, plane_object, tris, tri_normals
     return obj, px, py, pz, gx, gy, gz, nx, ny, nz, entering
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def shadow_start(spheres, sphere_object, planes, plane_object, materials, lights, light, px, py,
                  pz, gx, gy, gz, lx, ly, lz, epsilon, has_analytic):
     """Return the shadow ray of a hit towards a light, with what the spheres and planes do to it.
@@ -132,7 +132,7 @@ def _unit(x, y, z):
     return x * inv, y * inv, z * inv
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def sphere_normal(cx, cy, cz, radius, px, py, pz):
     """Return the outward unit normal at point p of the sphere (centre c, radius)."""
     return _unit((px - cx) / radius, (py - cy) / radius, (pz - cz) / radius)

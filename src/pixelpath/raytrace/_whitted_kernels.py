@@ -48,7 +48,7 @@ import math
 
 import numpy as np
 
-from pixelpath._jit import compile_for, njit
+from pixelpath._jit import compile_for, inlined, njit
 from pixelpath.lighting._kernels import light_direction, shade_point
 from pixelpath.raytrace._hit_kernels import enters_box, reflect_direction, slab_nan_allowed
 from pixelpath.raytrace._primary_kernels import _stored_geometry, primary_hits, primary_shadows
@@ -455,7 +455,7 @@ def render_rows(rows, scene, settings, work, out, x0, y0, rgb, image_depth, obje
 
 
 # Compiled once and inlined by LLVM into its three places in render_rows (see pixelpath._jit).
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def _store_pixel(out, i, red, green, blue, depth, obj, nx, ny, nz):
     """Write pixel i's fields into ``out``, the row of traced pixels."""
     out[i, RED] = red

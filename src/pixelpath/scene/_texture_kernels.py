@@ -34,7 +34,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from pixelpath._jit import njit
+from pixelpath._jit import inlined, njit
 
 NEAREST, BILINEAR, TRILINEAR = 0, 1, 2
 REPEAT, CLAMP, MIRROR = 0, 1, 2
@@ -83,7 +83,7 @@ def _texel(tables, index):
 # inlined by LLVM into every caller (forceinline, see pixelpath._jit): left calls, they cost
 # a textured frame speed; copied by Numba, they were typed again in every shading pass and
 # alpha test.
-@njit(refcount=False, forceinline=True)
+@inlined(from_python=True)
 def _neighbours(x, size, wrap):
     """Return the texels (i0, i1) on either side of texel coordinate x, and x's fraction past i0.
 
@@ -109,7 +109,7 @@ def _neighbours(x, size, wrap):
     return wrapped(i, size, wrap), wrapped(i + 1, size, wrap), fraction
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def _bilinear(tables, level, wrap, u, v):
     """Bilinear blend of the four texels around (u, v) on one level."""
     start, width, height = tables.levels[level, 0], tables.levels[level, 1], tables.levels[level, 2]
@@ -117,7 +117,7 @@ def _bilinear(tables, level, wrap, u, v):
     return blend_taps(tables, i00, i10, i01, i11, fx, fy)
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def bilinear_taps(start, width, height, wrap, u, v):
     """Return the four texels a bilinear lookup of (u, v) blends on a level, and the fractions.
 
@@ -132,7 +132,7 @@ def bilinear_taps(start, width, height, wrap, u, v):
     return upper + c0, upper + c1, lower + c0, lower + c1, fx, fy
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def blend_taps(tables, i00, i10, i01, i11, fx, fy):
     """Linear (r, g, b, a) of the bilinear blend of the texels :func:`bilinear_taps` found."""
     a = _texel(tables, i00)
@@ -219,7 +219,7 @@ def sample(tables, texture, u, v, footprint):
     return sample_level(tables, texture, u, v, level, blend)
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def sample_level(tables, texture, u, v, level, blend):
     """:func:`sample` once :func:`mip_level` has chosen the ``level`` and ``blend``."""
     first, wrap = tables.textures[texture, 0], tables.textures[texture, 3]
@@ -247,7 +247,7 @@ def colored(tables, obj):
     return tables.objects[obj, TEXTURE] >= 0 or tables.objects[obj, HAS_COLORS] != 0
 
 
-@njit(refcount=False, forceinline=True, from_python=False)
+@inlined
 def base_color(tables, materials, obj, colors, a, b, c, w0, w1, w2):
     """:func:`surface_color` before the texture: the material's colour × the vertex colours.
 
