@@ -40,8 +40,9 @@ The rules live here, once:
   caller (:func:`inlined`: ``njit(refcount=False, forceinline=True)``, Numba's
   ``forceinline``: LLVM's ``alwaysinline``). Copied by Numba instead (``inline="always"``),
   it was typed again at each call site: the triangle test six times in the ray tracer's
-  kernels, the bilinear lookup twice in every shading pass. Numba hands ``forceinline`` on to the callees it
-  compiles for the first time inside such a helper, which LLVM then inlines too.
+  kernels, the bilinear lookup twice in every shading pass. Numba hands ``forceinline`` on
+  to the callees it compiles for the first time inside such a helper, which LLVM then
+  inlines too.
   ``inline="always"`` stays for helpers with one call site, for small ones whose conversion
   saved no compile time (the ray tracer's ``_unit`` and ``_offset``), and where a benchmark
   showed LLVM's inlined code slower (the BVH build's helpers). The clipping, colour and
