@@ -22,7 +22,35 @@ def test_render_writes_the_image(scene_file, tmp_path, capsys):
     assert image.shape == (16, 24, 3)
     assert image[0, 0].tolist() == pytest.approx([0, 0, 128 / 255])  # background
     assert image[8, 12].sum() > 0
-    assert "wrote" in capsys.readouterr().out
+    printed = capsys.readouterr().out
+    assert "wrote" in printed
+    assert "nothing was drawn" not in printed
+
+
+@pytest.mark.parametrize("method", ["zbuffer", "raytrace"])
+def test_a_picture_of_back_faces_alone_says_why_it_is_empty(tmp_path, capsys, method):
+    # One triangle wound clockwise as the framing camera (in front, +z) sees it: a back face.
+    sheet = tmp_path / "sheet.obj"
+    sheet.write_text("v 0 0 0\nv 0 1 0\nv 1 0 0\nf 1 2 3\n")
+    out = tmp_path / "sheet.png"
+    argv = ["render", str(sheet), "-o", str(out), "--size", "32x24", "--method", method]
+    assert main(argv) == 0
+    assert not read_image(out).any()
+    assert "nothing was drawn" in capsys.readouterr().out
+    assert main([*argv, "--no-cull"]) == 0
+    assert read_image(out).any()
+    assert "nothing was drawn" not in capsys.readouterr().out
+
+
+def test_an_empty_picture_with_back_faces_drawn_blames_the_view():
+    from pixelpath.cli.render import empty_image_hint
+    from pixelpath.image import Image
+
+    blank = Image(np.zeros((2, 3, 3)))
+    assert "--no-cull" not in empty_image_hint(blank, drew_back_faces=True)
+    assert "--no-cull" in empty_image_hint(blank, drew_back_faces=False)
+    drawn = Image(np.zeros((2, 3, 3)), object_id=np.zeros((2, 3), dtype=np.int32))
+    assert empty_image_hint(drawn, drew_back_faces=False) is None
 
 
 def test_render_options(scene_file, tmp_path):

@@ -306,7 +306,24 @@ def run(args: argparse.Namespace) -> int:
             f"wrote {output} ({camera.width}x{camera.height}, {args.method}, {args.shading} "
             f"shading) in {elapsed:.2f} s"
         )
+        hint = empty_image_hint(image, args.no_cull)
+        if hint is not None:
+            console().print(hint)
     return 0
+
+
+def empty_image_hint(image: Any, drew_back_faces: bool) -> str | None:
+    """Say why a picture shows only background and what to try; None when it shows a surface.
+
+    An open surface (a single-sided sheet, a cut-away part) seen from behind is culled away
+    entirely, which looks like a failed render rather than a culled one.
+    """
+    if (image.object_id >= 0).any():
+        return None
+    hint = "nothing was drawn: no surface lies in the camera's view"
+    if drew_back_faces:
+        return hint
+    return hint + ", or every surface in it faces away from the camera (--no-cull draws back faces)"
 
 
 def with_turntable(scene: Any, frames: int) -> Any:
