@@ -883,6 +883,35 @@ def _glb_with_binary(gltf: dict, blob: bytes) -> bytes:
     return b"glTF" + struct.pack("<II", 2, 12 + len(body)) + body
 
 
+def _glb_with_picture(tmp_path: Path, image: bytes, extra: int = 0) -> Path:
+    """The quad with ``image`` as its texture, the picture in the GLB's binary chunk.
+
+    The picture's bufferView claims ``extra`` bytes more than the picture has.
+    """
+    gltf = quad_gltf(image=image)
+    blob = base64.b64decode(gltf["buffers"][0]["uri"].split(",")[1])
+    blob += bytes(-len(blob) % 4)
+    gltf["bufferViews"].append({"buffer": 0, "byteOffset": len(blob),
+                                "byteLength": len(image) + extra})
+    gltf["images"] = [{"bufferView": 3, "mimeType": "image/png"}]
+    path = tmp_path / "model.glb"
+    path.write_bytes(_glb_with_binary(gltf, blob + image))
+    return path
+
+
+def test_a_picture_in_a_glb_binary_chunk_is_read(tmp_path):
+    (mesh,) = read_model(_glb_with_picture(tmp_path, _png(PICTURE))).objects
+    np.testing.assert_array_equal(mesh.material.texture.levels[0][..., :3], PICTURE)
+    np.testing.assert_array_equal(corner_positions(mesh), QUAD[QUAD_TRIANGLES])
+
+
+def test_a_view_past_the_end_of_a_glb_binary_chunk_is_refused(tmp_path):
+    # The chunk is padded to 4 bytes: a view 8 bytes too long runs past its end.
+    path = _glb_with_picture(tmp_path, _png(PICTURE), extra=8)
+    with pytest.raises(ValueError, match=r"model\.glb: bufferView 3 runs past the end"):
+        read_model(path)
+
+
 @pytest.mark.parametrize("container", ["gltf", "glb"])
 def test_sparse_vertices_are_substituted(tmp_path, container):
     """Vertex 0 of the quad replaced by (0.5, 0.25, 2.0), from a values view of its own; in a

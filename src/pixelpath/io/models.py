@@ -381,8 +381,9 @@ def _read_checked(path: Path) -> tuple[list[Mesh], dict | None]:
             # the parts are named after the nodes trimesh read (instances are nodes of
             # their own)
             named, added = _decoded(path, gltf, read) or (gltf, None)
-            buffers = _viewed_buffers(path, named, read, added)
-        parts = _trimesh_parts(path, resolver, (named, buffers))
+            given = _views_apart(path, named, added, lambda index, start, length: (
+                _buffer_range(path, gltf, index, start, length, file, chunk, read)))
+        parts = _trimesh_parts(path, resolver, given)
     else:
         resolver = _confined_resolver(path)
         gltf, named, parts = None, None, _trimesh_parts(path, resolver, None)
@@ -907,17 +908,38 @@ def _decoded(path: Path, gltf: dict, read: Any) -> tuple[dict, bytes] | None:
     return edited, bytes(data)
 
 
-def _viewed_buffers(path: Path, gltf: dict, read: Any, added: bytes | None) -> list[bytes]:
-    """Return the buffers' bytes for trimesh: the file's that a bufferView reads, then ``added``.
+def _views_apart(
+    path: Path, gltf: dict, added: bytes | None, cut: Any
+) -> tuple[dict, list[bytes]]:
+    """Return the JSON and buffers for trimesh's reader: each bufferView a buffer of its own.
 
-    ``read(index)`` returns the bytes of the file's buffer ``index`` (a missing buffer or file
-    is named there); a buffer no bufferView reads is left unread (b""). ``added`` is the buffer
-    :func:`_decoded` added after the file's, or None.
+    trimesh copies every bufferView out of its buffer, except one that is the whole buffer
+    (slicing all of a bytes object returns the object). Handed buffers made of the views' bytes
+    alone, it copies nothing, and a GLB's binary chunk is not read whole first (see
+    :func:`_buffer_range`): loading the CesiumMilkTruck allocated twice its 0.5 MB file, which
+    glibc, depending on the heap's layout, gave back to the system after each load and took
+    again at the next, 264 page faults (half a millisecond) a load in some processes.
+    ``added`` is the buffer :func:`_decoded` added after the file's (None when it added none);
+    ``cut(index, start, length)`` returns bytes of the file's buffer ``index``, shorter than
+    ``length`` where the buffer ends first. Only bufferViews read anything: a buffer no view
+    reads is not read.
     """
-    viewed = [view.get("buffer") for view in _list(path, gltf, "bufferViews")]
-    count = len(_list(path, gltf, "buffers")) - (added is not None)
-    own = [read(index) if index in viewed else b"" for index in range(count)]
-    return own if added is None else [*own, added]
+    own = len(_list(path, gltf, "buffers")) - (added is not None)
+    views, buffers = [], []
+    for index, view in enumerate(_list(path, gltf, "bufferViews")):
+        buffer, start, length = view.get("buffer"), view.get("byteOffset", 0), view.get(
+            "byteLength")
+        if not (_is_int(buffer) and 0 <= buffer <= own - (added is None)):
+            raise ValueError(f"{path}: bufferView {index} names a missing buffer")
+        if not (_is_int(start) and _is_int(length) and min(start, length) >= 0):
+            raise ValueError(f"{path}: bufferView {index} has no valid byteOffset and byteLength")
+        data = added[start : start + length] if buffer == own else cut(buffer, start, length)
+        if len(data) != length:
+            raise ValueError(f"{path}: bufferView {index} runs past the end of its buffer")
+        views.append({**view, "buffer": index, "byteOffset": 0})
+        buffers.append(data)
+    return {**gltf, "bufferViews": views, "buffers": [{"byteLength": len(b)} for b in buffers]}, (
+        buffers)
 
 
 _INSTANCING = "EXT_mesh_gpu_instancing"
@@ -1400,6 +1422,26 @@ def _elements(
     raw = np.frombuffer(data, np.uint8, count=need, offset=start + offset)
     rows = np.lib.stride_tricks.as_strided(raw, (count, item), (stride, 1))
     return np.ascontiguousarray(rows).view(dtype).reshape(count, components)
+
+
+def _buffer_range(
+    path: Path, gltf: dict, index: int, start: int, length: int, file: BinaryIO,
+    chunk: _GlbChunk | None, read: Any,
+) -> bytes:
+    """Return ``length`` bytes of buffer ``index`` from ``start`` (fewer where it ends first).
+
+    A GLB's binary chunk is read from the file a range at a time; any other buffer is read
+    whole by ``read(index)`` (:func:`_buffer_bytes`, once per buffer) and cut.
+    """
+    if index == 0 and _in_chunk(gltf, chunk):
+        file.seek(chunk.start + start)
+        return file.read(max(min(length, chunk.length - start), 0))
+    return read(index)[start : start + length]
+
+
+def _in_chunk(gltf: dict, chunk: _GlbChunk | None) -> bool:
+    """Whether buffer 0 is a GLB's binary chunk: the file has one and the buffer has no uri."""
+    return chunk is not None and chunk.type == _BIN and "uri" not in gltf["buffers"][0]
 
 
 def _buffer_bytes(
