@@ -662,6 +662,43 @@ def test_mtl_map_options_are_read_past_and_the_unapplied_named(tmp_path):
         read_model(_textured_square(tmp_path, "map_Kd -s 2 ../my tex.png"))
 
 
+def test_an_mtl_picture_trimesh_cannot_decode_is_refused_by_name(tmp_path):
+    # trimesh drops such a picture silently: the square was drawn white, untextured
+    path = _textured_square(tmp_path, "map_Kd my tex.png")
+    (tmp_path / "my tex.png").write_bytes(b"not a picture at all")
+    with pytest.raises(ValueError, match=r"q\.obj: the texture 'my tex\.png' is not a picture "
+                                         r"pixelpath can read \(not in a picture format"):
+        read_model(path)
+
+
+def test_an_mtl_picture_too_large_for_pillow_is_refused_with_its_size(tmp_path, monkeypatch):
+    # Pillow refuses pictures of more than twice MAX_IMAGE_PIXELS (16384 x 16384 by default);
+    # a lower limit stands for that size here: the 2 x 2 picture has 4 pixels
+    path = _textured_square(tmp_path, "map_Kd my tex.png")
+    monkeypatch.setattr(Image, "MAX_IMAGE_PIXELS", 1)
+    with pytest.raises(ValueError, match=r"q\.obj: the texture 'my tex\.png' .*Image size "
+                                         r"\(4 pixels\) exceeds limit.* at most 8192 texels"):
+        read_model(path)
+
+
+def test_a_gltf_picture_too_large_for_pillow_is_refused_with_its_size(tmp_path, monkeypatch):
+    gltf = quad_gltf(image=_png(PICTURE))
+    Image.fromarray(PICTURE).save(tmp_path / "big.png")
+    gltf["images"][0]["uri"] = "big.png"
+    monkeypatch.setattr(Image, "MAX_IMAGE_PIXELS", 1)
+    refused(tmp_path, gltf, r"material 'm' has a base-colour texture that could not be read "
+                            r"\(Image size \(4 pixels\) exceeds limit")
+
+
+def test_an_unused_mtl_material_with_a_sound_picture_is_no_error(tmp_path):
+    path = _textured_square(tmp_path, "map_Kd my tex.png")
+    with (tmp_path / "m.mtl").open("a") as mtl:
+        mtl.write("newmtl spare\nmap_Kd spare.png\n")
+    Image.fromarray(PICTURE).save(tmp_path / "spare.png")
+    (mesh,) = read_model(path).objects
+    np.testing.assert_array_equal(mesh.material.texture.levels[0][..., :3], PICTURE)
+
+
 @pytest.mark.parametrize(
     ("line", "uv", "wrap"),
     [

@@ -212,7 +212,7 @@ from pixelpath.scene.loader import MODEL_FORMATS
 from pixelpath.scene.material import Material
 from pixelpath.scene.mesh import Mesh, bounding_box, moved
 from pixelpath.scene.scene import Scene
-from pixelpath.scene.texture import Texture, srgb_to_linear, wide_grey
+from pixelpath.scene.texture import MAX_SIDE, Texture, srgb_to_linear, wide_grey
 
 __all__ = [
     "MODEL_FORMATS",
@@ -387,6 +387,7 @@ def _read_checked(path: Path) -> tuple[list[Mesh], dict | None]:
     else:
         resolver = _confined_resolver(path)
         gltf, named, parts = None, None, _trimesh_parts(path, resolver, None)
+        _refuse_dropped_pictures(path, resolver, parts)
     if resolver is not None:
         if resolver.refused:
             raise ValueError(
@@ -395,6 +396,44 @@ def _read_checked(path: Path) -> tuple[list[Mesh], dict | None]:
             warnings.warn(f"{path}: {name!r} not found; using the material colour",
                           stacklevel=3)
     return _meshes(path, parts, named, resolver), gltf
+
+
+def _refuse_dropped_pictures(path: Path, resolver: Any, parts: list[_Part]) -> None:
+    """Refuse an OBJ's or PLY's texture that trimesh read but could not decode.
+
+    trimesh drops such a picture without a word (a corrupt file, or one larger than Pillow
+    opens, 16384 x 16384 for one), and the part was drawn in its material colour alone. Every
+    file it read through the resolver but an .mtl is a picture; one that no part's material
+    holds (dropped, or a material no face uses) is opened here, and refused if Pillow cannot
+    open it.
+    """
+    drawn = {getattr(getattr(getattr(part.visual, "material", None), "image", None), "info",
+                     {}).get("file_path") for part in parts}
+    for name, data in resolver.served.items():
+        if name in drawn or name.lower().endswith(".mtl"):
+            continue
+        problem = _picture_problem(data)
+        if problem is not None:
+            raise ValueError(f"{path}: the texture {name!r} is not a picture pixelpath can "
+                             f"read ({problem})")
+
+
+def _picture_problem(data: bytes) -> str | None:
+    """Say why Pillow cannot open the picture ``data`` (None when it can)."""
+    import PIL
+    import PIL.Image
+
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", PIL.Image.DecompressionBombWarning)
+            PIL.Image.open(io.BytesIO(data)).close()
+    except PIL.Image.DecompressionBombError as exc:
+        return f"{exc} Reduce it: pixelpath draws at most {MAX_SIDE} texels on a side"
+    except PIL.UnidentifiedImageError:  # its message names the BytesIO, not the file
+        return "not in a picture format Pillow knows, or its header is corrupt"
+    except (OSError, ValueError, SyntaxError) as exc:
+        return str(exc)
+    return None
 
 
 def _refers_to_files(gltf: dict) -> bool:
@@ -586,6 +625,7 @@ def _resolver_class() -> type:
             super().__init__(str(source))
             self.refused: list[str] = []
             self.missing: list[str] = []
+            self.served: dict[str, bytes] = {}  # what each name read gave
 
         def get(self, name: str) -> bytes:
             file = self._file(name)
@@ -597,7 +637,8 @@ def _resolver_class() -> type:
             if file is None:
                 self.missing.append(name)
                 raise FileNotFoundError(name)
-            return file.read_bytes()
+            self.served[name] = file.read_bytes()
+            return self.served[name]
 
         def _file(self, name: str) -> Path | None:
             if _outside(name, Path(self.parent)):
@@ -1495,7 +1536,8 @@ def _meshes(path: Path, parts: list[_Part], gltf: dict | None, resolver: Any) ->
         try:
             meshes.append(_mesh(path, part, name, gltf, shared))
         except (ValueError, TypeError) as exc:
-            raise type(exc)(f"{path}: part {name!r}: {exc}") from None
+            message = str(exc).removeprefix(f"{path}: ")  # the file is named once
+            raise type(exc)(f"{path}: part {name!r}: {message}") from None
     return meshes
 
 
@@ -2132,11 +2174,13 @@ def _refuse_lost_texture(path: Path, source: Any, gltf: dict | None) -> None:
         material = gltf["materials"][index]
         pbr = material.get("pbrMetallicRoughness")
         if isinstance(pbr, dict) and "baseColorTexture" in pbr:
-            if _missing_image_file(path, gltf, pbr["baseColorTexture"]):
-                return  # already warned of: the material colour alone is drawn
+            found = _image_file(path, gltf, pbr["baseColorTexture"])
+            if found is not None and found[1] is None:
+                return  # a missing file, already warned of: the material colour alone is drawn
+            problem = None if found is None else _picture_problem(found[1].read_bytes())
             raise ValueError(
                 f"{path}: material {source.name!r} has a base-colour texture that could not "
-                "be read (missing, or not a PNG/JPEG trimesh can decode)"
+                "be read (" + (problem or "missing, or not a PNG/JPEG trimesh can decode") + ")"
             )
 
 
@@ -2276,16 +2320,22 @@ def _is_int(value: Any) -> bool:
     return isinstance(value, int) and not isinstance(value, bool)
 
 
-def _missing_image_file(path: Path, gltf: Any, ref: Any) -> bool:
-    """Whether the texture ``ref`` names an image file (not data) that does not exist."""
+def _image_file(path: Path, gltf: Any, ref: Any) -> tuple[str, Path | None] | None:
+    """Return the file URI of the image the texture ``ref`` names, and the file it names.
+
+    The file is None where the model's folder has no such file; the whole is None where the
+    image is data (a data: URI or a bufferView) or the reference leads nowhere.
+    """
     try:
-        image = gltf["images"][gltf["textures"][ref["index"]]["source"]]
-        uri = image["uri"]
+        uri = gltf["images"][gltf["textures"][ref["index"]]["source"]]["uri"]
     except (KeyError, IndexError, TypeError):
-        return False
+        return None
     if not isinstance(uri, str) or uri.startswith("data:"):
-        return False
-    return not (path.parent / unquote(uri)).is_file() and not (path.parent / uri).is_file()
+        return None
+    if _outside(uri, path.parent):  # refused by the resolver already
+        return uri, None
+    files = (path.parent / name for name in (unquote(uri), uri))
+    return uri, next((file for file in files if file.is_file()), None)
 
 
 # --- camera and lights ------------------------------------------------------------------------
