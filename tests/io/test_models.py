@@ -672,8 +672,8 @@ def test_an_mtl_picture_trimesh_cannot_decode_is_refused_by_name(tmp_path):
 
 
 def test_an_mtl_picture_too_large_for_pillow_is_refused_with_its_size(tmp_path, monkeypatch):
-    # Pillow refuses pictures of more than twice MAX_IMAGE_PIXELS (16384 x 16384 by default);
-    # a lower limit stands for that size here: the 2 x 2 picture has 4 pixels
+    # Pillow refuses pictures of more than twice MAX_IMAGE_PIXELS (16384 x 16384 is past that
+    # by default); a lower limit stands for such a size here: the 2 x 2 picture has 4 pixels
     path = _textured_square(tmp_path, "map_Kd my tex.png")
     monkeypatch.setattr(Image, "MAX_IMAGE_PIXELS", 1)
     with pytest.raises(ValueError, match=r"q\.obj: the texture 'my tex\.png' .*Image size "

@@ -280,6 +280,19 @@ def test_oversized_texture_is_reduced_with_a_warning():
         assert Texture(np.zeros((1, MAX_SIDE, 3), dtype=np.uint8)).width == MAX_SIDE
 
 
+def test_a_picture_file_past_pillows_guards(tmp_path, monkeypatch):
+    """Past Pillow's warning a file loads (reduced when a side is over MAX_SIDE), as a model
+    file's picture does; past its error it is refused by name. A lower MAX_IMAGE_PIXELS
+    stands for the sizes (about 89 and 179 million pixels): the 2 x 2 picture has 4."""
+    path = tmp_path / "big.png"
+    PILImage.fromarray(np.full((2, 2, 3), 255, dtype=np.uint8)).save(path)
+    monkeypatch.setattr(PILImage, "MAX_IMAGE_PIXELS", 3)  # 4 > 3: Pillow only warns
+    assert Texture(path).width == 2
+    monkeypatch.setattr(PILImage, "MAX_IMAGE_PIXELS", 1)  # 4 > 2 x 1: Pillow refuses
+    with pytest.raises(ValueError, match=r"big\.png: not a readable image .*Image size"):
+        Texture(path)
+
+
 def test_equality_by_value_and_unhashable():
     a = Texture(np.full((2, 2, 3), 0.5))
     assert a == Texture(np.full((2, 2, 3), 0.5))

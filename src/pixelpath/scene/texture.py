@@ -14,7 +14,9 @@ Conventions (SPEC, ``pp.Mesh`` and ``pp.Material``):
   table. The pyramid is built in linear light: each level averages 2 × 2 texels of the one
   above (an odd side repeats its last row or column), down to 1 × 1.
 - Size: a side over :data:`MAX_SIDE` texels is reduced (by a whole factor, with a warning)
-  before anything else, so a 16k × 16k picture costs 64 MB rather than 1 GB.
+  before anything else: a 12k × 12k picture is kept at 6k × 6k, a quarter of the memory.
+  Pillow refuses pictures of more than about 179 million pixels (16k × 16k is past that), its
+  guard against decompression bombs: a ValueError naming the picture.
 - Decoding: a file, a PIL image or an array is read at once. :meth:`Texture.deferred` (what
   the model-file loader uses) decodes a PIL image when the texture is first used, as PIL and
   trimesh open pictures lazily, so loading a model costs little more than trimesh's own
@@ -308,11 +310,12 @@ def _read_file(path: Path) -> tuple[np.ndarray, bool]:
         raise FileNotFoundError(f"texture file not found: {path}")
     try:
         with warnings.catch_warnings():
-            warnings.simplefilter("error", PILImage.DecompressionBombWarning)
+            # Past Pillow's warning (about 89 million pixels) a picture is decoded and reduced
+            # to MAX_SIDE, as a model file's is; past its error (twice that) it is refused.
+            warnings.simplefilter("ignore", PILImage.DecompressionBombWarning)
             with PILImage.open(path) as img:
                 return _from_pil(img, str(path))
-    except (UnidentifiedImageError, OSError, SyntaxError, PILImage.DecompressionBombError,
-            PILImage.DecompressionBombWarning) as exc:
+    except (UnidentifiedImageError, OSError, SyntaxError, PILImage.DecompressionBombError) as exc:
         raise ValueError(f"{path}: not a readable image ({exc})") from None
 
 
