@@ -96,6 +96,26 @@ def test_render_load_errors_name_the_file(tmp_path, capsys):
     assert "not found" in capsys.readouterr().err
 
 
+@pytest.mark.parametrize(
+    ("name", "extra", "message"),
+    [
+        ("x.xyz", [], "unknown image extension '.xyz'"),
+        ("x.jpg", ["--transparent"], ".jpg files have no alpha channel; write .png for RGBA"),
+    ],
+)
+def test_an_output_it_cannot_write_fails_before_rendering(scene_file, tmp_path, capsys,
+                                                          monkeypatch, name, extra, message):
+    import pixelpath.renderer
+
+    def no_render(*args, **kwargs):
+        raise AssertionError("rendered before the output was checked")
+
+    monkeypatch.setattr(pixelpath.renderer, "render", no_render)
+    assert main(["render", str(scene_file), "-o", str(tmp_path / name), *extra]) == 2
+    assert message in capsys.readouterr().err
+    assert not (tmp_path / name).exists()
+
+
 def test_render_into_a_missing_folder_fails_cleanly(scene_file, tmp_path, capsys):
     assert main(["render", str(scene_file), "-o", str(tmp_path / "no" / "x.png")]) == 2
     assert "does not exist" in capsys.readouterr().err

@@ -18,6 +18,7 @@ from pixelpath.cli._common import (
 from pixelpath.cli._frames import add_frame_options, run_frames, wants_frames
 from pixelpath.figures import DRAWN_METHODS
 from pixelpath.io.aovs import AOVS, parse_aovs, write_aovs
+from pixelpath.io.images import image_format
 from pixelpath.io.models import MODEL_FORMATS
 from pixelpath.raster.shading import SHADINGS
 from pixelpath.renderer import METHOD_NAMES, STYLES
@@ -242,6 +243,11 @@ def render_to_file(
 
     if not output.parent.is_dir():
         raise CommandError(f"output directory does not exist: {output.parent}")
+    alpha = getattr(args, "transparent", False)
+    try:  # before rendering: a long render should not end in "unknown extension"
+        image_format(output.suffix, alpha=alpha)
+    except ValueError as exc:
+        raise CommandError(str(exc)) from None
     steps = render_steps(args.method)
     compile_kernels(
         [args.method, getattr(args, "style", "filled")], [args.shading],
@@ -265,17 +271,13 @@ def render_to_file(
             fresnel=getattr(args, "fresnel", False),
         )
     image, report = result if explain else (result, None)
-    alpha = getattr(args, "transparent", False)
-    try:
-        if getattr(args, "png_level", None) is None:
-            image.save(output, gamma=args.gamma, alpha=alpha)
-        else:  # the bytes Image.save writes, at another level of compression
-            from pixelpath.frames.work import encode
-            from pixelpath.io.images import write_bytes
+    if getattr(args, "png_level", None) is None:
+        image.save(output, gamma=args.gamma, alpha=alpha)
+    else:  # the bytes Image.save writes, at another level of compression
+        from pixelpath.frames.work import encode
+        from pixelpath.io.images import write_bytes
 
-            write_bytes(output, encode(image, output.suffix, args.gamma, alpha, args.png_level))
-    except ValueError as exc:  # an image format without alpha
-        raise CommandError(str(exc)) from None
+        write_bytes(output, encode(image, output.suffix, args.gamma, alpha, args.png_level))
     for path in write_aovs(image, output, getattr(args, "aov", ())):
         if not args.quiet:
             console().print(f"wrote {path}")

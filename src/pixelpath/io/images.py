@@ -230,20 +230,29 @@ def write_image(
     write_bytes(path, data)
 
 
-def image_format(suffix: str) -> str:
+def image_format(suffix: str, *, alpha: bool = False) -> str:
     """Return Pillow's format name for a file extension such as ``".png"``; ValueError if none.
+
+    With ``alpha=True``, a format without an alpha channel (JPEG, ...) is a ValueError too:
+    callers check before the work that makes the image, not after it.
 
     Examples
     --------
     >>> from pixelpath.io.images import image_format
     >>> image_format(".PNG")
     'PNG'
+    >>> image_format(".jpg", alpha=True)
+    Traceback (most recent call last):
+    ...
+    ValueError: .jpg files have no alpha channel; write .png for RGBA
     """
     from PIL import Image as PILImage
 
     fmt = PILImage.registered_extensions().get(suffix.lower())
     if fmt is None:
         raise ValueError(f"unknown image extension {suffix!r}; use .png, .jpg, ...")
+    if alpha and fmt not in ("PNG", "TIFF", "WEBP"):
+        raise ValueError(f"{suffix} files have no alpha channel; write .png for RGBA")
     return fmt
 
 
@@ -291,7 +300,7 @@ def encode_image(
     rgb = np.asarray(rgb)
     if rgb.ndim != 3 or rgb.shape[-1] != 3:
         raise ValueError(f"rgb must have shape (H, W, 3), got {rgb.shape}")
-    fmt = image_format(suffix)
+    fmt = image_format(suffix, alpha=alpha is not None)
     level = None if png_level is None else png_level_of(png_level)
     pixels = to_uint8(rgb, gamma)
     if alpha is not None:
@@ -300,8 +309,6 @@ def encode_image(
             raise ValueError(
                 f"alpha must have shape {rgb.shape[:2]} like the image, got {alpha.shape}"
             )
-        if fmt not in ("PNG", "TIFF", "WEBP"):
-            raise ValueError(f"{suffix} files have no alpha channel; write .png for RGBA")
         pixels = np.dstack([pixels, to_uint8(alpha)])
     options = {"compress_level": level} if level is not None and fmt == "PNG" else {}
     buffer = io.BytesIO()
