@@ -418,15 +418,18 @@ def _refuse_dropped_pictures(path: Path, resolver: Any, parts: list[_Part]) -> N
                              f"read ({problem})")
 
 
-def _picture_problem(data: bytes) -> str | None:
-    """Say why Pillow cannot open the picture ``data`` (None when it can)."""
+def _picture_problem(picture: bytes | Path) -> str | None:
+    """Say why Pillow cannot open ``picture``, its bytes or its file (None when it can).
+
+    Only the header is read: what Pillow checks when it opens a picture.
+    """
     import PIL
     import PIL.Image
 
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", PIL.Image.DecompressionBombWarning)
-            PIL.Image.open(io.BytesIO(data)).close()
+            PIL.Image.open(io.BytesIO(picture) if isinstance(picture, bytes) else picture).close()
     except PIL.Image.DecompressionBombError as exc:
         return f"{exc} Reduce it: pixelpath draws at most {MAX_SIDE} texels on a side"
     except PIL.UnidentifiedImageError:  # its message names the BytesIO, not the file
@@ -965,12 +968,13 @@ def _views_apart(
     ``length`` where the buffer ends first. Only bufferViews read anything: a buffer no view
     reads is not read.
     """
-    own = len(_list(path, gltf, "buffers")) - (added is not None)
+    count = len(_list(path, gltf, "buffers"))
+    own = count - (added is not None)  # the file's buffers; ``added``, if any, comes next
     views, buffers = [], []
     for index, view in enumerate(_list(path, gltf, "bufferViews")):
         buffer, start, length = view.get("buffer"), view.get("byteOffset", 0), view.get(
             "byteLength")
-        if not (_is_int(buffer) and 0 <= buffer <= own - (added is None)):
+        if not (_is_int(buffer) and 0 <= buffer < count):
             raise ValueError(f"{path}: bufferView {index} names a missing buffer")
         if not (_is_int(start) and _is_int(length) and min(start, length) >= 0):
             raise ValueError(f"{path}: bufferView {index} has no valid byteOffset and byteLength")
@@ -2177,7 +2181,7 @@ def _refuse_lost_texture(path: Path, source: Any, gltf: dict | None) -> None:
             found = _image_file(path, gltf, pbr["baseColorTexture"])
             if found is not None and found[1] is None:
                 return  # a missing file, already warned of: the material colour alone is drawn
-            problem = None if found is None else _picture_problem(found[1].read_bytes())
+            problem = None if found is None else _picture_problem(found[1])
             raise ValueError(
                 f"{path}: material {source.name!r} has a base-colour texture that could not "
                 "be read (" + (problem or "missing, or not a PNG/JPEG trimesh can decode") + ")"
@@ -2332,7 +2336,7 @@ def _image_file(path: Path, gltf: Any, ref: Any) -> tuple[str, Path | None] | No
         return None
     if not isinstance(uri, str) or uri.startswith("data:"):
         return None
-    if _outside(uri, path.parent):  # refused by the resolver already
+    if _outside(uri, path.parent):  # not looked for (such a file is refused before reading)
         return uri, None
     files = (path.parent / name for name in (unquote(uri), uri))
     return uri, next((file for file in files if file.is_file()), None)
