@@ -942,6 +942,25 @@ def test_a_picture_in_a_glb_binary_chunk_is_read(tmp_path):
     np.testing.assert_array_equal(corner_positions(mesh), QUAD[QUAD_TRIANGLES])
 
 
+@pytest.mark.parametrize("pread", ["short", "absent", "system"])
+def test_ranges_of_a_file_are_read_whole(tmp_path, monkeypatch, pread):
+    """A short pread (the system's 2 GiB a call) and a system without pread (Windows) both
+    read the range to its end, as a seek and a read do."""
+    import os
+
+    from pixelpath.io.models import _read_at
+
+    path = tmp_path / "data.bin"
+    path.write_bytes(bytes(range(256)) * 4)
+    if pread == "short":
+        monkeypatch.setattr(os, "pread", lambda fd, length, offset: b"\x00")
+    elif pread == "absent":
+        monkeypatch.delattr(os, "pread", raising=False)
+    with path.open("rb") as file:
+        assert _read_at(file, 300, 500) == path.read_bytes()[300:800]
+        assert _read_at(file, 1000, 100) == path.read_bytes()[1000:]  # fewer at the end
+
+
 def test_a_view_past_the_end_of_a_glb_binary_chunk_is_refused(tmp_path):
     # The chunk is padded to 4 bytes: a view 8 bytes too long runs past its end.
     path = _glb_with_picture(tmp_path, _png(PICTURE), extra=8)
