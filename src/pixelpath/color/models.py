@@ -221,9 +221,17 @@ def _convert_in_threads(
             *args,
         ))
 
-    # One run per thread: every pixel costs the same, and each run's dispatch costs a little.
-    in_threads(convert, len(src) // src_channels, runs=thread_count())
+    # Every pixel costs the same, but a thread may not run at full speed the whole time (a
+    # virtual machine's core, a small core of a hybrid processor): with one run per thread, a
+    # 4K conversion's first call took 100 ms instead of 8 in some processes here, its one
+    # slowed thread holding the call up, where runs of _RUN_PIXELS shared out as threads
+    # finish let the others take the work (docs/performance.md).
+    pixels = len(src) // src_channels
+    in_threads(convert, pixels, runs=max(thread_count(), -(-pixels // _RUN_PIXELS)))
     return any(flags)
+
+
+_RUN_PIXELS = 1 << 18  # pixels a run of a threaded conversion: a 4K image is 32 runs
 
 
 def _same_model(
