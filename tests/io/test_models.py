@@ -690,6 +690,14 @@ def test_a_gltf_picture_too_large_for_pillow_is_refused_with_its_size(tmp_path, 
                             r"\(Image size \(4 pixels\) exceeds limit")
 
 
+def test_a_material_library_of_any_name_is_not_taken_for_a_picture(tmp_path):
+    path = _textured_square(tmp_path, "map_Kd my tex.png")
+    (tmp_path / "m.mtl").rename(tmp_path / "materials.lib")
+    path.write_text(path.read_text().replace("mtllib m.mtl", "mtllib materials.lib"))
+    (mesh,) = read_model(path).objects
+    np.testing.assert_array_equal(mesh.material.texture.levels[0][..., :3], PICTURE)
+
+
 def test_an_unused_mtl_material_with_a_sound_picture_is_no_error(tmp_path):
     path = _textured_square(tmp_path, "map_Kd my tex.png")
     with (tmp_path / "m.mtl").open("a") as mtl:

@@ -403,14 +403,14 @@ def _refuse_dropped_pictures(path: Path, resolver: Any, parts: list[_Part]) -> N
 
     trimesh drops such a picture without a word (a corrupt file, or one larger than Pillow
     opens, 16384 x 16384 for one), and the part was drawn in its material colour alone. Every
-    file it read through the resolver but an .mtl is a picture; one that no part's material
-    holds (dropped, or a material no face uses) is opened here, and refused if Pillow cannot
-    open it.
+    file it read through the resolver but a material library (known by its ``newmtl`` lines,
+    whatever its name) is a picture; one that no part's material holds (dropped, or a
+    material no face uses) is opened here, and refused if Pillow cannot open it.
     """
     drawn = {getattr(getattr(getattr(part.visual, "material", None), "image", None), "info",
                      {}).get("file_path") for part in parts}
     for name, data in resolver.served.items():
-        if name in drawn or name.lower().endswith(".mtl"):
+        if name in drawn or b"newmtl" in data:
             continue
         problem = _picture_problem(data)
         if problem is not None:
