@@ -665,7 +665,7 @@ def test_mtl_map_options_are_read_past_and_the_unapplied_named(tmp_path):
 def test_an_mtl_picture_trimesh_cannot_decode_is_refused_by_name(tmp_path):
     # trimesh drops such a picture silently: the square was drawn white, untextured
     path = _textured_square(tmp_path, "map_Kd my tex.png")
-    (tmp_path / "my tex.png").write_bytes(b"not a picture at all")
+    (tmp_path / "my tex.png").write_bytes(bytes(range(256)) * 4)  # no picture's header
     with pytest.raises(ValueError, match=r"q\.obj: the texture 'my tex\.png' is not a picture "
                                          r"pixelpath can read \(not in a picture format"):
         read_model(path)
@@ -696,6 +696,10 @@ def test_a_material_library_of_any_name_is_not_taken_for_a_picture(tmp_path):
     path.write_text(path.read_text().replace("mtllib m.mtl", "mtllib materials.lib"))
     (mesh,) = read_model(path).objects
     np.testing.assert_array_equal(mesh.material.texture.levels[0][..., :3], PICTURE)
+    # Blender's library for an object without materials: no newmtl line at all
+    (tmp_path / "materials.lib").write_text("# Blender MTL File: 'None'\n# Material Count: 0\n")
+    (mesh,) = read_model(path).objects
+    assert mesh.material.texture is None
 
 
 def test_an_unused_mtl_material_with_a_sound_picture_is_no_error(tmp_path):

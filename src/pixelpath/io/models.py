@@ -402,20 +402,31 @@ def _refuse_dropped_pictures(path: Path, resolver: Any, parts: list[_Part]) -> N
     """Refuse an OBJ's or PLY's texture that trimesh read but could not decode.
 
     trimesh drops such a picture without a word (a corrupt file, or one larger than Pillow
-    opens, 16384 x 16384 for one), and the part was drawn in its material colour alone. Every
-    file it read through the resolver but a material library (known by its ``newmtl`` lines,
-    whatever its name) is a picture; one that no part's material holds (dropped, or a
-    material no face uses) is opened here, and refused if Pillow cannot open it.
+    opens, 16384 x 16384 for one), and the part was drawn in its material colour alone. It
+    reads through the resolver the material libraries and the pictures they name: a file it
+    read that is not text, and that no part's material holds (dropped, or a material no face
+    uses), is opened here and refused if Pillow cannot open it. Text is left alone: a material
+    library whatever its name (Blender writes one with no material in it), or text named as a
+    picture, which trimesh drops as before.
     """
     drawn = {getattr(getattr(getattr(part.visual, "material", None), "image", None), "info",
                      {}).get("file_path") for part in parts}
     for name, data in resolver.served.items():
-        if name in drawn or b"newmtl" in data:
+        if name in drawn or _is_text(data):
             continue
         problem = _picture_problem(data)
         if problem is not None:
             raise ValueError(f"{path}: the texture {name!r} is not a picture pixelpath can "
                              f"read ({problem})")
+
+
+def _is_text(data: bytes) -> bool:
+    """Whether ``data`` reads as UTF-8 text (a picture's first bytes never do)."""
+    try:
+        data.decode("utf-8")
+    except UnicodeDecodeError:
+        return False
+    return True
 
 
 def _picture_problem(picture: bytes | Path) -> str | None:
