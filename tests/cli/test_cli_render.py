@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import logging
 import subprocess
 import sys
 import warnings
@@ -114,6 +115,29 @@ def test_an_output_it_cannot_write_fails_before_rendering(scene_file, tmp_path, 
     assert main(["render", str(scene_file), "-o", str(tmp_path / name), *extra]) == 2
     assert message in capsys.readouterr().err
     assert not (tmp_path / name).exists()
+
+
+def test_a_model_trimesh_cannot_read_gives_one_error_and_no_traceback(tmp_path, capsys):
+    # trimesh logs the picture it cannot open with a traceback; the command shows its own error
+    (tmp_path / "bad.png").write_bytes(bytes(range(256)))
+    (tmp_path / "t.ply").write_text(
+        "ply\nformat ascii 1.0\ncomment TextureFile bad.png\nelement vertex 3\n"
+        "property float x\nproperty float y\nproperty float z\nproperty float s\n"
+        "property float t\nelement face 1\nproperty list uchar int vertex_indices\n"
+        "end_header\n0 0 0 0 0\n1 0 0 1 0\n0 1 0 0 1\n3 0 1 2\n"
+    )
+    # In a process of its own: pytest's log capture would stand in for the handler checked here
+    done = subprocess.run(
+        [sys.executable, "-m", "pixelpath", "render", str(tmp_path / "t.ply"), "-o",
+         str(tmp_path / "t.png")], capture_output=True, text=True, check=False,
+    )
+    assert done.returncode == 2
+    assert "t.ply: the texture 'bad.png' is not a picture pixelpath can read" in done.stderr
+    assert "Traceback" not in done.stderr and "unable to load image" not in done.stderr
+    assert main(["render", str(tmp_path / "t.ply"), "-o", str(tmp_path / "t.png")]) == 2
+    assert "bad.png" in capsys.readouterr().err
+    assert not any(isinstance(handler, logging.NullHandler)  # the command's is gone after it
+                   for handler in logging.getLogger("trimesh").handlers)
 
 
 def test_render_into_a_missing_folder_fails_cleanly(scene_file, tmp_path, capsys):

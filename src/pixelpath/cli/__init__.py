@@ -10,6 +10,7 @@ from __future__ import annotations
 import argparse
 import functools
 import importlib
+import logging
 import sys
 import warnings
 from collections.abc import Sequence
@@ -68,6 +69,11 @@ def main(argv: Sequence[str] | None = None) -> int:
     # Warnings read like the errors ("pixelpath render: warning: ..."), without the source
     # line of pixelpath's that raised them, which a user of the command line has no use for.
     warnings.formatwarning = functools.partial(_warning_line, args.command)
+    # trimesh logs a file it cannot read with a traceback (Python's last-resort handler prints
+    # it) where pixelpath raises its own error naming the file: that error is shown alone.
+    # A handler of the user's, on the root logger, still receives trimesh's records.
+    quiet, trimesh_log = logging.NullHandler(), logging.getLogger("trimesh")
+    trimesh_log.addHandler(quiet)
     try:
         return int(args.run(args) or 0)
     except (CommandError, ValueError, TypeError, FileNotFoundError) as exc:
@@ -78,6 +84,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 130
     finally:
         warnings.formatwarning = shown
+        trimesh_log.removeHandler(quiet)
 
 
 def _warning_line(command: str, message: Warning | str, *_: object, **__: object) -> str:
