@@ -642,19 +642,20 @@ def _resolver_class() -> type:
             self.served: dict[str, bytes] = {}  # what each name read gave
 
         def get(self, name: str) -> bytes:
-            file = self._file(name)
+            file = self.find(name)
             if file is None and name.lstrip().startswith("-"):
                 # an .mtl map line's options (map_Kd -s 2 2 1 wood.png), which trimesh hands
                 # on with the file name (the material applies them: _mtl_map)
                 bare = _mtl_map_line(name)[0]
-                file = self._file(bare) if bare else None
+                file = self.find(bare) if bare else None
             if file is None:
                 self.missing.append(name)
                 raise FileNotFoundError(name)
             self.served[name] = file.read_bytes()
             return self.served[name]
 
-        def _file(self, name: str) -> Path | None:
+        def find(self, name: str) -> Path | None:
+            """Return the file ``name`` names in the model's folder (None: there is none)."""
             if _outside(name, Path(self.parent)):
                 self.refused.append(name)
                 raise ValueError(f"{name!r} is outside the model's folder")
@@ -1523,10 +1524,9 @@ def _buffer_bytes(
         raise ValueError(f"{path}: a bufferView names a missing buffer")
     uri = buffers[index].get("uri")
     if uri is None:
-        if index != 0 or chunk is None or chunk.type != _BIN:
+        if index != 0 or not _in_chunk(gltf, chunk):
             raise ValueError(f"{path}: buffer {index} has neither a uri nor a binary chunk")
-        file.seek(chunk.start)
-        return file.read(chunk.length)
+        return _read_at(file, chunk.start, chunk.length)
     if uri.startswith("data:"):
         head, _, payload = uri.partition(",")
         try:
@@ -1854,7 +1854,7 @@ def _pbr_material(path: Path, source: Any, gltf: dict | None, shared: dict) -> M
     alpha_cutoff = _alpha_cutoff(source, mode)
     texture = _texture(path, source.baseColorTexture, shared, keep_alpha=mode != "OPAQUE")
     if texture is None:
-        _refuse_lost_texture(path, source, gltf)
+        _refuse_lost_texture(path, source, gltf, shared["resolver"])
         texture_filter, texture_wrap = "trilinear", "repeat"  # nothing to sample
     else:
         texture_filter, texture_wrap = _sampler(path, source, gltf, shared)
@@ -2197,16 +2197,20 @@ def _texture(path: Path, image: Any, shared: dict, *, keep_alpha: bool) -> Textu
     return shared[key]
 
 
-def _refuse_lost_texture(path: Path, source: Any, gltf: dict | None) -> None:
-    """Refuse a material whose texture trimesh skipped (it drops what it cannot decode)."""
+def _refuse_lost_texture(path: Path, source: Any, gltf: dict | None, resolver: Any) -> None:
+    """Refuse a material whose texture trimesh skipped (it drops what it cannot decode).
+
+    A picture in a file of the model's folder (``resolver`` finds it) is opened to say why.
+    """
     for index in _gltf_materials_named(gltf, source.name):
         material = gltf["materials"][index]
         pbr = material.get("pbrMetallicRoughness")
         if isinstance(pbr, dict) and "baseColorTexture" in pbr:
-            found = _image_file(path, gltf, pbr["baseColorTexture"])
-            if found is not None and found[1] is None:
+            uri = _image_uri(gltf, pbr["baseColorTexture"])
+            file = None if uri is None else resolver.find(uri)
+            if uri is not None and file is None:
                 return  # a missing file, already warned of: the material colour alone is drawn
-            problem = None if found is None else _picture_problem(found[1])
+            problem = None if file is None else _picture_problem(file)
             raise ValueError(
                 f"{path}: material {source.name!r} has a base-colour texture that could not "
                 "be read (" + (problem or "missing, or not a PNG/JPEG trimesh can decode") + ")"
@@ -2349,22 +2353,13 @@ def _is_int(value: Any) -> bool:
     return isinstance(value, int) and not isinstance(value, bool)
 
 
-def _image_file(path: Path, gltf: Any, ref: Any) -> tuple[str, Path | None] | None:
-    """Return the file URI of the image the texture ``ref`` names, and the file it names.
-
-    The file is None where the model's folder has no such file; the whole is None where the
-    image is data (a data: URI or a bufferView) or the reference leads nowhere.
-    """
+def _image_uri(gltf: Any, ref: Any) -> str | None:
+    """Return the file URI of the image the texture ``ref`` names (None: data, or nothing)."""
     try:
         uri = gltf["images"][gltf["textures"][ref["index"]]["source"]]["uri"]
     except (KeyError, IndexError, TypeError):
         return None
-    if not isinstance(uri, str) or uri.startswith("data:"):
-        return None
-    if _outside(uri, path.parent):  # not looked for (such a file is refused before reading)
-        return uri, None
-    files = (path.parent / name for name in (unquote(uri), uri))
-    return uri, next((file for file in files if file.is_file()), None)
+    return uri if isinstance(uri, str) and not uri.startswith("data:") else None
 
 
 # --- camera and lights ------------------------------------------------------------------------
