@@ -54,6 +54,22 @@ def test_another_cameras_geometry_is_what_a_fresh_build_gives_bit_for_bit(first,
     assert [a.dtype for a in fields(reused)] == [a.dtype for a in fields(fresh)]
 
 
+@settings(max_examples=25, deadline=None)
+@given(eye=st.tuples(coordinate, coordinate, coordinate),
+       normal=st.tuples(coordinate, coordinate, coordinate))
+def test_a_planes_cells_have_its_normal_exactly_from_any_camera(eye, normal):
+    plane = pp.Plane((0.3, -0.2, 0.1), normal)
+    objects = (OBJECTS[0], plane)
+    for fov in (30.0, 90.0):  # a first camera, then another (the rows of _with_planes)
+        geometry = scene_geometry(scene_from(eye, fov, objects=objects))
+        cells = geometry.polygon_normals[geometry.polygon_object == 1]
+        assert len(cells) == tessellate.PLANE_GRID**2
+        assert (cells == plane.normal).all()
+        # Newell's normal of the grid the camera gave agrees to rounding, as it should.
+        newell = geometry.meshes[1].face_normals
+        assert np.allclose(newell, plane.normal, rtol=0, atol=1e-12)
+
+
 def test_without_planes_every_camera_shares_one_geometry():
     objects = tuple(o for o in OBJECTS if not isinstance(o, pp.Plane))
     one = scene_geometry(scene_from((3, 2, 6), objects=objects))

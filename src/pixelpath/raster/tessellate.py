@@ -45,7 +45,8 @@ class SceneGeometry:
     triangle_polygon : (T,) intp
         Polygon each triangle belongs to.
     polygon_normals : (P, 3) float64
-        Unit polygon normals (Newell), zero for degenerate polygons.
+        Unit polygon normals (Newell), zero for degenerate polygons; a plane's grid cells
+        have the plane's normal.
     polygon_points : (P, 3) float64
         A point of each polygon (its first vertex), for back-face tests.
     polygon_object : (P,) intp
@@ -255,9 +256,11 @@ class _Geometries:
     """The geometry of a scene's objects, for each camera in turn.
 
     Only planes depend on the camera (their grids are centred under the eye and reach as far
-    as it sees): the geometry first built is kept, and another camera's is a copy of it with
-    the planes' rows redrawn (a turntable frame of the showcase took 1.8 ms to tessellate
-    afresh). Without planes every camera shares the first. The latest camera's is kept too.
+    as it sees): the geometry first built is kept, and another camera's is a copy of its
+    vertices and polygon points with the planes' rows redrawn (a turntable frame of the
+    showcase took 1.8 ms to tessellate afresh); the rest, polygon normals included
+    (:func:`_polygon_normals`), is shared. Without planes every camera shares the first. The
+    latest camera's is kept too.
     """
 
     def __init__(self, objects: tuple, camera: Camera) -> None:
@@ -284,18 +287,15 @@ class _Geometries:
     def _with_planes(self, camera: Camera) -> SceneGeometry:
         first = self.first
         vertices = first.vertices.copy()
-        polygon_normals = first.polygon_normals.copy()
         polygon_points = first.polygon_points.copy()
         meshes = list(first.meshes)
         for plane, vertex_rows, polygon_rows, index in self.planes:
             grid = _plane_grid(plane, camera)
             vertices[vertex_rows] = grid.vertices
-            polygon_normals[polygon_rows] = grid.face_normals
             polygon_points[polygon_rows] = _first_corners(grid)
             meshes[index] = grid
         return dataclasses.replace(
-            first, vertices=vertices, polygon_normals=polygon_normals,
-            polygon_points=polygon_points, meshes=tuple(meshes),
+            first, vertices=vertices, polygon_points=polygon_points, meshes=tuple(meshes)
         )
 
 
@@ -323,7 +323,7 @@ def _build_geometry(objects: tuple, camera: Camera) -> SceneGeometry:
         normals=_stacked([m.vertex_normals for m in meshes], (0, 3)),
         triangles=_stacked([m.triangles + v for m, v, _ in pairs], (0, 3), np.intp),
         triangle_polygon=_stacked([m.triangle_face + p for m, _, p in pairs], (0,), np.intp),
-        polygon_normals=_stacked([m.face_normals for m in meshes], (0, 3)),
+        polygon_normals=_stacked(list(map(_polygon_normals, objects, meshes)), (0, 3)),
         polygon_points=_stacked([_first_corners(m) for m in meshes], (0, 3)),
         polygon_object=np.repeat(ids, polygon_counts),
         vertex_object=np.repeat(ids, vertex_counts),
@@ -359,6 +359,18 @@ def _stacked(parts: list[np.ndarray], empty: tuple[int, ...], dtype: type = np.f
     if not parts:
         return np.empty(empty, dtype=dtype)
     return np.ascontiguousarray(np.concatenate(parts), dtype=dtype)
+
+
+def _polygon_normals(obj: object, mesh: Mesh) -> np.ndarray:
+    """(F, 3) unit normal of each polygon of ``obj``'s ``mesh``.
+
+    A plane's grid cells all lie in the plane: each has the plane's normal, exactly, whatever
+    the camera the grid was fitted to (Newell's sums over cells that move with the eye differ
+    from it, and from camera to camera, in the last bits), so a new camera changes no normal.
+    """
+    if isinstance(obj, Plane):
+        return np.broadcast_to(obj.normal, (mesh.face_count, 3))
+    return mesh.face_normals
 
 
 def _first_corners(mesh: Mesh) -> np.ndarray:
