@@ -1147,6 +1147,18 @@ def test_a_fan_of_two_corners_draws_nothing(tmp_path):
         read_model(write(tmp_path, gltf))
 
 
+def test_a_file_of_nodes_alone_has_no_triangle_meshes(tmp_path):
+    """A scene of empty nodes, as Blender exports empties (trimesh's ``empty_nodes.glb``):
+    said so, not as trimesh's KeyError for the accessors such a file does not need."""
+    gltf = {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [1]}],
+            "nodes": [{"name": "child", "translation": [1, 0, 0]},
+                      {"name": "parent", "children": [0]}]}
+    path = tmp_path / "model.gltf"
+    path.write_text(json.dumps(gltf))
+    with pytest.raises(ValueError, match=r"model\.gltf: the file has no triangle meshes$"):
+        read_model(path)
+
+
 def test_indices_out_of_range_are_refused(tmp_path):
     indices = np.array([0, 1, 2, 0, 2, 99], dtype="<u2")
     with pytest.raises(ValueError, match=r"model\.gltf"):

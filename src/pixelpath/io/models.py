@@ -535,6 +535,8 @@ def _gltf_parts(resolver: Any, gltf: dict, buffers: list[bytes]) -> list[_Part]:
     from trimesh.exchange.gltf import _read_buffers
     from trimesh.visual.color import to_rgba
 
+    if not gltf.get("meshes"):  # nodes alone (Blender's empties): the reader wants accessors
+        return []
     loaded = _read_buffers(header=gltf, buffers=buffers, mesh_kwargs={}, resolver=resolver)
     geometries = loaded["geometry"]
     parent: dict[str, tuple[str, np.ndarray]] = {}
