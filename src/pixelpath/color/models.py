@@ -43,6 +43,7 @@ MODELS: dict[str, int] = {
 
 _IDENTITY = np.eye(3)
 _ZERO = np.zeros(3)
+_RUN_PIXELS = 1 << 18  # pixels a run of a threaded conversion: a 4K image is 32 runs
 
 
 class _Conversion(NamedTuple):
@@ -230,8 +231,6 @@ def _convert_in_threads(
     in_threads(convert, pixels, runs=max(thread_count(), -(-pixels // _RUN_PIXELS)))
     return any(flags)
 
-
-_RUN_PIXELS = 1 << 18  # pixels a run of a threaded conversion: a 4K image is 32 runs
 
 
 def _same_model(

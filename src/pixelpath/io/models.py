@@ -409,8 +409,7 @@ def _refuse_dropped_pictures(path: Path, resolver: Any, parts: list[_Part]) -> N
     library whatever its name (Blender writes one with no material in it), or text named as a
     picture, which trimesh drops as before.
     """
-    drawn = {getattr(getattr(getattr(part.visual, "material", None), "image", None), "info",
-                     {}).get("file_path") for part in parts}
+    drawn = {_held_picture(part) for part in parts}
     for name, data in resolver.served.items():
         if name in drawn or _is_text(data):
             continue
@@ -418,6 +417,12 @@ def _refuse_dropped_pictures(path: Path, resolver: Any, parts: list[_Part]) -> N
         if problem is not None:
             raise ValueError(f"{path}: the texture {name!r} is not a picture pixelpath can "
                              f"read ({problem})")
+
+
+def _held_picture(part: _Part) -> str | None:
+    """Return the name trimesh read the picture of ``part``'s material by (None: it has none)."""
+    image = getattr(getattr(part.visual, "material", None), "image", None)
+    return getattr(image, "info", {}).get("file_path")
 
 
 def _is_text(data: bytes) -> bool:
