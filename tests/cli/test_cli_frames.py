@@ -60,10 +60,12 @@ def test_png_level_sets_the_compression_of_frames_and_of_a_single_image(tmp_path
         assert main(["render", "showcase", "--frames", "0,1", "-o", str(tmp_path / "f{frame}.png"),
                      *SIZE, "-q", "--png-level", level]) == 0
         assert main(["render", "showcase", "-o", str(tmp_path / f"one{level}.png"), *SIZE, "-q",
-                     "--png-level", level]) == 0
+                     "--png-level", level, "--aov", "normal"]) == 0
         assert (tmp_path / f"one{level}.png").read_bytes() == (tmp_path / "f0.png").read_bytes()
-    assert len((tmp_path / "one0.png").read_bytes()) > 3 * 40 * 25  # stored, not compressed
-    assert len((tmp_path / "one9.png").read_bytes()) < 3 * 40 * 25
+    # the picture and its AOVs' PNG files alike: stored, or compressed
+    for name in ("one{}.png", "one{}.normal.png"):
+        assert len((tmp_path / name.format(0)).read_bytes()) > 3 * 40 * 25
+        assert len((tmp_path / name.format(9)).read_bytes()) < 3 * 40 * 25
 
 
 @pytest.mark.parametrize("level", ["10", "-1", "fast"])

@@ -242,7 +242,7 @@ def test_the_views_page_s_loader_example_lands_on_the_surface(tmp_path, monkeypa
     assert distance < 1e-3 * mesh.scale  # the point lies on the model's surface
 
 
-def test_png_level_sets_the_pictures_compression_and_keeps_their_pixels(tmp_path):
+def test_png_level_sets_every_pngs_compression_and_keeps_their_pixels(tmp_path):
     scene = pp.Scene(
         pp.Camera(eye=(0, 0, 5), target=(0, 0, 0), width=40, height=30),
         [pp.Sphere((0, 0, 0), 1.0)],
@@ -251,12 +251,15 @@ def test_png_level_sets_the_pictures_compression_and_keeps_their_pixels(tmp_path
     folders = {}
     for level in (0, 1, 9, None):
         folders[level] = tmp_path / f"level{level}"
-        pp.render_views(scene, 3, folders[level], "mask", png_level=level, transparent=True)
-    sizes = {level: len((folder / "images" / "view_0001.png").read_bytes())
-             for level, folder in folders.items()}
-    assert sizes[0] > 40 * 30 * 4 > sizes[1] >= sizes[9]
+        pp.render_views(scene, 3, folders[level], "normal,mask", png_level=level,
+                        transparent=True)
+    # the pictures (RGBA), and the AOVs' PNG files as well (RGB normals, 8-bit masks)
+    for name, pixel_bytes in (("images", 4), ("normals", 3), ("masks", 1)):
+        sizes = {level: len((folder / name / "view_0001.png").read_bytes())
+                 for level, folder in folders.items()}
+        assert sizes[0] > 40 * 30 * pixel_bytes > sizes[1] >= sizes[9], name
     for folder in folders.values():
-        for name in ("images/view_0002.png", "masks/view_0002.png"):
+        for name in ("images/view_0002.png", "normals/view_0002.png", "masks/view_0002.png"):
             assert np.array_equal(_pixels(folder / name), _pixels(folders[None] / name))
     assert not list(tmp_path.rglob("*.tmp"))
     with pytest.raises(ValueError, match="png_level must be an int from 0 to 9"):

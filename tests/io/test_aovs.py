@@ -2,12 +2,17 @@
 
 from __future__ import annotations
 
+import io
+
+import hypothesis.extra.numpy as hnp
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from PIL import Image as PILImage
 
 import pixelpath as pp
-from pixelpath.io.aovs import AOVS, aov_path, parse_aovs, write_aovs
+from pixelpath.io.aovs import AOVS, aov_path, encode_aov, parse_aovs, write_aovs
 
 
 def test_parse_aovs():
@@ -98,3 +103,52 @@ def test_unknown_aov_writes_nothing(tmp_path):
     with pytest.raises(ValueError, match="unknown AOV"):
         write_aovs(handmade_image(), tmp_path / "x.png", ["depth", "colour"])
     assert list(tmp_path.iterdir()) == []
+
+
+def _png_pixels(data: bytes) -> np.ndarray:
+    with PILImage.open(io.BytesIO(data)) as img:
+        return np.asarray(img)
+
+
+@pytest.mark.parametrize("aov", ["normal", "id", "alpha", "mask"])
+def test_png_level_changes_the_size_of_a_png_aov_and_not_its_pixels(aov, tmp_path):
+    # A smooth picture, as renders are: level 0 stores every byte, 9 squeezes them.
+    y, x = np.mgrid[0:24, 0:32] / 32.0
+    normal = np.stack([x - 0.5, y - 0.4, np.ones_like(x)], axis=-1)
+    normal /= np.linalg.norm(normal, axis=2, keepdims=True)
+    object_id = np.where(x + y < 1.1, 2, -1)
+    image = pp.Image(np.zeros((24, 32, 3)), object_id=object_id, alpha=(x + y) / 2,
+                     normal=normal)
+    default = encode_aov(image, aov)
+    assert encode_aov(image, aov, png_level=6) == default  # Pillow's default, Image.save's
+    stored = encode_aov(image, aov, png_level=0)
+    assert len(stored) > _png_pixels(default).nbytes > len(encode_aov(image, aov, png_level=9))
+    for level in (0, 1, 9):
+        assert np.array_equal(_png_pixels(encode_aov(image, aov, png_level=level)),
+                              _png_pixels(default))
+    written = write_aovs(image, tmp_path / "x.png", [aov], png_level=0)
+    assert written[0].read_bytes() == stored
+
+
+def test_a_bad_png_level_is_refused_for_png_aovs():
+    for bad in (10, -1, 1.5, "1"):
+        with pytest.raises(ValueError, match="png_level must be an int from 0 to 9"):
+            encode_aov(handmade_image(), "mask", png_level=bad)
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    hnp.arrays(np.float32, (5, 7, 3), elements=st.floats(-1, 1, width=32)),
+    hnp.arrays(np.bool_, (5, 7)),
+)
+def test_normal_codes_are_the_rounded_normals_where_drawn(normal, drawn):
+    # +-1, 0 and the normals whose codes fall on a half (rint rounds those to even) included
+    normal[0, 0] = (-1.0, 0.0, 1.0)
+    normal[0, 1] = (np.float32(1 / 255), np.float32(-1 / 255), np.float32(-0.0))
+    object_id = np.where(drawn, 0, -1)
+    image = pp.Image(np.zeros((5, 7, 3)), object_id=object_id, normal=normal)
+    codes = _png_pixels(encode_aov(image, "normal"))
+    expected = np.where(drawn[..., None], np.rint((normal.astype(np.float64) + 1) * 127.5), 0)
+    assert np.all(np.abs(codes.astype(np.float64) - expected) <= 1.0)
+    exact = np.rint((normal + np.float32(1.0)) * np.float32(127.5))  # the float32 arithmetic
+    assert np.array_equal(codes, np.where(drawn[..., None], exact, 0).astype(np.uint8))

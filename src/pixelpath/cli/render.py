@@ -271,14 +271,15 @@ def render_to_file(
             fresnel=getattr(args, "fresnel", False),
         )
     image, report = result if explain else (result, None)
-    if getattr(args, "png_level", None) is None:
+    png_level = getattr(args, "png_level", None)
+    if png_level is None:
         image.save(output, gamma=args.gamma, alpha=alpha)
     else:  # the bytes Image.save writes, at another level of compression
         from pixelpath.frames.work import encode
         from pixelpath.io.images import write_bytes
 
-        write_bytes(output, encode(image, output.suffix, args.gamma, alpha, args.png_level))
-    for path in write_aovs(image, output, getattr(args, "aov", ())):
+        write_bytes(output, encode(image, output.suffix, args.gamma, alpha, png_level))
+    for path in write_aovs(image, output, getattr(args, "aov", ()), png_level):
         if not args.quiet:
             console().print(f"wrote {path}")
     return image, report, time.perf_counter() - start

@@ -105,7 +105,8 @@ class ViewOutput:
     gamma : float, "srgb", "linear" or None
         Display encoding of the pictures (None: the scene's ``encoding``).
     png_level : int or None
-        zlib compression level of the pictures' PNG files (None: 6, as ``Image.save``).
+        zlib compression level of the PNG files, pictures and AOVs (None: 6, as
+        ``Image.save``).
     """
 
     folder: str
@@ -165,7 +166,7 @@ class ViewOutput:
             depth = image.depth
             np.save(buffer, np.where(np.isfinite(depth), depth, 0.0).astype(np.float32))
             return buffer.getvalue()
-        return encode_aov(image, kind)
+        return encode_aov(image, kind, self.png_level)
 
     def is_complete(self, index: int, width: int, height: int) -> bool:
         """Return True when every file of view ``index`` is on disk, whole and of the size."""
@@ -322,8 +323,9 @@ def render_views(
     gamma : float, "srgb" or "linear", optional
         Display encoding of the pictures (default: the scene's).
     png_level : int or None
-        zlib compression level of the pictures, 0 to 9 (default 1, fast, as
-        :func:`pixelpath.render_frames`); None: 6, the bytes ``Image.save`` writes.
+        zlib compression level of the PNG files, the pictures and the normals and masks, 0
+        to 9 (default 1, fast, as :func:`pixelpath.render_frames`); None: 6, the bytes
+        ``Image.save`` writes.
     resume : bool
         Keep the views already complete on disk (each file read back) and render the rest.
     overwrite : bool
