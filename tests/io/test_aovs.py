@@ -130,10 +130,14 @@ def test_png_level_changes_the_size_of_a_png_aov_and_not_its_pixels(aov, tmp_pat
     assert written[0].read_bytes() == stored
 
 
-def test_a_bad_png_level_is_refused_for_png_aovs():
+def test_a_bad_png_level_is_refused_for_every_aov(tmp_path):
     for bad in (10, -1, 1.5, "1"):
-        with pytest.raises(ValueError, match="png_level must be an int from 0 to 9"):
-            encode_aov(handmade_image(), "mask", png_level=bad)
+        for aov in AOVS:  # the depth's .npy too, as encode_image checks it for every format
+            with pytest.raises(ValueError, match="png_level must be an int from 0 to 9"):
+                encode_aov(handmade_image(), aov, png_level=bad)
+    with pytest.raises(ValueError, match="png_level"):
+        write_aovs(handmade_image(), tmp_path / "x.png", ["depth"], png_level=10)
+    assert list(tmp_path.iterdir()) == []
 
 
 @settings(max_examples=60, deadline=None)

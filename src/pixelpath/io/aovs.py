@@ -116,11 +116,12 @@ def encode_aov(image, aov: str, png_level: int | None = None) -> bytes:
 
     from pixelpath.io.images import png_level_of
 
+    # checked whatever the file, as encode_image checks it for formats that do not use it
+    options = {} if png_level is None else {"compress_level": png_level_of(png_level)}
     buffer = io.BytesIO()
     if aov == "depth":
         np.save(buffer, np.asarray(image.depth, dtype=np.float32))
         return buffer.getvalue()
-    options = {} if png_level is None else {"compress_level": png_level_of(png_level)}
     if aov == "normal":
         pixels = _normal_codes(image.normal, image.object_id >= 0)
     elif aov == "id":
