@@ -232,7 +232,6 @@ def _convert_in_threads(
     return any(flags)
 
 
-
 def _same_model(
     values: ArrayLike, model: str, out: np.ndarray | None, dtype: DTypeLike | None
 ) -> NDArray[np.floating]:

@@ -114,10 +114,9 @@ def encode_aov(image, aov: str, png_level: int | None = None) -> bytes:
     """
     from PIL import Image as PILImage
 
-    from pixelpath.io.images import png_level_of
+    from pixelpath.io.images import save_options
 
-    # checked whatever the file, as encode_image checks it for formats that do not use it
-    options = {} if png_level is None else {"compress_level": png_level_of(png_level)}
+    options = save_options("PNG", png_level)  # checked for the depth's .npy file too
     buffer = io.BytesIO()
     if aov == "depth":
         np.save(buffer, np.asarray(image.depth, dtype=np.float32))

@@ -301,7 +301,7 @@ def encode_image(
     if rgb.ndim != 3 or rgb.shape[-1] != 3:
         raise ValueError(f"rgb must have shape (H, W, 3), got {rgb.shape}")
     fmt = image_format(suffix, alpha=alpha is not None)
-    level = None if png_level is None else png_level_of(png_level)
+    options = save_options(fmt, png_level)
     pixels = to_uint8(rgb, gamma)
     if alpha is not None:
         alpha = np.asarray(alpha)
@@ -310,10 +310,25 @@ def encode_image(
                 f"alpha must have shape {rgb.shape[:2]} like the image, got {alpha.shape}"
             )
         pixels = np.dstack([pixels, to_uint8(alpha)])
-    options = {"compress_level": level} if level is not None and fmt == "PNG" else {}
     buffer = io.BytesIO()
     PILImage.fromarray(pixels).save(buffer, format=fmt, **options)
     return buffer.getvalue()
+
+
+def save_options(fmt: str, png_level: object) -> dict[str, int]:
+    """Return Pillow's ``save`` keywords for format ``fmt`` at PNG level ``png_level``.
+
+    The level is checked (:func:`png_level_of`) whatever the format, so a bad one is refused
+    before any work; only a PNG uses it, and None leaves Pillow's default (6).
+
+    Examples
+    --------
+    >>> from pixelpath.io.images import save_options
+    >>> save_options("PNG", 1), save_options("JPEG", 1), save_options("PNG", None)
+    ({'compress_level': 1}, {}, {})
+    """
+    level = None if png_level is None else png_level_of(png_level)
+    return {"compress_level": level} if level is not None and fmt == "PNG" else {}
 
 
 def png_level_of(level: object) -> int:
