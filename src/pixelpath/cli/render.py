@@ -78,6 +78,7 @@ def register(subparsers: Any) -> None:
         action="store_true",
         help="model files: frame the whole model from the front, even if the file has a camera",
     )
+    add_up_option(parser)
     parser.add_argument(
         "--transparent",
         action="store_true",
@@ -202,23 +203,41 @@ def scene_path(name: str) -> Path:
     raise FileNotFoundError(f"scene file not found: {path} (bundled scenes: {names})")
 
 
-def load_scene_sized(name: str, size: str | None, frame: bool = False) -> Any:
-    """Load the scene file (or bundled scene) and apply ``--size`` (and ``--frame``)."""
+def add_up_option(parser: argparse.ArgumentParser) -> None:
+    """Add ``--up``, a model file's up axis."""
+    parser.add_argument(
+        "--up",
+        metavar="AXIS",
+        help="model files: the file's up axis, turned to point up before framing: y (the "
+        "default, glTF's), z (most CAD and 3D-printing files), x, or --up=-z and so on",
+    )
+
+
+def load_scene_sized(
+    name: str, size: str | None, frame: bool = False, up: str | None = None
+) -> Any:
+    """Load the scene file (or bundled scene) and apply ``--size`` (and ``--frame``, ``--up``)."""
     import dataclasses
 
     from pixelpath.scene import load_scene
 
     path = scene_path(name)
     model = path.suffix.lower() in MODEL_FORMATS
-    if frame and not model:
-        raise CommandError("--frame applies to model files (.glb .gltf .obj .ply .stl)")
-    if model and (size is not None or frame):
-        from pixelpath.io.models import read_model
+    for option, given in (("--frame", frame), ("--up", up is not None)):
+        if given and not model:
+            raise CommandError(f"{option} applies to model files (.glb .gltf .obj .ply .stl)")
+    if model and (size is not None or frame or up is not None):
+        from pixelpath.io.models import read_model, up_axis
 
         sides = None if size is None else parse_size(size)
         if sides is not None and not all(1 <= side <= 16384 for side in sides):
             raise CommandError(f"--size {size}: each side must lie in 1..16384")
-        return read_model(path, size=sides, frame=frame)  # framed for this size, not cropped
+        try:
+            axis = up_axis("+y" if up is None else up)
+        except ValueError as exc:
+            raise CommandError(f"--up: {exc}") from None
+        # framed for this size, not cropped
+        return read_model(path, size=sides, frame=frame, up=axis)
     scene = load_scene(path)
     if size is not None:
         width, height = parse_size(size)
@@ -287,7 +306,7 @@ def render_to_file(
 
 def run(args: argparse.Namespace) -> int:
     """Render the scene and write the image."""
-    scene = load_scene_sized(args.scene, args.size, args.frame)
+    scene = load_scene_sized(args.scene, args.size, args.frame, args.up)
     check_figures(args)
     if args.turntable is not None:
         scene = with_turntable(scene, args.turntable)

@@ -17,6 +17,7 @@ from pixelpath.cli._frames import (
 )
 from pixelpath.cli.render import (
     add_shading_options,
+    add_up_option,
     parse_aovs_option,
     parse_size,
     scene_path,
@@ -63,6 +64,7 @@ def register(subparsers: Any) -> None:
         help="orbit: evenly round at one elevation; sphere: a Fibonacci sphere; random: "
         "seeded, uniform (sphere and random: upper hemisphere unless --full-sphere)",
     )
+    add_up_option(parser)
     parser.add_argument("--seed", type=int, default=0, help="seed of the random layout (0)")
     parser.add_argument(
         "--elevation", type=float, help="the orbit's degrees above the horizon (default 22)"
@@ -145,6 +147,7 @@ def run(args: argparse.Namespace) -> int:
         png_level=args.png_level,
         resume=args.resume,
         overwrite=args.overwrite,
+        up="+y" if args.up is None else args.up,
         options=render_options(args),
     )
     count = len(plan.todo)

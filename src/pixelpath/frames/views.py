@@ -283,6 +283,7 @@ def render_views(
     png_level: int | None = FRAMES_PNG_LEVEL,
     resume: bool = False,
     overwrite: bool = False,
+    up: str = "+y",
     progress: Callable[[int], None] | None = None,
     **options: Any,
 ) -> np.ndarray:
@@ -330,6 +331,9 @@ def render_views(
         Keep the views already complete on disk (each file read back) and render the rest.
     overwrite : bool
         Delete the folder's previous dataset (its ``view_*`` files and ``transforms.json``).
+    up : str
+        A model file's up axis, turned to point up (+Y) before the views are placed round it:
+        ``"+z"`` for most CAD and 3D-printing files (see :func:`pixelpath.load_scene`).
     progress : callable, optional
         Called with a count of views each time some are written.
     **options
@@ -377,6 +381,7 @@ def render_views(
         png_level=png_level,
         resume=resume,
         overwrite=overwrite,
+        up=up,
         options=options,
     )
     run_views(plan, client, progress)
@@ -401,6 +406,7 @@ def plan_views(
     png_level: int | None = FRAMES_PNG_LEVEL,
     resume: bool = False,
     overwrite: bool = False,
+    up: str = "+y",
     options: dict[str, Any] | None = None,
 ) -> ViewPlan:
     """Check a dataset request and return its :class:`ViewPlan`; see :func:`render_views`.
@@ -409,7 +415,7 @@ def plan_views(
     """
     if resume and overwrite:
         raise ValueError("resume and overwrite exclude each other: keep the views, or not")
-    source, scene = _scene(scene_or_path)
+    source, scene, up = _scene(scene_or_path, up)
     chosen = parse_aovs(aovs, VIEW_AOVS)
     options = render_options(options or {})
     size = _size(size, scene, source)
@@ -443,6 +449,8 @@ def plan_views(
         "transparent": output.transparent,
         "gamma": output.gamma,
         "options": {key: options[key] for key in sorted(options)},
+        # only when turned: the datasets written before up existed resume as they were
+        **({"up": up} if up != "+y" else {}),
     }
     folder = Path(output.folder)
     _check_folder(folder, request, resume=resume, overwrite=overwrite)
@@ -518,10 +526,16 @@ def _least_per_task(client: Any, views: int) -> int:
     return max(1, min(MOST_VIEWS_PER_TASK, views // (SHARES_PER_WORKER * workers)))
 
 
-def _scene(scene_or_path: Any) -> tuple[str | None, Scene]:
-    """Return (the file's name or None, the scene at frame 0)."""
+def _scene(scene_or_path: Any, up: Any) -> tuple[str | None, Scene, str]:
+    """Return (the file's name or None, the scene at frame 0, its up axis as :data:`UP_AXES`)."""
+    from pixelpath.io.models import up_axis
+
+    axis = up_axis(up)
     if isinstance(scene_or_path, Scene):
-        return None, scene_or_path.at_frame(0)
+        if axis != "+y":
+            raise ValueError(f"up={up!r} turns a model file as it is read: pass the file's "
+                             "path, or a Scene whose objects stand on +Y")
+        return None, scene_or_path.at_frame(0), axis
     if not isinstance(scene_or_path, str | os.PathLike):
         raise TypeError(
             f"scene_or_path must be a Scene or a path, got {type(scene_or_path).__name__}"
@@ -529,7 +543,7 @@ def _scene(scene_or_path: Any) -> tuple[str | None, Scene]:
     from pixelpath.scene import load_scene
 
     path = Path(scene_or_path)
-    return path.name, load_scene(path).at_frame(0)
+    return path.name, load_scene(path, up=axis).at_frame(0), axis
 
 
 def _size(size: Any, scene: Scene, source: str | None) -> tuple[int, int]:

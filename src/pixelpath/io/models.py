@@ -55,6 +55,9 @@ What a model file gives (:func:`read_model`)
   Otherwise :func:`framing_camera`: the model seen from the front (+Z, glTF's front) and
   22 degrees above, at the distance where the corners of its bounding box fill 90 % of the
   picture, near and far from its bounding sphere.
+- **Up axis**: +Y, glTF's. ``read_model(path, up="+z")`` turns a file that stands on another
+  axis (most CAD and 3D-printing files stand on +Z) so that it stands on +Y, its parts, camera
+  and lights alike (:func:`up_turn`); nothing is guessed.
 - **Lights**: glTF ``KHR_lights_punctual`` lights: ``point`` (and ``spot``, drawn as a point
   light) become :class:`~pixelpath.scene.PointLight`, ``directional`` become
   :class:`~pixelpath.scene.DirectionalLight` along the node's -Z axis. pixelpath's lights
@@ -216,12 +219,15 @@ from pixelpath.scene.texture import MAX_SIDE, Texture, srgb_to_linear, wide_grey
 
 __all__ = [
     "MODEL_FORMATS",
+    "UP_AXES",
     "depth_range",
     "framing_camera",
     "framing_distance",
     "light_rig",
     "read_model",
     "read_model_objects",
+    "up_axis",
+    "up_turn",
 ]
 
 DEFAULT_SIZE = (800, 600)
@@ -249,7 +255,8 @@ _NUMBER_WORD = re.compile(r"[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?")
 
 
 def read_model(
-    path: str | Path, *, size: tuple[int, int] | None = None, frame: bool = False
+    path: str | Path, *, size: tuple[int, int] | None = None, frame: bool = False,
+    up: str = "+y",
 ) -> Scene:
     """Read a model file into a Scene: its parts, camera and lights, or good defaults.
 
@@ -265,6 +272,12 @@ def read_model(
         aspect ratio at a height of 600).
     frame : bool
         Frame the model with :func:`framing_camera` even when the file has a camera.
+    up : str
+        The file's up axis: ``"+y"`` (the default: glTF's, and most OBJ and PLY files'),
+        ``"+z"`` (most CAD and 3D-printing files), ``"+x"``, ``"-x"``, ``"-y"`` or ``"-z"``
+        (``"z"`` for ``"+z"``, and so on). The model is turned so that this axis points up
+        (+Y) before it is framed; see :func:`up_turn` for where its front ends up. A file's
+        own camera and lights turn with it.
 
     Returns
     -------
@@ -285,12 +298,16 @@ def read_model(
     >>> scene = read_model("Duck.glb")  # doctest: +SKIP
     >>> [obj.name for obj in scene.objects]  # doctest: +SKIP
     ['LOD3spShape']
+    >>> part = read_model("bracket.stl", up="z")  # doctest: +SKIP
     """
-    return _model_scene(_model_path(path), size, frame)
+    return _model_scene(_model_path(path), size, frame, up)
 
 
-def _model_scene(path: Path, size: tuple[int, int] | None = None, frame: bool = False) -> Scene:
+def _model_scene(
+    path: Path, size: tuple[int, int] | None = None, frame: bool = False, up: str = "+y"
+) -> Scene:
     """:func:`read_model` of a ``path`` already checked (an existing file of a model format)."""
+    axis = up_axis(up)  # a bad value is refused before the file is read
     objects, gltf = _read_objects(path)
     bounds = _bounds_of(objects)
     try:
@@ -298,9 +315,83 @@ def _model_scene(path: Path, size: tuple[int, int] | None = None, frame: bool = 
         lights = _file_lights(gltf, bounds) if gltf else []
     except (TypeError, ValueError, KeyError, AttributeError, IndexError) as exc:
         raise ValueError(f"{path}: a glTF camera or light is not valid ({exc})") from None
+    if axis != "+y":
+        objects, camera, lights = _turned(up_turn(axis), objects, camera, lights)
+        bounds = _bounds_of(objects)
     camera = camera or framing_camera(bounds, size or DEFAULT_SIZE)
     lights = lights or light_rig(camera)
     return Scene(camera, objects, lights, ambient=AMBIENT, encoding="srgb")
+
+
+UP_AXES = ("+y", "+z", "+x", "-y", "-z", "-x")
+# The rotation taking each up axis to +Y (rows: the new x, y and z). A Z-up file's front,
+# which faces -Y (as CAD programs and Blender show it), comes to face +Z, where the framing
+# camera stands; an X-up file's +Z side stays in front, and a -Y-up file is turned about Z.
+# Each row is one axis, signed: the turned coordinates are the file's, exactly.
+_UP_TURNS = {
+    "+y": ((1, 0, 0), (0, 1, 0), (0, 0, 1)),
+    "+z": ((1, 0, 0), (0, 0, 1), (0, -1, 0)),
+    "+x": ((0, -1, 0), (1, 0, 0), (0, 0, 1)),
+    "-y": ((-1, 0, 0), (0, -1, 0), (0, 0, 1)),
+    "-z": ((1, 0, 0), (0, 0, -1), (0, 1, 0)),
+    "-x": ((0, 1, 0), (-1, 0, 0), (0, 0, 1)),
+}
+
+
+def up_axis(up: Any) -> str:
+    """Return ``up`` as one of :data:`UP_AXES` (``"z"`` is ``"+z"``), or raise.
+
+    Examples
+    --------
+    >>> from pixelpath.io.models import up_axis
+    >>> up_axis("z"), up_axis("-X")
+    ('+z', '-x')
+    """
+    if not isinstance(up, str):
+        raise TypeError(f"up must be a str such as '+z', got {type(up).__name__}")
+    axis = up.strip().lower()
+    axis = axis if axis[:1] in ("+", "-") else f"+{axis}"
+    if axis not in _UP_TURNS:
+        raise ValueError(f"up must be one of {', '.join(UP_AXES)} (or x, y, z), got {up!r}")
+    return axis
+
+
+def up_turn(up: str) -> np.ndarray:
+    """Return the (4, 4) rotation that turns a model whose up axis is ``up`` to stand on +Y.
+
+    A proper rotation (no mirror) whose entries are 0 and ±1, so turned coordinates are the
+    file's own, reordered and negated. For ``"+z"``, (x, y, z) becomes (x, z, -y): the model's
+    top faces up and its front (-Y, as CAD programs show it) faces +Z, the framing camera.
+
+    Examples
+    --------
+    >>> from pixelpath.io.models import up_turn
+    >>> (up_turn("z") @ [1.0, 2.0, 3.0, 1.0]).tolist()
+    [1.0, 3.0, -2.0, 1.0]
+    """
+    turn = np.eye(4)
+    turn[:3, :3] = _UP_TURNS[up_axis(up)]
+    return turn
+
+
+def _turned(
+    turn: np.ndarray, objects: list[Mesh], camera: Camera | None,
+    lights: list[PointLight | DirectionalLight],
+) -> tuple[list[Mesh], Camera | None, list[PointLight | DirectionalLight]]:
+    """Return the parts, the file's camera (or None) and its lights under ``turn``."""
+    import dataclasses
+
+    rotation = turn[:3, :3]
+    if camera is not None:
+        camera = dataclasses.replace(camera, eye=rotation @ camera.eye,
+                                     target=rotation @ camera.target, up=rotation @ camera.up)
+    lights = [
+        dataclasses.replace(light, direction=rotation @ light.direction)
+        if isinstance(light, DirectionalLight)
+        else dataclasses.replace(light, position=rotation @ light.position)
+        for light in lights
+    ]
+    return [mesh.transformed(turn) for mesh in objects], camera, lights
 
 
 def read_model_objects(path: str | Path, material: Material | None = None) -> list[Mesh]:

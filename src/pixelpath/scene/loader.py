@@ -63,7 +63,7 @@ MODEL_FORMATS = (".glb", ".gltf", ".obj", ".ply", ".stl")
 KeyPath = tuple[str | int, ...]
 
 
-def load_scene(path: str | Path) -> Scene:
+def load_scene(path: str | Path, *, up: str = "+y") -> Scene:
     r"""Read a TOML scene file (mesh paths in it are relative to its folder) or a model file.
 
     Parameters
@@ -72,6 +72,11 @@ def load_scene(path: str | Path) -> Scene:
         The ``.toml`` scene file, or a ``.glb``, ``.gltf``, ``.obj``, ``.ply`` or ``.stl``
         model file, read by :func:`pixelpath.io.models.read_model` (its parts, camera and
         lights, or a camera framing it and a light rig).
+    up : str
+        A model file's up axis (``"+y"``, ``"+z"``, ... see
+        :func:`~pixelpath.io.models.read_model`): ``"z"`` for most CAD and 3D-printing
+        files, which otherwise show their top to the camera. Scene files say where things
+        are themselves: for them only ``"+y"`` is accepted.
 
     Returns
     -------
@@ -105,7 +110,10 @@ def load_scene(path: str | Path) -> Scene:
     if path.suffix.lower() in MODEL_FORMATS:
         from pixelpath.io.models import _model_scene  # it builds on this package: import late
 
-        return _model_scene(path)  # read_model without checking the path a second time
+        return _model_scene(path, up=up)  # read_model without checking the path again
+    if up not in ("+y", "y"):
+        raise ValueError(f"{path}: up={up!r} applies to model files ({', '.join(MODEL_FORMATS)})"
+                         "; a scene file places its objects itself")
     try:
         text = path.read_text(encoding="utf-8")
     except UnicodeDecodeError as exc:
