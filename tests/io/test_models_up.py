@@ -109,6 +109,9 @@ def test_bad_up_axes_are_refused_before_the_file_is_read(block, tmp_path):
         scene = tmp_path / "s.toml"
         scene.write_text('[camera]\neye = [0, 0, 5]\ntarget = [0, 0, 0]\n')
         pp.load_scene(scene, up="z")
+    with pytest.raises(TypeError, match="up must be a str"):
+        pp.load_scene(scene, up=None)
+    assert pp.load_scene(scene, up="Y") == pp.load_scene(scene)
     assert pp.load_scene(block, up="y") == pp.load_scene(block)
 
 

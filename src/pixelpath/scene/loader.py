@@ -111,9 +111,13 @@ def load_scene(path: str | Path, *, up: str = "+y") -> Scene:
         from pixelpath.io.models import _model_scene  # it builds on this package: import late
 
         return _model_scene(path, up=up)  # read_model without checking the path again
-    if up not in ("+y", "y"):
-        raise ValueError(f"{path}: up={up!r} applies to model files ({', '.join(MODEL_FORMATS)})"
-                         "; a scene file places its objects itself")
+    if up != "+y":  # checked as for a model file, then refused unless it names +Y
+        from pixelpath.io.models import up_axis
+
+        if up_axis(up) != "+y":
+            raise ValueError(f"{path}: up={up!r} applies to model files "
+                             f"({', '.join(MODEL_FORMATS)}); a scene file places its objects "
+                             "itself")
     try:
         text = path.read_text(encoding="utf-8")
     except UnicodeDecodeError as exc:
