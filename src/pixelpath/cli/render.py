@@ -207,10 +207,21 @@ def add_up_option(parser: argparse.ArgumentParser) -> None:
     """Add ``--up``, a model file's up axis."""
     parser.add_argument(
         "--up",
+        type=parse_up_option,
         metavar="AXIS",
         help="model files: the file's up axis, turned to point up before framing: y (the "
         "default, glTF's), z (most CAD and 3D-printing files), x, or --up=-z and so on",
     )
+
+
+def parse_up_option(text: str) -> str:
+    """Return ``--up`` as an axis of :data:`~pixelpath.io.models.UP_AXES` (a usage error if not)."""
+    from pixelpath.io.models import up_axis
+
+    try:
+        return up_axis(text)
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
 
 
 def load_scene_sized(
@@ -227,17 +238,13 @@ def load_scene_sized(
         if given and not model:
             raise CommandError(f"{option} applies to model files (.glb .gltf .obj .ply .stl)")
     if model and (size is not None or frame or up is not None):
-        from pixelpath.io.models import read_model, up_axis
+        from pixelpath.io.models import read_model
 
         sides = None if size is None else parse_size(size)
         if sides is not None and not all(1 <= side <= 16384 for side in sides):
             raise CommandError(f"--size {size}: each side must lie in 1..16384")
-        try:
-            axis = up_axis("+y" if up is None else up)
-        except ValueError as exc:
-            raise CommandError(f"--up: {exc}") from None
         # framed for this size, not cropped
-        return read_model(path, size=sides, frame=frame, up=axis)
+        return read_model(path, size=sides, frame=frame, up="+y" if up is None else up)
     scene = load_scene(path)
     if size is not None:
         width, height = parse_size(size)

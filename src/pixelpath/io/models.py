@@ -190,6 +190,7 @@ from __future__ import annotations
 
 import base64
 import binascii
+import dataclasses
 import functools
 import importlib.util
 import io
@@ -316,8 +317,9 @@ def _model_scene(
     except (TypeError, ValueError, KeyError, AttributeError, IndexError) as exc:
         raise ValueError(f"{path}: a glTF camera or light is not valid ({exc})") from None
     if axis != "+y":
-        objects, camera, lights = _turned(up_turn(axis), objects, camera, lights)
-        bounds = _bounds_of(objects)
+        turn = up_turn(axis)
+        objects, camera, lights = _turned(turn, objects, camera, lights)
+        bounds = np.sort(bounds @ turn[:3, :3].T, axis=0)  # the same box, its corners turned
     camera = camera or framing_camera(bounds, size or DEFAULT_SIZE)
     lights = lights or light_rig(camera)
     return Scene(camera, objects, lights, ambient=AMBIENT, encoding="srgb")
@@ -379,8 +381,6 @@ def _turned(
     lights: list[PointLight | DirectionalLight],
 ) -> tuple[list[Mesh], Camera | None, list[PointLight | DirectionalLight]]:
     """Return the parts, the file's camera (or None) and its lights under ``turn``."""
-    import dataclasses
-
     rotation = turn[:3, :3]
     if camera is not None:
         camera = dataclasses.replace(camera, eye=rotation @ camera.eye,
