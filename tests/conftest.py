@@ -29,3 +29,15 @@ def shared_mesh():
         return path
 
     return find
+
+
+@pytest.fixture
+def block(tmp_path) -> Path:
+    """An STL block 1 wide (x), 2 deep (y) and 4 tall (z), centred on (3, -5, 2): a Z-up part."""
+    import trimesh
+
+    box = trimesh.creation.box(extents=(1.0, 2.0, 4.0))
+    box.apply_translation((3.0, -5.0, 2.0))
+    path = tmp_path / "block.stl"
+    box.export(path)
+    return path

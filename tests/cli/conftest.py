@@ -12,3 +12,4 @@ def scene_file(tmp_path):
     path = tmp_path / "scene.toml"
     path.write_text(SCENE)
     return path
+

@@ -110,3 +110,13 @@ def test_empty_scene_has_no_bounds(tmp_path, capsys):
     assert main(["info", str(path), "--json"]) == 0
     totals = json.loads(capsys.readouterr().out)["totals"]
     assert totals == {"objects": 0, "faces": 0, "triangles": 0, "lights": 0, "bounds": None}
+
+
+def test_a_model_file_is_summarized_as_render_reads_it(block, capsys):
+    assert main(["info", str(block), "--up", "z", "--json"]) == 0
+    summary = json.loads(capsys.readouterr().out)
+    # the block spans x 2.5..3.5, y -6..-4, z 0..4; stood up, (x, y, z) goes to (x, z, -y)
+    assert summary["totals"]["bounds"] == [[2.5, 0.0, 4.0], [3.5, 4.0, 6.0]]
+    assert summary["camera"]["target"] == [3.0, 2.0, 5.0]
+    assert main(["info", "showcase", "--frame"]) == 2
+    assert "--frame applies to model files" in capsys.readouterr().err

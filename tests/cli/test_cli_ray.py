@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import textwrap
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -10,7 +11,10 @@ import pytest
 import pixelpath as pp
 from pixelpath.cli import main
 from pixelpath.io import read_image
+from pixelpath.io.models import read_model
 from pixelpath.renderer import METHOD_NAMES
+
+DUCK = Path(__file__).resolve().parents[1] / "data" / "models" / "Duck.glb"
 
 SCENE = textwrap.dedent(
     """\
@@ -68,6 +72,25 @@ def test_ray_without_explain_prints_one_line_matching_the_render(scene_file, tmp
     assert main(["render", str(scene_file), "-o", str(output), "--method", "raytrace", "-q"]) == 0
     expected = pp.render(pp.load_scene(scene_file), "raytrace")
     assert np.array_equal(read_image(output), expected.to_uint8() / np.float32(255))
+
+
+@pytest.mark.parametrize(
+    ("model", "options", "read"),
+    [
+        ("block", ["--up", "z"], {"up": "z"}),  # a Z-up part stood up
+        ("duck", ["--frame"], {"frame": True}),  # framed in place of the file's own camera
+    ],
+)
+def test_ray_reads_a_model_file_as_render_does(block, capsys, model, options, read):
+    path = {"block": block, "duck": DUCK}[model]
+    assert main(["ray", str(path), "--size", "32x24", "--pixel", "16,12", *options]) == 0
+    line = capsys.readouterr().out
+    image = pp.render(read_model(path, size=(32, 24), **read), "raytrace")
+    assert image.object_id[12, 16] == 0
+    assert f"object 0 at depth {image.depth[12, 16]:.6g};" in line
+    # the option changed what the pixel sees: without it the ray ends elsewhere
+    plain = pp.render(read_model(path, size=(32, 24)), "raytrace")
+    assert f"{plain.depth[12, 16]:.6g}" != f"{image.depth[12, 16]:.6g}"
 
 
 def test_render_passes_samples_and_max_depth(scene_file, tmp_path):

@@ -9,7 +9,6 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-import trimesh
 from PIL import Image
 
 import pixelpath as pp
@@ -27,16 +26,6 @@ EXPECTED = {
     "-z": lambda x, y, z: (x, -z, y),
     "-x": lambda x, y, z: (y, -x, z),
 }
-
-
-@pytest.fixture
-def block(tmp_path) -> Path:
-    """An STL block 1 wide (x), 2 deep (y) and 4 tall (z), off the origin: a Z-up part."""
-    box = trimesh.creation.box(extents=(1.0, 2.0, 4.0))
-    box.apply_translation((3.0, -5.0, 2.0))
-    path = tmp_path / "block.stl"
-    box.export(path)
-    return path
 
 
 @pytest.mark.parametrize("up", UP_AXES)

@@ -4,10 +4,10 @@ from __future__ import annotations
 
 import argparse
 import json
-from pathlib import Path
 from typing import Any
 
 from pixelpath.cli._common import add_command, console
+from pixelpath.cli.render import add_model_options, load_scene_sized, scene_path
 
 
 def register(subparsers: Any) -> None:
@@ -22,24 +22,25 @@ def register(subparsers: Any) -> None:
             "camera and the totals. SCENE may also name a model file (glTF/GLB, OBJ+MTL, PLY, "
             "STL: its parts, named after their nodes) or a bundled demo scene."
         ),
-        examples=["pixelpath info scene.toml", "pixelpath info Duck.glb --json"],
+        examples=[
+            "pixelpath info scene.toml",
+            "pixelpath info Duck.glb --json",
+            "pixelpath info part.stl --up z  # the bounds and camera of the turned part",
+        ],
         run=run,
     )
     parser.add_argument(
         "scene",
         help="a .toml scene file, a model file (.glb .gltf .obj .ply .stl) or a bundled scene",
     )
+    add_model_options(parser)
     parser.add_argument("--json", action="store_true", help="print the summary as JSON")
 
 
 def run(args: argparse.Namespace) -> int:
     """Load the scene and print its summary."""
-    from pixelpath.scene import bundled_scenes, load_scene
-
-    path = Path(args.scene)
-    if not path.exists() and args.scene in bundled_scenes():
-        path = bundled_scenes()[args.scene]
-    summary = summarize(load_scene(path), str(path))
+    path = scene_path(args.scene)
+    summary = summarize(load_scene_sized(str(path), None, args.frame, args.up), str(path))
     if args.json:
         print(json.dumps(summary, indent=2))
     else:

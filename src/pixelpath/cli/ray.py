@@ -6,6 +6,7 @@ import argparse
 from typing import Any
 
 from pixelpath.cli._common import CommandError, add_command, console, error_console
+from pixelpath.cli.render import add_model_options
 from pixelpath.raster.shading import SHADINGS
 
 
@@ -30,6 +31,7 @@ def register(subparsers: Any) -> None:
             "pixelpath ray showcase --pixel 300,180 --max-depth 2 --explain",
             "pixelpath ray showcase --pixel 10,10 --size 64x40",
             "pixelpath ray showcase --pixel 272,256 --figure tree.png",
+            "pixelpath ray part.stl --up z --size 320x240 --pixel 160,120 --explain",
         ],
         run=run,
     )
@@ -39,6 +41,7 @@ def register(subparsers: Any) -> None:
     )
     parser.add_argument("--pixel", required=True, help="X,Y: column and row (row 0 at the top)")
     parser.add_argument("--size", help="image size WIDTHxHEIGHT (default: the scene camera's)")
+    add_model_options(parser)
     parser.add_argument(
         "--shading", default="phong", choices=[s for s in SHADINGS if s != "gouraud"]
     )
@@ -76,7 +79,7 @@ def run(args: argparse.Namespace) -> int:
     from pixelpath.cli.render import load_scene_sized
     from pixelpath.raytrace import ray_tree
 
-    scene = load_scene_sized(args.scene, args.size)
+    scene = load_scene_sized(args.scene, args.size, args.frame, args.up)
     tree = ray_tree(
         scene,
         parse_pixel(args.pixel),

@@ -73,12 +73,7 @@ def register(subparsers: Any) -> None:
         help="filled surfaces, every edge (wireframe) or only the visible edges (hidden-line)",
     )
     parser.add_argument("--size", help="image size WIDTHxHEIGHT (default: the scene camera's)")
-    parser.add_argument(
-        "--frame",
-        action="store_true",
-        help="model files: frame the whole model from the front, even if the file has a camera",
-    )
-    add_up_option(parser)
+    add_model_options(parser)
     parser.add_argument(
         "--transparent",
         action="store_true",
@@ -201,6 +196,20 @@ def scene_path(name: str) -> Path:
         return bundled[name]
     names = ", ".join(bundled) or "none"
     raise FileNotFoundError(f"scene file not found: {path} (bundled scenes: {names})")
+
+
+def add_model_options(parser: argparse.ArgumentParser) -> None:
+    """Add ``--frame`` and ``--up``, which say how a model file is read and framed.
+
+    ``render``, ``ray`` and ``info`` take both, so that one pixel of a picture can be traced,
+    and its camera printed, from the scene the picture was rendered from.
+    """
+    parser.add_argument(
+        "--frame",
+        action="store_true",
+        help="model files: frame the whole model from the front, even if the file has a camera",
+    )
+    add_up_option(parser)
 
 
 def add_up_option(parser: argparse.ArgumentParser) -> None:
