@@ -6,7 +6,7 @@ import argparse
 from typing import Any
 
 from pixelpath.cli._common import CommandError, add_command, console, error_console
-from pixelpath.cli.render import add_model_options
+from pixelpath.cli.render import add_model_options, load_scene_sized
 from pixelpath.raster.shading import SHADINGS
 
 
@@ -76,7 +76,6 @@ def parse_pixel(text: str) -> tuple[int, int]:
 
 def run(args: argparse.Namespace) -> int:
     """Trace the pixel and print what it found."""
-    from pixelpath.cli.render import load_scene_sized
     from pixelpath.raytrace import ray_tree
 
     scene = load_scene_sized(args.scene, args.size, args.frame, args.up)
