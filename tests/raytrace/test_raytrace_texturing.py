@@ -82,3 +82,28 @@ def test_explained_terms_use_the_textured_colour():
     parts = node.ambient + sum(light.diffuse + light.specular for light in node.lights)
     np.testing.assert_allclose(parts, node.local, atol=1e-9)
     assert node.local[2] < 0.5 * node.local[0]  # yellow, as the texture is: not grey
+
+
+def test_the_tree_names_the_surface_colour_texture_and_vertex_colours_make():
+    from pixelpath.raytrace import ray_tree
+
+    def decoded(code):  # the sRGB curve (IEC 61966-2-1), worked here
+        c = code / 255
+        return c / 12.92 if c <= 0.04045 else ((c + 0.055) / 1.055) ** 2.4
+
+    corners = [[-1, -1, 0], [1, -1, 0], [1, 1, 0], [-1, 1, 0]]
+    texture = np.full((2, 2, 3), (128, 64, 255), np.uint8)  # one colour: no filtering question
+    material = pp.Material(color=(0.5, 1.0, 1.0), texture=texture, texture_filter="nearest")
+    quad = pp.Mesh(corners, [[0, 1, 2, 3]], material, uv=[[0, 0], [1, 0], [1, 1], [0, 1]],
+                   colors=[[1.0, 0.5, 1.0]] * 4)
+    camera = pp.Camera(eye=(0, 0, 3), target=(0, 0, 0), width=8, height=8)
+    tree = ray_tree(pp.Scene(camera, objects=[quad]), (4, 4), max_depth=0)
+    expected = [0.5 * decoded(128), decoded(64) * 0.5, 1.0]  # material × texture × vertex
+    np.testing.assert_allclose(tree.root.surface, expected, rtol=1e-9)
+    shown = ", ".join(f"{c:.4g}" for c in expected)
+    assert (f"surface colour C = ({shown}): the material's (0.5, 1, 1) × the texture at the "
+            "hit's texture coordinates × the vertex colours there") in str(tree)
+    plain = pp.Mesh(corners, [[0, 1, 2, 3]], pp.Material(color=(0.5, 1.0, 1.0)))
+    tree = ray_tree(pp.Scene(camera, objects=[plain]), (4, 4), max_depth=0)
+    assert tree.root.surface.tolist() == [0.5, 1.0, 1.0]
+    assert "surface colour" not in str(tree)  # the material's colour, which the terms show

@@ -117,6 +117,9 @@ class RayNode:
         The child rays (None where not traced: depth, weight, or a zero coefficient).
     sample : int
         Which sample of the pixel this tree belongs to.
+    surface : (3,) ndarray or None
+        C, the surface colour at the hit: the material's colour times its texture and vertex
+        colours there (the material's colour alone on a plain surface); None on a miss.
     """
 
     kind: str
@@ -141,6 +144,7 @@ class RayNode:
     reflected: RayNode | None
     refracted: RayNode | None
     sample: int
+    surface: np.ndarray | None = None
 
     @property
     def hit(self) -> bool:
@@ -363,11 +367,12 @@ def _node(scene, world, settings, record, light_records, children) -> RayNode:
     ambient = np.zeros(3)
     lights: tuple[LightTest, ...] = ()
     quadratic = None
+    surface = record[rec.COLOR : rec.COLOR + 3].copy() if hit else None
     if hit:
         # the material with the surface colour C the tracer used at the hit (its texture and
         # vertex colours included)
         material = world.materials[obj].copy()
-        material[:3] = record[rec.COLOR : rec.COLOR + 3]
+        material[:3] = surface
         ambient = material[3] * world.ambient * material[:3]
         lights = tuple(
             _light_test(world, settings, material, k, point, normal, origin, light_records[k])
@@ -399,6 +404,7 @@ def _node(scene, world, settings, record, light_records, children) -> RayNode:
         reflected=children.get("reflected"),
         refracted=children.get("refracted"),
         sample=int(record[rec.SAMPLE]),
+        surface=surface,
     )
 
 
@@ -472,6 +478,17 @@ def _object_name(scene: Scene, index: int) -> str:
     return f"object {index} ({label}{', material ' + repr(name) if name else ''})"
 
 
+def _colouring(obj: Any) -> str:
+    """Say what colours ``obj``'s surface beyond its material ("" when nothing does)."""
+    uv, colors = getattr(obj, "uv", None), getattr(obj, "colors", None)
+    parts = []
+    if uv is not None and obj.material.texture is not None:
+        parts.append("the texture at the hit's texture coordinates")
+    if colors is not None:
+        parts.append("the vertex colours there")
+    return " × ".join(parts)
+
+
 def _describe_tree(tree: RayTree) -> list[str]:
     camera = tree.scene.camera
     x, y = tree.pixel
@@ -510,6 +527,10 @@ def _describe_node(scene: Scene, node: RayNode, indent: str) -> list[str]:
         lines.append(f"{pad}  ray-plane: t = n·(Q − P0) / (n·d) = {node.t:.6g}")
     side = "outside" if node.entering else "inside or back"
     lines.append(f"{pad}P = {_v(node.point)}, N = {_v(node.normal)} (seen from the {side})")
+    colouring = _colouring(scene.objects[node.object])
+    if colouring:  # a plain surface's C is its material's colour, which the terms show
+        lines.append(f"{pad}surface colour C = {_v(node.surface)}: the material's "
+                     f"{_v(scene.objects[node.object].material.color)} × {colouring}")
     lines.append(f"{pad}ambient ka·Ia·C = {_v(node.ambient)}")
     for test in node.lights:
         label = f"{pad}light {test.light}: L = {_v(test.to_light)}, N·L = {test.n_dot_l:.4g}"
