@@ -527,10 +527,12 @@ def _describe_node(scene: Scene, node: RayNode, indent: str) -> list[str]:
         lines.append(f"{pad}  ray-plane: t = n·(Q − P0) / (n·d) = {node.t:.6g}")
     side = "outside" if node.entering else "inside or back"
     lines.append(f"{pad}P = {_v(node.point)}, N = {_v(node.normal)} (seen from the {side})")
-    colouring = _colouring(scene.objects[node.object])
+    hit = scene.objects[node.object]
+    material = hit.material
+    colouring = _colouring(hit)
     if colouring:  # a plain surface's C is its material's colour, which the terms show
         lines.append(f"{pad}surface colour C = {_v(node.surface)}: the material's "
-                     f"{_v(scene.objects[node.object].material.color)} × {colouring}")
+                     f"{_v(material.color)} × {colouring}")
     lines.append(f"{pad}ambient ka·Ia·C = {_v(node.ambient)}")
     for test in node.lights:
         label = f"{pad}light {test.light}: L = {_v(test.to_light)}, N·L = {test.n_dot_l:.4g}"
@@ -545,8 +547,6 @@ def _describe_node(scene: Scene, node: RayNode, indent: str) -> list[str]:
                 f"{label}; shadow ray {shade}: diffuse {_v(test.diffuse)}, "
                 f"specular {_v(test.specular)}"
             )
-    hit = scene.objects[node.object]
-    material = hit.material
     if material.emits:
         scaled = (" × the emission texture there"
                   if material.emission_texture is not None and getattr(hit, "uv", None) is not None
