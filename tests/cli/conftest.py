@@ -12,4 +12,3 @@ def scene_file(tmp_path):
     path = tmp_path / "scene.toml"
     path.write_text(SCENE)
     return path
-
