@@ -407,6 +407,20 @@ def band_buffers(width: int) -> Visibility:
     return buffers
 
 
+def shading_batch(width: int):
+    """Return the calling thread's work arrays of the shading pass, for rows ``width`` wide.
+
+    Kept per thread and reused frame after frame, as :func:`band_buffers` are
+    (:func:`pixelpath.raster._kernels.new_batch`).
+    """
+    from pixelpath.raster._kernels import new_batch
+
+    batch = getattr(_SCRATCH, "batch", None)
+    if batch is None or batch.row_colors.shape[0] != width:
+        batch = _SCRATCH.batch = new_batch(width)
+    return batch
+
+
 def surfaces(prepared: Prepared, scene: Scene, view: View):
     """Return what the shading kernels read, as their ``Surfaces`` record."""
     from pixelpath.raster import _kernels
@@ -467,7 +481,7 @@ def shade(
     def shade_run(run: np.ndarray) -> None:
         _kernels.shade_bands(
             run, _scan_kernels.BAND_ROWS, view.x0, view.y0, *visibility, kernel_surfaces,
-            colour_tables, out,
+            colour_tables, shading_batch(view.width), out,
         )
 
     for start, stop in runs:

@@ -78,7 +78,8 @@ def render_frame(scene: Scene, view: View, options: RenderOptions) -> Frame:
         buffers = visibility or pipeline.band_buffers(view.width)
         _kernels.render_bands(
             run, prepared.setup, prepared.rows, offsets, items, _scan_kernels.BAND_ROWS, view.x0,
-            view.y0, *buffers, cutouts, surfaces, colour_tables, out,
+            view.y0, *buffers, cutouts, surfaces, colour_tables,
+            pipeline.shading_batch(view.width), out,
         )
 
     for start, stop in runs:

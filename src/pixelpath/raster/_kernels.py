@@ -229,8 +229,19 @@ def _clamp01(value):
     return min(max(value, 0.0), 1.0)
 
 
-@njit
-def _new_batch(width):
+def new_batch(width: int) -> PhongBatch:
+    """Return the work arrays of a shading pass's rows ``width`` pixels wide (:class:`PhongBatch`).
+
+    Allocated in Python and handed to the passes, which reuse them row after row: built by a
+    compiled function, they cost every cold first render a third of a second of compiling on
+    its longest path (``docs/performance.md``), and a call per band.
+
+    Examples
+    --------
+    >>> from pixelpath.raster._kernels import new_batch
+    >>> new_batch(640).row_colors.shape
+    (640, 3)
+    """
     return PhongBatch(
         np.empty((3, SHADE_BATCH)),
         np.empty((3, SHADE_BATCH)),
@@ -252,16 +263,17 @@ def _new_batch(width):
 
 @njit
 def render_bands(bands, setup, rows, offsets, items, band_rows, x0, y0, inv_depth, triangle_id,
-                 cutouts, surfaces, colour_tables, out):
+                 cutouts, surfaces, colour_tables, batch, out):
     """Rasterize the listed bands of rows with the depth test, then shade them (the z-buffer).
 
     One pass per band: its depth and triangle buffers are still in cache when it is shaded.
     ``inv_depth`` and ``triangle_id`` are the region's visibility buffers (h, w), left filled
     for whatever reads them afterwards, or one band's (``band_rows``, w), which every band
     reuses: those stay in cache, and a frame's 12 bytes a pixel of them never reach memory.
-    ``cutouts`` and ``colour_tables`` are None for a plain scene (:func:`looks_up`).
-    Serial, and called on runs of the band list from several threads at once (it releases
-    the GIL): a ``parallel=True`` loop cost seconds more to compile on a first run.
+    ``cutouts`` and ``colour_tables`` are None for a plain scene (:func:`looks_up`);
+    ``batch`` is the calling thread's work arrays (:func:`new_batch`). Serial, and called on
+    runs of the band list from several threads at once (it releases the GIL): a
+    ``parallel=True`` loop cost seconds more to compile on a first run.
     """
     height = out.depth.shape[0]
     for k in range(bands.shape[0]):
@@ -272,7 +284,6 @@ def render_bands(bands, setup, rows, offsets, items, band_rows, x0, y0, inv_dept
             setup, rows, offsets, items, band, first, stop, x0, top, inv_depth, triangle_id,
             cutouts,
         )
-        batch = _new_batch(inv_depth.shape[1])
         for j in range(first, stop):
             if colour_tables is not None:  # a branch Numba prunes, with the lookups, for None
                 _row_surface_colors(j, x0, triangle_id[j - top], surfaces, batch)
@@ -280,7 +291,8 @@ def render_bands(bands, setup, rows, offsets, items, band_rows, x0, y0, inv_dept
 
 
 @njit
-def shade_bands(bands, band_rows, x0, y0, inv_depth, triangle_id, surfaces, colour_tables, out):
+def shade_bands(bands, band_rows, x0, y0, inv_depth, triangle_id, surfaces, colour_tables, batch,
+                out):
     """Shade the listed bands from visibility buffers a hidden-surface method filled.
 
     ``inv_depth`` (h, w) holds 1/w of the visible surface (0 where nothing is drawn) and
@@ -292,7 +304,6 @@ def shade_bands(bands, band_rows, x0, y0, inv_depth, triangle_id, surfaces, colo
     """
     height = inv_depth.shape[0]
     for k in range(bands.shape[0]):
-        batch = _new_batch(inv_depth.shape[1])
         first, stop = _band_rows(bands[k], band_rows, y0, height)
         for j in range(first, stop):
             if colour_tables is not None:  # as in render_bands
@@ -858,14 +869,14 @@ def warm_rows() -> None:
     """
     _, _, _, _, _, inv_depth, triangle_id, surfaces, out = _tiny_shading_pass()
     compile_for(_shade_row, np.intp(0), 0, 0, triangle_id[0], inv_depth[0], surfaces, out,
-                _new_batch(inv_depth.shape[1]))
+                new_batch(inv_depth.shape[1]))
 
 
 def warm_colours() -> None:
     """Compile the look-up of a row's surface colours, the passes' for coloured surfaces."""
     _, _, _, _, _, inv_depth, triangle_id, surfaces, _ = _tiny_shading_pass()
     compile_for(_row_surface_colors, np.intp(0), 0, triangle_id[0], surfaces,
-                _new_batch(inv_depth.shape[1]))
+                new_batch(inv_depth.shape[1]))
 
 
 def warm_back() -> None:
@@ -894,7 +905,8 @@ def _warm_fused_pass(with_lookups: bool) -> None:
     )
     cutouts = tiny_cutouts(setup, surfaces.triangles) if with_lookups else None
     render_bands(bands, setup, rows, offsets, items, BAND_ROWS, 0, 0, inv_depth, triangle_id,
-                 cutouts, surfaces, surfaces.tables if with_lookups else None, out)
+                 cutouts, surfaces, surfaces.tables if with_lookups else None,
+                 new_batch(inv_depth.shape[1]), out)
 
 
 def warm_depth_test() -> None:
@@ -937,7 +949,7 @@ def _warm_shading_pass(with_lookups: bool) -> tuple:
     inputs = _tiny_shading_pass()
     bands, _, _, _, _, inv_depth, triangle_id, surfaces, out = inputs
     shade_bands(bands, BAND_ROWS, 0, 0, inv_depth, triangle_id, surfaces,
-                surfaces.tables if with_lookups else None, out)
+                surfaces.tables if with_lookups else None, new_batch(inv_depth.shape[1]), out)
     return inputs
 
 
