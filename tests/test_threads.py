@@ -16,7 +16,7 @@ from concurrent.futures.thread import ThreadPoolExecutor
 import pytest
 
 from pixelpath import _threads
-from pixelpath._threads import _started_pool, in_threads
+from pixelpath._threads import _started_pool, in_threads, stop_pools
 
 SCRIPT = """
 import json, threading, time
@@ -161,3 +161,17 @@ def test_a_child_forked_after_the_pool_started_runs_work_on_a_pool_of_its_own(mo
         child.kill()
     assert child.exitcode == 0, "the forked child's runs never ran (its parent's pool)"
     assert results.get(timeout=5) == sum(range(100))
+
+
+def test_stopped_pools_end_their_threads_and_later_work_starts_new_ones():
+    def pool_threads():
+        return [t for t in threading.enumerate() if t.name.startswith("pixelpath_")]
+
+    done = []
+    in_threads(lambda start, stop: done.append((start, stop)), 64, least=1)
+    stop_pools()
+    assert pool_threads() == []
+    again = []
+    in_threads(lambda start, stop: again.append((start, stop)), 64, least=1)
+    assert sorted(again) == sorted(done)
+    assert sum(stop - start for start, stop in again) == 64

@@ -1,5 +1,5 @@
 """``python -m pixelpath``: the same command line as ``pixelpath``."""
 
-from pixelpath.cli import main
+from pixelpath.cli import run
 
-raise SystemExit(main())
+run()

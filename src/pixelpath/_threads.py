@@ -22,7 +22,7 @@ from concurrent.futures.thread import ThreadPoolExecutor
 
 import numpy as np
 
-__all__ = ["in_runs", "in_threads", "thread_count"]
+__all__ = ["in_runs", "in_threads", "stop_pools", "thread_count"]
 
 RUNS_PER_THREAD = 4  # in_threads() hands out this many runs per thread: uneven work evens out
 _EXECUTORS: dict[int, ThreadPoolExecutor] = {}
@@ -43,6 +43,28 @@ def _forget_pools() -> None:
 
 if hasattr(os, "register_at_fork"):  # not on Windows, which has no fork
     os.register_at_fork(after_in_child=_forget_pools)
+
+
+def stop_pools() -> None:
+    """End the threads of pixelpath's pools, waiting for their work; later calls start new ones.
+
+    What Python does at exit, done early by a process that ends itself
+    (:func:`pixelpath.cli.run`).
+
+    Examples
+    --------
+    >>> import threading
+    >>> from pixelpath._threads import in_threads, stop_pools
+    >>> in_threads(lambda start, stop: None, 64)
+    >>> stop_pools()
+    >>> [t.name for t in threading.enumerate() if t.name.startswith("pixelpath_")]
+    []
+    """
+    with _EXECUTORS_LOCK:
+        pools = list(_EXECUTORS.values())
+        _EXECUTORS.clear()
+    for pool in pools:
+        pool.shutdown(wait=True)
 
 
 def in_threads(

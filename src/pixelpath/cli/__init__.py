@@ -8,12 +8,16 @@ argument errors answer at once.
 from __future__ import annotations
 
 import argparse
+import atexit
 import functools
 import importlib
 import logging
+import os
 import sys
+import threading
 import warnings
 from collections.abc import Sequence
+from typing import NoReturn
 
 from rich.markup import escape
 
@@ -87,10 +91,36 @@ def main(argv: Sequence[str] | None = None) -> int:
         trimesh_log.removeHandler(quiet)
 
 
+def run() -> NoReturn:
+    """Run the command line and end the process: the ``pixelpath`` command itself.
+
+    :func:`main`, then an exit that skips Python's teardown of the interpreter. After a
+    render that teardown, which frees the thousand modules, Numba's compiled kernels and LLVM
+    that a render loads, took 0.2 s of a 0.9 s command (0.3 s after a first render that
+    compiled its kernels), and frees nothing the system would not. The exit handlers still
+    run and the output is flushed first; while threads other than pixelpath's idle pools
+    still run, the process exits as usual, waiting for them.
+    """
+    code = main()
+    pools = sys.modules.get("pixelpath._threads")  # only there once something ran in threads
+    if pools is not None:
+        pools.stop_pools()
+    main_thread = threading.main_thread()
+    if any(not t.daemon for t in threading.enumerate() if t is not main_thread):
+        sys.exit(code)
+    atexit._run_exitfuncs()
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            stream.flush()
+        except (OSError, ValueError):  # a closed pipe (pixelpath info | head): nothing to do
+            pass
+    os._exit(code)
+
+
 def _warning_line(command: str, message: Warning | str, *_: object, **__: object) -> str:
     """Format a warning shown while ``command`` runs (``warnings.formatwarning``'s signature)."""
     return f"pixelpath {command}: warning: {message}\n"
 
 
 if __name__ == "__main__":  # pragma: no cover
-    sys.exit(main())
+    run()
