@@ -45,7 +45,7 @@ def test_a_rows_lookups_equal_the_lookups_one_by_one(lookups, emission):
     # The emission textures' lookups are listed after the row's room for the surface's.
     width = len(lookups)
     first = width if emission else 0
-    batch = _kernels._new_batch(width)
+    batch = _kernels.new_batch(width)
     for q, (texture, u, v, squared) in enumerate(lookups):
         batch.lookups[:, first + q] = u, v, squared
         batch.lookup_textures[first + q] = texture
