@@ -39,7 +39,7 @@ def test_a_render_ends_quickly_with_its_output_written(scene_file, tmp_path):
     assert result.returncode == 0, result.stderr
     lines = result.stdout.splitlines()
     assert lines[0].startswith("before the command")
-    assert "wrote" in result.stdout or str(out) in result.stdout
+    assert f"wrote {out} (32x24" in result.stdout
     assert lines[-2:] == ["exit handler ran", "quick exit 0"]
     assert out.stat().st_size > 0
 

@@ -99,7 +99,13 @@ def run() -> NoReturn:
     that a render loads, took 0.2 s of a 0.9 s command (0.3 s after a first render that
     compiled its kernels), and frees nothing the system would not. The exit handlers still
     run and the output is flushed first; while threads other than pixelpath's idle pools
-    still run, the process exits as usual, waiting for them.
+    still run, the process exits as usual, waiting for them. From Python, call :func:`main`,
+    which returns.
+
+    Examples
+    --------
+    >>> from pixelpath.cli import run
+    >>> run()  # doctest: +SKIP
     """
     code = main()
     pools = sys.modules.get("pixelpath._threads")  # only there once something ran in threads
