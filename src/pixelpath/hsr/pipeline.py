@@ -34,7 +34,8 @@ from __future__ import annotations
 import dataclasses
 import itertools
 import threading
-from typing import NamedTuple
+from collections.abc import Callable
+from typing import Any, NamedTuple
 
 import numpy as np
 
@@ -399,12 +400,10 @@ def band_buffers(width: int) -> Visibility:
     """
     from pixelpath.raster._scan_kernels import BAND_ROWS
 
-    shape = (BAND_ROWS, width)
-    buffers = getattr(_SCRATCH, "band", None)
-    if buffers is None or buffers.inv_depth.shape != shape:
-        buffers = Visibility(np.empty(shape), np.empty(shape, dtype=np.int32))
-        _SCRATCH.band = buffers
-    return buffers
+    def allocate(width: int) -> Visibility:
+        return Visibility(np.empty((BAND_ROWS, width)), np.empty((BAND_ROWS, width), np.int32))
+
+    return _thread_scratch("band", width, allocate)
 
 
 def shading_batch(width: int):
@@ -415,10 +414,19 @@ def shading_batch(width: int):
     """
     from pixelpath.raster._kernels import new_batch
 
-    batch = getattr(_SCRATCH, "batch", None)
-    if batch is None or batch.row_colors.shape[0] != width:
-        batch = _SCRATCH.batch = new_batch(width)
-    return batch
+    return _thread_scratch("batch", width, new_batch)
+
+
+def _thread_scratch(name: str, width: int, allocate: Callable[[int], Any]) -> Any:
+    """Return the calling thread's scratch ``name`` for rows ``width`` wide, made by ``allocate``.
+
+    Made again only when the width changes.
+    """
+    kept = getattr(_SCRATCH, name, None)
+    if kept is None or kept[0] != width:
+        kept = (width, allocate(width))
+        setattr(_SCRATCH, name, kept)
+    return kept[1]
 
 
 def surfaces(prepared: Prepared, scene: Scene, view: View):
