@@ -82,9 +82,11 @@ from pixelpath.scene._texture_kernels import (
     NEAREST,
     TEXTURE,
     base_color,
+    base_size,
     bilinear_taps,
     blend_taps,
     footprint_squared,
+    footprint_squared_in,
     mip_level_squared,
     sample_level,
     tiny_tables,
@@ -529,6 +531,7 @@ def _row_surface_colors(j, x0, ids, surfaces, batch):
     r = g = bl = 0.0
     numerators = (0.0,) * 6
     line = (0.0,) * 9
+    size = (0.0, 0.0)
     for i in range(ids.shape[0]):
         t = ids[i]
         if t < 0:
@@ -551,6 +554,7 @@ def _row_surface_colors(j, x0, ids, surfaces, batch):
                                          0.0, 0.0)
             if texture >= 0:
                 line = texture_line(setup, t, y, uv, a, b, c)
+                size = base_size(tables, texture)
         x = (x0 + i) + 0.5
         if painted:
             b0, b1, b2 = _weights_at(numerators, x)
@@ -559,8 +563,8 @@ def _row_surface_colors(j, x0, ids, surfaces, batch):
         out[i, 1] = g
         out[i, 2] = bl
         if texture >= 0:
-            _list_lookup(lookups, lookup_columns, lookup_textures, count, tables, texture, line,
-                         x, i)
+            _list_lookup(lookups, lookup_columns, lookup_textures, count, size, texture, line, x,
+                         i)
             count += 1
     if count > 0:
         _apply_lookups(0, count, tables, batch, out)
@@ -583,6 +587,7 @@ def _row_glow(j, x0, ids, info, setup, triangles, uv, tables, emission, batch):
     line_triangle = -1
     obj = glow = np.intp(0)
     line = (0.0,) * 9
+    size = (0.0, 0.0)
     for i in range(width):
         t = ids[i]
         if t < 0:
@@ -595,7 +600,8 @@ def _row_glow(j, x0, ids, info, setup, triangles, uv, tables, emission, batch):
             obj = info[t, 0]
             line = texture_line(setup, t, y, uv, triangles[t, 0], triangles[t, 1],
                                 triangles[t, 2])
-        _list_lookup(batch.lookups, batch.lookup_columns, batch.lookup_textures, count, tables,
+            size = base_size(tables, glow)
+        _list_lookup(batch.lookups, batch.lookup_columns, batch.lookup_textures, count, size,
                      glow, line, (x0 + i) + 0.5, i)
         count += 1
         for channel in range(3):
@@ -604,15 +610,16 @@ def _row_glow(j, x0, ids, info, setup, triangles, uv, tables, emission, batch):
 
 
 @inlined
-def _list_lookup(lookups, columns, textures, q, tables, texture, line, x, i):
+def _list_lookup(lookups, columns, textures, q, size, texture, line, x, i):
     """List, as lookup q of a row, ``texture`` read at pixel i (centre x) of a triangle's line.
 
     Its texture coordinates and squared footprint (:func:`texture_at`), its column and texture.
+    ``size`` is the texture's base-level (width, height) (:func:`base_size`).
     """
     u, v, dudx, dvdx, dudy, dvdy = texture_at(line, x)
     lookups[0, q] = u
     lookups[1, q] = v
-    lookups[2, q] = footprint_squared(tables, texture, dudx, dvdx, dudy, dvdy)
+    lookups[2, q] = footprint_squared_in(size[0], size[1], dudx, dvdx, dudy, dvdy)
     columns[q] = i
     textures[q] = texture
 

@@ -161,8 +161,20 @@ def texel_footprint(tables, texture, dudx, dvdx, dudy, dvdy):
 @njit(inline="always")
 def footprint_squared(tables, texture, dudx, dvdx, dudy, dvdy):
     """Return the square of :func:`texel_footprint`, for :func:`mip_level_squared`."""
+    width, height = base_size(tables, texture)
+    return footprint_squared_in(width, height, dudx, dvdx, dudy, dvdy)
+
+
+@njit(inline="always")
+def base_size(tables, texture):
+    """Return the width and height of ``texture``'s base level, in texels (as floats)."""
     base = tables.textures[texture, 0]
-    width, height = tables.levels[base, 1], tables.levels[base, 2]
+    return float(tables.levels[base, 1]), float(tables.levels[base, 2])
+
+
+@njit(inline="always")
+def footprint_squared_in(width, height, dudx, dvdx, dudy, dvdy):
+    """:func:`footprint_squared` of a texture whose base level is ``width`` x ``height``."""
     across = (dudx * width) ** 2 + (dvdx * height) ** 2
     down = (dudy * width) ** 2 + (dvdy * height) ** 2
     return max(across, down)
