@@ -398,15 +398,17 @@ def band_buffers(width: int) -> Visibility:
     band reuses them, so they stay in the processor's cache, and a frame does not write its
     12 bytes a pixel of visibility to memory, nor fault them in on a process's first render.
     """
+    return _thread_scratch("band", width, _band_visibility)
+
+
+def _band_visibility(width: int) -> Visibility:
+    """Return new, unfilled visibility buffers for one band of rows ``width`` wide."""
     from pixelpath.raster._scan_kernels import BAND_ROWS
 
-    def allocate(width: int) -> Visibility:
-        return Visibility(np.empty((BAND_ROWS, width)), np.empty((BAND_ROWS, width), np.int32))
-
-    return _thread_scratch("band", width, allocate)
+    return Visibility(np.empty((BAND_ROWS, width)), np.empty((BAND_ROWS, width), np.int32))
 
 
-def shading_batch(width: int):
+def shading_batch(width: int) -> Any:
     """Return the calling thread's work arrays of the shading pass, for rows ``width`` wide.
 
     Kept per thread and reused frame after frame, as :func:`band_buffers` are
